@@ -1,0 +1,160 @@
+"""The sliding body and its kinematic state.
+
+Paper symbols and code names (MODEL §1): m → ``mass``, I → ``moment_of_inertia`` (about the
+vertical axis through the mass centre G), I* = I/(m a²) → ``inertia_ratio``; the state
+(x, y, φ, ẋ, ẏ, φ̇) of paper eq. 3–4 → ``State(x, y, phi, vx, vy, omega)``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as v
+from .friction import FrictionTensor
+from .geometry import Ellipse
+from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
+
+__all__ = ["Body", "State"]
+
+_LAWS = (UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure)
+
+
+@dataclass(frozen=True, slots=True)
+class Body:
+    """A flat rigid body resting on its contact patch.
+
+    Parameters
+    ----------
+    patch : Ellipse or Circle
+        The contact patch.
+    pressure : UniformPressure, LinearPressure, BoussinesqPressure or HertzPressure
+        Normal-pressure law on the patch. The mass centre G lies above the pressure
+        centroid: the patch centre, or (ξc, ηc) for the linear law.
+    mass : float
+        Mass m [kg], finite and > 0.
+    moment_of_inertia : float or None
+        I about the vertical axis through G [kg m²], finite and > 0. ``None`` means a
+        uniform plate of the patch's shape, I = m (a² + b²)/4.
+
+    Examples
+    --------
+    >>> from slidespin import Ellipse, UniformPressure
+    >>> body = Body(Ellipse(0.1, 0.05), UniformPressure(), mass=2.0)
+    >>> round(body.inertia_ratio, 4)
+    0.3125
+    """
+
+    patch: Ellipse
+    pressure: object
+    mass: float
+    moment_of_inertia: float | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.patch, Ellipse):
+            raise ValueError(
+                f"patch = {self.patch!r} is invalid; valid values: an Ellipse or a Circle"
+            )
+        if not isinstance(self.pressure, _LAWS):
+            raise ValueError(
+                f"pressure = {self.pressure!r} is invalid; valid values: UniformPressure(), "
+                "LinearPressure(xi_c, eta_c), BoussinesqPressure(), HertzPressure()"
+            )
+        self.pressure.check_patch(self.patch)
+        m = v.positive("mass", self.mass, "kg")
+        object.__setattr__(self, "mass", m)
+        if self.moment_of_inertia is None:
+            inertia = m * (self.patch.a**2 + self.patch.b**2) / 4.0
+        else:
+            inertia = v.positive("moment_of_inertia", self.moment_of_inertia, "kg m^2")
+        object.__setattr__(self, "moment_of_inertia", inertia)
+
+    @classmethod
+    def from_inertia_ratio(cls, patch, pressure, mass: float, inertia_ratio: float) -> "Body":
+        """Body with I = I* m a² for a given dimensionless inertia I* (> 0)."""
+        i_star = v.positive("inertia_ratio", inertia_ratio)
+        m = v.positive("mass", mass, "kg")
+        return cls(patch, pressure, m, i_star * m * patch.a**2)
+
+    @property
+    def inertia_ratio(self) -> float:
+        """I* = I/(m a²) (paper §3, appendix)."""
+        return self.moment_of_inertia / (self.mass * self.patch.a**2)
+
+    @property
+    def radius_of_gyration(self) -> float:
+        """k = √(I/m) [m]."""
+        return math.sqrt(self.moment_of_inertia / self.mass)
+
+    @property
+    def mass_centre(self) -> tuple[float, float]:
+        """G in the body frame [m] (the pressure centroid)."""
+        return self.pressure.centroid
+
+    def kernel_params(self, friction: FrictionTensor, wrench_tol: float = 1e-12) -> np.ndarray:
+        """Parameter vector of the compiled engine, in natural units (a = m = g = 1)."""
+        from . import _ode
+
+        a = self.patch.a
+        xg, yg = self.mass_centre
+        t = friction.matrix
+        par = np.empty(_ode.NPAR)
+        par[_ode.P_BN] = self.patch.b / a
+        par[_ode.P_LAW] = self.pressure.code
+        par[_ode.P_XG] = xg / a
+        par[_ode.P_YG] = yg / a
+        par[_ode.P_T00], par[_ode.P_T01] = t[0]
+        par[_ode.P_T10], par[_ode.P_T11] = t[1]
+        par[_ode.P_BODY] = 1.0 if friction.frame == "body" else 0.0
+        par[_ode.P_K] = self.radius_of_gyration / a
+        par[_ode.P_WTOL] = wrench_tol
+        return par
+
+
+@dataclass(frozen=True, slots=True)
+class State:
+    """Kinematic state of the body in the fixed frame OXY.
+
+    Parameters
+    ----------
+    x, y : float
+        Position of the mass centre G [m].
+    phi : float
+        Body angle φ between OX and the body axis Cξ [rad].
+    vx, vy : float
+        Velocity of G [m/s].
+    omega : float
+        Spin rate φ̇ [rad/s], counter-clockwise positive.
+    """
+
+    x: float = 0.0
+    y: float = 0.0
+    phi: float = 0.0
+    vx: float = 0.0
+    vy: float = 0.0
+    omega: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("x", "y", "phi", "vx", "vy", "omega"):
+            object.__setattr__(self, name, v.finite(name, getattr(self, name)))
+
+    @classmethod
+    def from_speed(
+        cls, speed: float, omega: float, theta: float = 0.0, phi: float = 0.0,
+        x: float = 0.0, y: float = 0.0,
+    ) -> "State":
+        """State from the paper's variables: speed v ≥ 0 [m/s] in direction ϑ [rad], spin ω."""
+        v0 = v.in_range("speed", speed, 0.0, math.inf)
+        th = v.finite("theta", theta)
+        return cls(x, y, phi, v0 * math.cos(th), v0 * math.sin(th), omega)
+
+    @property
+    def speed(self) -> float:
+        """|v_G| [m/s]."""
+        return math.hypot(self.vx, self.vy)
+
+    def as_array(self) -> np.ndarray:
+        """(x, y, phi, vx, vy, omega) as a float array."""
+        return np.array([self.x, self.y, self.phi, self.vx, self.vy, self.omega])

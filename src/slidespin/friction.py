@@ -1,0 +1,101 @@
+"""The anisotropic friction tensor of the paper (eq. 1–2, MODEL §2).
+
+A contact point slipping with velocity w feels the traction τ = −p 𝔽 w/|w|, with
+
+    𝔽 = [[fx, f], [−f, fy]]          (paper eq. 2),   μ = fy − fx.
+
+Only the symmetric part of 𝔽 dissipates (w·𝔽w = fx wx² + fy wy²), so the law is dissipative
+exactly when fx > 0 and fy > 0; the skew coefficient f is free.
+
+Frames. The paper fixes 𝔽 to the plane (``frame="plane"``). slidespin also offers a tensor
+fixed to the body (``frame="body"``: skis, scales, textured soles), whose world-frame matrix
+is R(φ) 𝔽 R(φ)ᵀ, and a tensor whose principal axes are turned by ``angle`` from OX (plane) or
+from Cξ (body): 𝔽 → R(angle) 𝔽 R(angle)ᵀ. The skew part f·J is unchanged by any rotation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _validate as v
+
+__all__ = ["FrictionTensor", "FRAMES"]
+
+FRAMES = ("plane", "body")
+
+
+def _rot(angle: float) -> np.ndarray:
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, -s], [s, c]])
+
+
+@dataclass(frozen=True, slots=True)
+class FrictionTensor:
+    """Anisotropic dry-friction tensor 𝔽 = [[fx, f], [−f, fy]] (paper eq. 2).
+
+    Parameters
+    ----------
+    fx, fy : float
+        Friction coefficients along the tensor's principal axes (dimensionless), finite and > 0.
+    f : float, default 0
+        Skew coefficient (dimensionless), any finite value.
+    frame : {"plane", "body"}, default "plane"
+        Whether the tensor is fixed to the plane (as in the paper) or turns with the body.
+    angle : float, default 0
+        Angle [rad] of the principal axes from OX (plane frame) or from the body axis Cξ
+        (body frame).
+
+    Examples
+    --------
+    >>> FrictionTensor(0.42, 0.54).mu
+    0.12000000000000005
+    """
+
+    fx: float
+    fy: float
+    f: float = 0.0
+    frame: str = "plane"
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "fx", v.positive("fx", self.fx))
+        object.__setattr__(self, "fy", v.positive("fy", self.fy))
+        object.__setattr__(self, "f", v.finite("f", self.f))
+        object.__setattr__(self, "frame", v.choice("frame", self.frame, FRAMES))
+        object.__setattr__(self, "angle", v.finite("angle", self.angle))
+
+    @classmethod
+    def isotropic(cls, coefficient: float) -> "FrictionTensor":
+        """Isotropic Coulomb friction with the given coefficient (> 0)."""
+        c = v.positive("coefficient", coefficient)
+        return cls(c, c)
+
+    @property
+    def mu(self) -> float:
+        """Anisotropy μ = fy − fx used by the paper."""
+        return self.fy - self.fx
+
+    @property
+    def matrix(self) -> np.ndarray:
+        """2×2 tensor in its own frame (plane or body), principal axes turned by ``angle``."""
+        base = np.array([[self.fx, self.f], [-self.f, self.fy]])
+        if self.angle == 0.0:
+            return base
+        r = _rot(self.angle)
+        return r @ base @ r.T
+
+    def world_matrix(self, phi: float = 0.0) -> np.ndarray:
+        """2×2 tensor in the fixed frame OXY when the body angle is ``phi`` [rad]."""
+        m = self.matrix
+        if self.frame == "body":
+            r = _rot(phi)
+            m = r @ m @ r.T
+        return m
+
+    @property
+    def norm(self) -> float:
+        """Spectral norm of the tensor (largest traction per unit pressure)."""
+        return float(np.linalg.norm(self.matrix, 2))

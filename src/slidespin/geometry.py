@@ -1,0 +1,114 @@
+"""Contact patches: the ellipse of the paper and its special case, the circle.
+
+Paper symbols and code names (MODEL §1):
+
+=========  ==========================  =====================
+paper      meaning                     code
+=========  ==========================  =====================
+a, b       semi-axes (a along ξ)       ``Ellipse.a``, ``Ellipse.b``
+e          eccentricity √(1 − b²/a²)   ``Ellipse.eccentricity``
+κ          b/a = √(1 − e²)             ``Ellipse.aspect``
+=========  ==========================  =====================
+
+The patch is centred at the body-frame origin C; the body axis ξ runs along ``a``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from . import _validate as v
+
+__all__ = ["Ellipse", "Circle", "Patch"]
+
+
+@dataclass(frozen=True, slots=True)
+class Ellipse:
+    """Elliptic contact patch with semi-axes ``a`` (along the body axis ξ) and ``b`` (along η).
+
+    Parameters
+    ----------
+    a : float
+        Semi-axis along ξ [m], finite and > 0.
+    b : float
+        Semi-axis along η [m], finite and > 0. ``b > a`` is allowed (the long axis is then η).
+
+    Examples
+    --------
+    >>> Ellipse.from_eccentricity(0.1, 0.866).b  # doctest: +ELLIPSIS
+    0.0500...
+    """
+
+    a: float
+    b: float
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "a", v.positive("a", self.a, "m"))
+        object.__setattr__(self, "b", v.positive("b", self.b, "m"))
+
+    @classmethod
+    def from_eccentricity(cls, a: float, eccentricity: float) -> "Ellipse":
+        """Ellipse with semi-major axis ``a`` [m] along ξ and eccentricity ``e`` in [0, 1).
+
+        Notes
+        -----
+        b = κ a with κ = √(1 − e²) (paper eq. 7).
+        """
+        a = v.positive("a", a, "m")
+        e = v.in_range("eccentricity", eccentricity, 0.0, 1.0, hi_open=True)
+        return cls(a, a * math.sqrt(1.0 - e * e))
+
+    @property
+    def aspect(self) -> float:
+        """κ = b/a (dimensionless)."""
+        return self.b / self.a
+
+    @property
+    def eccentricity(self) -> float:
+        """Eccentricity of the patch, measured on its longer axis (0 for a circle)."""
+        lo, hi = sorted((self.a, self.b))
+        return math.sqrt(1.0 - (lo / hi) ** 2)
+
+    @property
+    def area(self) -> float:
+        """Patch area π a b [m²]."""
+        return math.pi * self.a * self.b
+
+    def plate_inertia_ratio(self) -> float:
+        """I/(m a²) of a uniform plate of this shape: (1 + κ²)/4 (MODEL §1)."""
+        return (1.0 + self.aspect**2) / 4.0
+
+    def outline(self, n: int = 181):
+        """Body-frame outline points (ξ, η) [m], shape (n, 2), closed."""
+        import numpy as np
+
+        t = np.linspace(0.0, 2.0 * np.pi, n)
+        return np.column_stack((self.a * np.cos(t), self.b * np.sin(t)))
+
+
+@dataclass(frozen=True, slots=True, init=False, repr=False)
+class Circle(Ellipse):
+    """Circular contact patch of the given ``radius`` [m]: an :class:`Ellipse` with a = b.
+
+    Parameters
+    ----------
+    radius : float
+        Patch radius [m], finite and > 0.
+    """
+
+    def __init__(self, radius: float) -> None:
+        r = v.positive("radius", radius, "m")
+        object.__setattr__(self, "a", r)
+        object.__setattr__(self, "b", r)
+
+    @property
+    def radius(self) -> float:
+        """Patch radius [m]."""
+        return self.a
+
+    def __repr__(self) -> str:
+        return f"Circle(radius={self.a!r})"
+
+
+Patch = Ellipse
