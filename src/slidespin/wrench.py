@@ -68,7 +68,7 @@ def _check_array(name, value):
     bad = ~np.isfinite(arr)
     if bad.any():
         raise ValueError(
-            f"{name} = {arr[bad].flat[0]!r} is not finite; valid range: any finite real number"
+            f"{name} = {float(arr[bad].flat[0])!r} is not finite; valid range: any finite real number"
         )
     return arr
 

@@ -1,0 +1,122 @@
+"""Figures (matplotlib is imported lazily, only by the functions that draw).
+
+Every function takes data objects (a :class:`~slidespin.Trajectory`), draws on the axes it is
+given or creates a figure, and returns the figure; nothing here computes physics.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+__all__ = ["plot_trajectory", "outline_world", "draw_path"]
+
+
+def _plt():
+    import matplotlib
+
+    if matplotlib.get_backend().lower() not in ("agg", "module://matplotlib_inline.backend_inline"):
+        try:
+            import matplotlib.pyplot as plt  # noqa: F401
+        except Exception:  # pragma: no cover - headless fallback
+            matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
+
+
+def outline_world(body, x, y, phi, n: int = 121) -> np.ndarray:
+    """Patch outline in the fixed frame with G at (x, y) and body angle φ; shape (n, 2) [m]."""
+    pts = body.patch.outline(n) - np.asarray(body.mass_centre)
+    c, s = math.cos(phi), math.sin(phi)
+    return np.column_stack((x + c * pts[:, 0] - s * pts[:, 1], y + s * pts[:, 0] + c * pts[:, 1]))
+
+
+def draw_path(ax, traj, n_outlines: int = 9, color: str = "C0", label: str | None = "path of G"):
+    """Path of the mass centre with the patch outline drawn at equal time intervals."""
+    scale, unit = (1e2, "cm") if traj.body.patch.a < 0.5 else (1.0, "m")
+    ax.plot(traj.x * scale, traj.y * scale, color=color, lw=1.6, label=label, zorder=3)
+    times = np.linspace(0.0, traj.t_stop, n_outlines)
+    cmap = _plt().get_cmap("Greys")
+    for i, ti in enumerate(times):
+        xi = np.interp(ti, traj.t, traj.x)
+        yi = np.interp(ti, traj.t, traj.y)
+        pi = np.interp(ti, traj.t, traj.phi)
+        ol = outline_world(traj.body, xi, yi, pi) * scale
+        shade = cmap(0.35 + 0.55 * i / max(n_outlines - 1, 1))
+        ax.plot(ol[:, 0], ol[:, 1], color=shade, lw=0.9, zorder=2)
+        # a tick along the body axis ξ shows the orientation
+        c, s = math.cos(pi), math.sin(pi)
+        a = traj.body.patch.a * scale
+        ax.plot([xi * scale, xi * scale + a * c], [yi * scale, yi * scale + a * s],
+                color=shade, lw=0.9, zorder=2)
+    ax.plot(traj.x[0] * scale, traj.y[0] * scale, "o", color=color, ms=5, zorder=4, label="start")
+    ax.plot(traj.x[-1] * scale, traj.y[-1] * scale, "s", color="C3", ms=5, zorder=4, label="stop")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(f"x [{unit}]")
+    ax.set_ylabel(f"y [{unit}]")
+    return ax
+
+
+def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
+    """Four-panel summary of a trajectory: path with outlines, β(t) and ϑ(t), v(t) and ω(t).
+
+    Parameters
+    ----------
+    traj : Trajectory
+        Result of :func:`slidespin.simulate`.
+    title : str, optional
+        Figure title.
+    n_outlines : int
+        Number of patch outlines drawn along the path (equal time intervals).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    plt = _plt()
+    fig = plt.figure(figsize=(11.0, 6.2), layout="constrained")
+    gs = fig.add_gridspec(2, 3, width_ratios=[1.35, 1.0, 1.0])
+    ax_path = fig.add_subplot(gs[:, 0])
+    ax_beta = fig.add_subplot(gs[0, 1])
+    ax_theta = fig.add_subplot(gs[0, 2])
+    ax_v = fig.add_subplot(gs[1, 1])
+    ax_w = fig.add_subplot(gs[1, 2])
+
+    draw_path(ax_path, traj, n_outlines)
+    ax_path.legend(loc="best", fontsize=8, frameon=False)
+    ax_path.set_title("path of the mass centre", fontsize=10)
+
+    t = traj.t
+    a = traj.body.patch.a
+    beta = np.clip(traj.beta / a, -1e3, 1e3)
+    ax_beta.plot(t, beta, color="C0")
+    if math.isfinite(traj.beta_stop):
+        ax_beta.axhline(traj.beta_stop / a, color="0.5", lw=0.8, ls="--",
+                        label=f"β*/a = {traj.beta_stop / a:.4f}")
+        ax_beta.legend(fontsize=8, frameon=False)
+    ax_beta.set_ylabel("β/a = v/(aω)")
+    ax_beta.set_title("distance to the centre of rotation", fontsize=10)
+
+    ax_theta.plot(t, traj.theta, color="C1")
+    ax_theta.axhline(traj.theta_stop, color="0.5", lw=0.8, ls="--",
+                     label=f"ϑ* = {traj.theta_stop:.4f} rad")
+    ax_theta.legend(fontsize=8, frameon=False)
+    ax_theta.set_ylabel("ϑ [rad]")
+    ax_theta.set_title("direction of the velocity of G", fontsize=10)
+
+    ax_v.plot(t, traj.speed, color="C2")
+    ax_v.set_ylabel("v [m/s]")
+    ax_v.set_title("speed of G", fontsize=10)
+    ax_w.plot(t, traj.omega, color="C4")
+    ax_w.set_ylabel("ω [rad/s]")
+    ax_w.set_title("spin rate", fontsize=10)
+    for ax in (ax_beta, ax_theta, ax_v, ax_w):
+        ax.set_xlabel("t [s]")
+        ax.axvline(traj.t_stop, color="C3", lw=0.8, ls=":")
+        ax.set_xlim(0.0, traj.t_stop * 1.02)
+        ax.grid(alpha=0.25)
+    if title:
+        fig.suptitle(title, fontsize=11)
+    return fig

@@ -1,0 +1,35 @@
+"""Shared fixtures: bodies and tensors used across the test modules."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import slidespin as ss
+
+LAWS = ("uniform", "linear", "boussinesq", "hertz")
+
+
+def make_law(name: str, a: float = 1.0, b: float = 0.5):
+    """The four pressure laws; the linear one with an off-centre centroid inside the core."""
+    if name == "linear":
+        return ss.LinearPressure(0.12 * a, -0.08 * b)
+    return {"uniform": ss.UniformPressure(), "boussinesq": ss.BoussinesqPressure(),
+            "hertz": ss.HertzPressure()}[name]
+
+
+def state_with_icr(body, cx, cy, phi, omega=1.0):
+    """World velocity (vx, vy) of G whose instantaneous centre of rotation is at body-frame
+    point (cx, cy) [m] (measured from the patch centre C) when the body angle is phi."""
+    xg, yg = body.mass_centre
+    vbx = (cy - yg) * omega
+    vby = -(cx - xg) * omega
+    c, s = math.cos(phi), math.sin(phi)
+    return c * vbx - s * vby, s * vbx + c * vby
+
+
+@pytest.fixture
+def rng():
+    return np.random.default_rng(20261122)
