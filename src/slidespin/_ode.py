@@ -15,8 +15,10 @@ This system is smooth through the stop: s decays exponentially in τ while u con
 fixed point u* of the sphere flow; t, x, y, φ converge to their stop values. The integrator
 is the Dormand–Prince 8(5,3) pair (DOP853, Hairer–Nørsett–Wanner) with the coefficients and
 error norm of ``scipy.integrate.DOP853``, run entirely in compiled code; u is projected back
-onto the unit sphere after each step. Integration ends when u has converged (|du/dτ| below
-``utol``) and s has dropped by ``s_drop``; the remaining tail is added in closed form
+onto the unit sphere after each step. Once s has dropped by ``s_drop`` and u is near a fixed
+point (|du/dτ| < 1e-6), the fixed point u* is found by Newton's method at the frozen final φ
+and accepted if it is stable (both tangent eigenvalues negative); otherwise integration goes
+on until |du/dτ| < ``utol``. The remaining tail is added in closed form
 (t += s/|u·A|, x += s² u₁/(2|u·A|), ...), which is exact to first order in the already
 negligible remainder.
 """
@@ -28,7 +30,7 @@ import math
 import numpy as np
 from scipy.integrate._ivp import dop853_coefficients as _dop
 
-from ._jit import jit
+from ._jit import jit, prange
 from ._kernel import wrench_world
 
 _NS = _dop.N_STAGES  # 12
@@ -39,6 +41,7 @@ _E3 = np.ascontiguousarray(_dop.E3)
 _E5 = np.ascontiguousarray(_dop.E5)
 
 NY = 9
+POLISH_START = 1e-6  # |du/dτ| below which the terminal direction is polished by Newton
 # parameter vector layout
 P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range(11)
 NPAR = 11
@@ -83,6 +86,89 @@ def rhs(par, y, out):
     out[7] = s2 * u3 / par[P_K]
     out[8] = s2 * math.sqrt(u1 * u1 + u2 * u2)
     return st
+
+
+@jit
+def _sphere_residual(par, u1, u2, u3, phi, out):
+    """G(u) = A − (u·A)u, the sphere flow at frozen φ, for û = u/|u|."""
+    n = math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
+    u1 /= n
+    u2 /= n
+    u3 /= n
+    ax, ay, am, st = accelerations(par, u1, u2, u3, phi)
+    ua = u1 * ax + u2 * ay + u3 * am
+    out[0] = ax - ua * u1
+    out[1] = ay - ua * u2
+    out[2] = am - ua * u3
+    return ua
+
+
+@jit
+def polish_fixed_point(par, u, phi, max_iter=12):
+    """Newton iteration for the fixed point u* of the sphere flow at frozen φ (MODEL §5–6).
+
+    Starts from ``u`` (close to u*); works in the tangent plane of the sphere with a
+    central-difference Jacobian. Returns (u*, converged, largest real part of the two
+    tangent eigenvalues, number of iterations). ``converged`` is false if the iteration
+    moves more than 1e-3 away from ``u`` or does not settle below 1e-13.
+    """
+    uu = u / math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
+    u0 = uu.copy()
+    g = np.empty(3)
+    gp = np.empty(3)
+    gm = np.empty(3)
+    t1 = np.empty(3)
+    t2 = np.empty(3)
+    jac = np.empty((2, 2))
+    hd = 1e-6
+    converged = False
+    lam = 0.0
+    it = 0
+    for it in range(max_iter):
+        # orthonormal tangent basis (t1, t2) at uu
+        ax = 0 if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2]) else (
+            1 if abs(uu[1]) <= abs(uu[2]) else 2)
+        e = np.zeros(3)
+        e[ax] = 1.0
+        d = e[0] * uu[0] + e[1] * uu[1] + e[2] * uu[2]
+        for i in range(3):
+            t1[i] = e[i] - d * uu[i]
+        n1 = math.sqrt(t1[0] ** 2 + t1[1] ** 2 + t1[2] ** 2)
+        t1 /= n1
+        t2[0] = uu[1] * t1[2] - uu[2] * t1[1]
+        t2[1] = uu[2] * t1[0] - uu[0] * t1[2]
+        t2[2] = uu[0] * t1[1] - uu[1] * t1[0]
+        _sphere_residual(par, uu[0], uu[1], uu[2], phi, g)
+        r0 = g[0] * t1[0] + g[1] * t1[1] + g[2] * t1[2]
+        r1 = g[0] * t2[0] + g[1] * t2[1] + g[2] * t2[2]
+        for j in range(2):
+            tj = t1 if j == 0 else t2
+            _sphere_residual(par, uu[0] + hd * tj[0], uu[1] + hd * tj[1], uu[2] + hd * tj[2],
+                             phi, gp)
+            _sphere_residual(par, uu[0] - hd * tj[0], uu[1] - hd * tj[1], uu[2] - hd * tj[2],
+                             phi, gm)
+            jac[0, j] = ((gp[0] - gm[0]) * t1[0] + (gp[1] - gm[1]) * t1[1]
+                         + (gp[2] - gm[2]) * t1[2]) / (2.0 * hd)
+            jac[1, j] = ((gp[0] - gm[0]) * t2[0] + (gp[1] - gm[1]) * t2[1]
+                         + (gp[2] - gm[2]) * t2[2]) / (2.0 * hd)
+        det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+        tr = jac[0, 0] + jac[1, 1]
+        disc = 0.25 * tr * tr - det
+        lam = 0.5 * tr + (math.sqrt(disc) if disc > 0.0 else 0.0)
+        if det == 0.0:
+            break
+        d0 = (-r0 * jac[1, 1] + r1 * jac[0, 1]) / det
+        d1 = (-r1 * jac[0, 0] + r0 * jac[1, 0]) / det
+        for i in range(3):
+            uu[i] += d0 * t1[i] + d1 * t2[i]
+        uu /= math.sqrt(uu[0] ** 2 + uu[1] ** 2 + uu[2] ** 2)
+        dist = math.sqrt((uu[0] - u0[0]) ** 2 + (uu[1] - u0[1]) ** 2 + (uu[2] - u0[2]) ** 2)
+        if dist > 1e-3:
+            break
+        if math.sqrt(d0 * d0 + d1 * d1) < 1e-13:
+            converged = True
+            break
+    return uu, converged, lam, it + 1
 
 
 @jit
@@ -227,9 +313,23 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
             rec[nrec, 1:] = y
             nrec += 1
         du = math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2)
-        if y[3] < ln_s_target and du < utol:
-            status = ST_STOPPED
-            break
+        if y[3] < ln_s_target:
+            if du < utol:
+                status = ST_STOPPED
+                break
+            if du < POLISH_START:
+                # near a hyperbolic fixed point: Newton gives u* to ~1e-12 at once, where the
+                # explicit integrator, its steps limited by stability, would crawl
+                us, ok, lam, nit = polish_fixed_point(par, y[:3], y[7])
+                nrhs += 5 * nit
+                if ok and lam < 0.0:
+                    y[0] = us[0]
+                    y[1] = us[1]
+                    y[2] = us[2]
+                    fails += rhs(par, y, f)
+                    nrhs += 1
+                    status = ST_STOPPED
+                    break
     # closed-form tail: ln s decays at the rate |u·A| once u has converged
     rate = -f[3]
     yend = y.copy()
@@ -243,3 +343,41 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
         yend[8] += q * math.sqrt(y[0] ** 2 + y[1] ** 2)
     yend[3] = -np.inf
     return yend, status, nsteps, nrhs, fails, rate, rec[:nrec].copy()
+
+
+@jit(parallel=True)
+def integrate_many(pars, y0s, rtol, atol, utol, s_drop, max_steps):
+    """:func:`integrate` for many independent cases in parallel (no per-step records).
+
+    Parameters
+    ----------
+    pars : ndarray (N, NPAR)
+        One parameter vector per case.
+    y0s : ndarray (N, NY)
+        Initial regularised states; a row with ln s = −inf is a body at rest.
+
+    Returns
+    -------
+    y_stop : ndarray (N, NY)
+    status, n_steps, n_wrench_failed : ndarray (N,) of int64
+    """
+    n = y0s.shape[0]
+    out = np.empty((n, NY))
+    status = np.empty(n, dtype=np.int64)
+    steps = np.empty(n, dtype=np.int64)
+    fails = np.empty(n, dtype=np.int64)
+    for i in prange(n):
+        if y0s[i, 3] == -np.inf:
+            out[i, :] = y0s[i, :]
+            status[i] = ST_AT_REST
+            steps[i] = 0
+            fails[i] = 0
+            continue
+        yend, st, ns, nr, nf, rate, rec = integrate(
+            pars[i], y0s[i], rtol, atol, utol, s_drop, max_steps, np.inf, False
+        )
+        out[i, :] = yend
+        status[i] = st
+        steps[i] = ns
+        fails[i] = nf
+    return out, status, steps, fails
