@@ -1,4 +1,5 @@
-"""Command-line interface: ``slidespin demo | simulate | reproduce | bench``.
+"""Command-line interface: ``slidespin demo | simulate | sweep | sweep-read | sweep-plot |
+reproduce | bench``.
 
 Errors in the input (bad values, unknown keys, unreadable files, unwritable outputs) print one
 line naming the parameter, its value and the valid range, and exit with status 2 before any
@@ -14,6 +15,8 @@ import json
 import math
 import os
 import sys
+
+import numpy as np
 
 __all__ = ["main", "demo_case", "check_output_path"]
 
@@ -115,6 +118,74 @@ def _cmd_simulate(args) -> int:
     return _run_case(load_case(args.case), args)
 
 
+def _cmd_sweep(args) -> int:
+    from .sweep import connect_dask, load_spec, sweep
+
+    spec = load_spec(args.spec)
+    if args.workers is not None and args.workers < 1:
+        raise ValueError(f"--workers = {args.workers} is invalid; valid range: integer >= 1")
+    client = None
+    if args.scheduler or args.workers:
+        client = connect_dask(args.scheduler, args.workers)
+    try:
+        res = sweep(spec, args.out, executor=client, resume=args.resume,
+                    progress=False if args.quiet else None)
+    finally:
+        if client is not None:
+            cluster = getattr(client, "cluster", None)
+            client.close()
+            if cluster is not None and not args.scheduler:
+                cluster.close()
+    if not args.quiet:
+        print(f"sweep       : {spec.name or args.spec}")
+        print(f"cases       : {res.n_cases} in {res.n_chunks} chunks "
+              f"({res.chunks_computed} computed now)")
+        if res.cases_computed:
+            print(f"time        : {res.seconds:.3g} s  ({res.cases_per_second:.0f} cases/s)")
+        print(f"results     : {res.out}")
+    return 0
+
+
+def _cmd_sweep_read(args) -> int:
+    from .sweep import read_sweep
+
+    check_output_path(args.csv, "--csv")
+    table = read_sweep(args.dir)
+    import csv
+
+    names = list(table)
+    with open(args.csv, "w", newline="", encoding="utf-8") as fh:
+        w = csv.writer(fh)
+        w.writerow(names)
+        n = len(table[names[0]]) if names else 0
+        for i in range(n):
+            w.writerow([_cell(table[k][i]) for k in names])
+    print(f"{n} cases -> {args.csv}")
+    return 0
+
+
+def _cell(x):
+    if isinstance(x, (float, np.floating)):
+        return repr(float(x))
+    if isinstance(x, (np.integer,)):
+        return int(x)
+    return x
+
+
+def _cmd_sweep_plot(args) -> int:
+    from .plotting import plot_sweep
+    from .sweep import read_sweep
+
+    out = check_output_path(args.out, "--out")
+    table = read_sweep(args.dir)
+    if not table:
+        raise ValueError(f"{args.dir!r} holds no finished chunk yet")
+    fig = plot_sweep(table, args.x, args.value, args.y)
+    fig.savefig(out, dpi=150)
+    print(f"figure      : {out}")
+    return 0
+
+
 def _add_outputs(p, default_plot=None) -> None:
     p.add_argument("--json", action="store_true", help="print the stop summary as JSON")
     p.add_argument("--plot", metavar="OUT.png", default=default_plot,
@@ -144,6 +215,30 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("case", metavar="CASE.toml", help="case file (see examples/)")
     _add_outputs(p)
     p.set_defaults(func=_cmd_simulate)
+
+    p = sub.add_parser("sweep", help="run a parameter sweep (locally or on a Dask cluster)")
+    p.add_argument("spec", metavar="SPEC.toml", help="sweep specification (see examples/sweep_*.toml)")
+    p.add_argument("--out", required=True, metavar="DIR", help="result directory")
+    p.add_argument("--scheduler", metavar="ADDRESS",
+                   help="Dask scheduler, e.g. tcp://HOST:8786 (default: local cores)")
+    p.add_argument("--workers", type=int, metavar="N",
+                   help="start a local Dask cluster with N worker processes")
+    p.add_argument("--resume", action="store_true", help="finish an interrupted sweep")
+    p.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
+    p.set_defaults(func=_cmd_sweep)
+
+    p = sub.add_parser("sweep-read", help="gather a sweep's results into one CSV table")
+    p.add_argument("dir", metavar="DIR")
+    p.add_argument("--csv", required=True, metavar="OUT.csv")
+    p.set_defaults(func=_cmd_sweep_read)
+
+    p = sub.add_parser("sweep-plot", help="heat map or line plot of a sweep result")
+    p.add_argument("dir", metavar="DIR")
+    p.add_argument("--x", required=True, help="input column for the x axis, e.g. fx")
+    p.add_argument("--y", help="input column for the y axis (heat map), e.g. I_star")
+    p.add_argument("--value", default="beta_stop", help="result column shown (default beta_stop)")
+    p.add_argument("--out", default="sweep.png", metavar="OUT.png")
+    p.set_defaults(func=_cmd_sweep_plot)
 
     for name, module, help_text in _PLUGINS:
         try:

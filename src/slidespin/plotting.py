@@ -120,3 +120,78 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     if title:
         fig.suptitle(title, fontsize=11)
     return fig
+
+
+_LABELS = {
+    "a": "a [m]", "b": "b [m]", "fx": "f_x", "fy": "f_y", "f": "f (skew)", "mu": "μ = f_y − f_x",
+    "I_star": "I* = I/(m a²)", "moment_of_inertia": "I [kg m²]", "mass": "m [kg]",
+    "angle": "tensor angle [rad]", "v0": "v₀ [m/s]", "omega0": "ω₀ [rad/s]",
+    "theta0": "ϑ₀ [rad]", "phi0": "φ₀ [rad]", "t_stop": "stop time [s]",
+    "beta_stop": "β* [m]", "theta_stop": "ϑ* [rad]", "phi_stop": "φ at the stop [rad]",
+    "x_stop": "x at the stop [m]", "aspect": "b/a", "e": "eccentricity", "y_stop": "y at the stop [m]",
+    "path_length": "distance travelled [m]", "n_steps": "integrator steps", "g": "g [m/s²]",
+}
+
+
+def axis_label(name: str) -> str:
+    """Readable axis label with units for a sweep column."""
+    return _LABELS.get(name, name)
+
+
+def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str | None = None):
+    """Heat map of ``value`` over (``x``, ``y``), or a line plot of ``value`` against ``x``.
+
+    Parameters
+    ----------
+    table : dict
+        Column name → array, as returned by :func:`slidespin.sweep.read_sweep`.
+    x, y : str
+        Input columns for the axes (``y`` optional).
+    value : str
+        Result column shown (colour or ordinate). Infinite values (pure-sliding β*) are
+        left blank.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    plt = _plt()
+    for name in (x, value) + ((y,) if y else ()):
+        if name not in table:
+            raise ValueError(f"column {name!r} is not in the sweep; valid: {', '.join(table)}")
+    xs = np.asarray(table[x], dtype=float)
+    vs = np.asarray(table[value], dtype=float)
+    fig, ax = plt.subplots(figsize=(6.4, 4.8), layout="constrained")
+    finite = np.isfinite(vs)
+    if y is None:
+        order = np.argsort(xs, kind="stable")
+        ax.plot(xs[order][finite[order]], vs[order][finite[order]], "o-", ms=3, lw=1.2)
+        ax.set_ylabel(axis_label(value))
+        ax.grid(alpha=0.3)
+    else:
+        ys = np.asarray(table[y], dtype=float)
+        ux, uy = np.unique(xs), np.unique(ys)
+        if ux.size > 1 and uy.size > 1 and ux.size * uy.size <= xs.size:
+            # a grid: average the finite values falling in each (x, y) cell
+            ix, iy = np.searchsorted(ux, xs), np.searchsorted(uy, ys)
+            total = np.zeros((uy.size, ux.size))
+            count = np.zeros((uy.size, ux.size))
+            np.add.at(total, (iy[finite], ix[finite]), vs[finite])
+            np.add.at(count, (iy[finite], ix[finite]), 1.0)
+            with np.errstate(invalid="ignore"):
+                grid = total / count
+            mesh = ax.pcolormesh(ux, uy, grid, shading="nearest", cmap="viridis")
+            per_cell = xs.size // (ux.size * uy.size)
+            if per_cell > 1 and not title:
+                title = f"{axis_label(value)}: mean of {per_cell} cases per cell"
+        else:
+            mesh = ax.scatter(xs[finite], ys[finite], c=vs[finite], s=12, cmap="viridis")
+        fig.colorbar(mesh, ax=ax, label=axis_label(value))
+        ax.set_ylabel(axis_label(y))
+        if not finite.all():
+            ax.text(0.01, 0.01, f"blank: {axis_label(value)} not finite (e.g. β* = ∞, pure sliding)",
+                    transform=ax.transAxes, fontsize=7, color="0.3", va="bottom")
+    ax.set_xlabel(axis_label(x))
+    if title:
+        ax.set_title(title, fontsize=10)
+    return fig

@@ -1,0 +1,92 @@
+"""Validation of per-case parameter columns for the batch engine and the sweeps.
+
+One function, :func:`validated_columns`, checks every per-case input (shape, type, range,
+the linear law's core condition) before any work starts, naming the parameter, the first bad
+case and its value, and the valid range.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .pressure import LAW_NAMES
+
+__all__ = ["CASE_FIELDS", "validated_columns"]
+
+#: per-case inputs of :func:`slidespin.batch.simulate_cases` and their defaults (None: required)
+CASE_FIELDS = {
+    "a": None, "b": None, "law": "uniform", "xi_c": 0.0, "eta_c": 0.0,
+    "fx": None, "fy": None, "f": 0.0, "frame": "plane", "angle": 0.0,
+    "mass": 1.0, "moment_of_inertia": math.nan, "g": 9.81,
+    "x": 0.0, "y": 0.0, "phi": 0.0, "vx": 0.0, "vy": 0.0, "omega": 0.0,
+}
+
+def _column(name, value, n, kind="real"):
+    arr = np.asarray(value)
+    if arr.ndim > 1 or (arr.ndim == 1 and arr.size not in (1, n)):
+        raise ValueError(f"{name} has shape {arr.shape}; valid: a scalar or an array of length {n}")
+    if kind == "real":
+        if arr.dtype.kind not in "fiu":
+            raise ValueError(f"{name} must be real numbers, got dtype {arr.dtype}")
+        arr = arr.astype(float)
+    return np.broadcast_to(arr, (n,)) if arr.ndim == 0 or arr.size == 1 else arr
+
+
+def _check(name, arr, ok, valid):
+    bad = ~ok
+    if bad.any():
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"{name} = {float(arr[i])!r} (case {i}) is invalid; valid range: {valid}")
+
+
+def validated_columns(cases: dict):
+    """Check the per-case inputs and return ``(columns, moment_of_inertia)``.
+
+    ``columns`` maps every name of :data:`CASE_FIELDS` to a float array of length N (codes
+    for ``law`` and ``frame``); ``moment_of_inertia`` has the uniform-plate default filled in.
+    """
+    unknown = sorted(set(cases) - set(CASE_FIELDS))
+    if unknown:
+        raise ValueError(f"unknown case field {unknown[0]!r}; valid: {', '.join(CASE_FIELDS)}")
+    missing = [k for k, d in CASE_FIELDS.items() if d is None and k not in cases]
+    if missing:
+        raise ValueError(f"missing case field {missing[0]!r}")
+    sizes = {np.size(v) for v in cases.values() if np.ndim(v) == 1 and np.size(v) != 1}
+    if len(sizes) > 1:
+        raise ValueError(f"case arrays have different lengths {sorted(sizes)}")
+    n = sizes.pop() if sizes else 1
+    col = {}
+    for k, d in CASE_FIELDS.items():
+        val = cases.get(k, d)
+        if k in ("law", "frame"):
+            arr = np.asarray(val)
+            names = LAW_NAMES if k == "law" else ("plane", "body")
+            if arr.dtype.kind in "USO":
+                lookup = {nm: i for i, nm in enumerate(names)}
+                flat = np.atleast_1d(arr).ravel()
+                try:
+                    codes = np.array([lookup[str(x).lower()] for x in flat], dtype=float)
+                except KeyError as exc:
+                    raise ValueError(
+                        f"{k} = {exc.args[0]!r} is invalid; valid values: {', '.join(names)}"
+                    ) from None
+                val = codes
+            arr = _column(k, val, n)
+            _check(k, arr, np.isin(arr, np.arange(len(names))), f"one of {', '.join(names)}")
+            col[k] = arr
+        else:
+            col[k] = _column(k, val, n)
+    for k in ("a", "b", "fx", "fy", "mass", "g"):
+        _check(k, col[k], np.isfinite(col[k]) & (col[k] > 0), "finite and > 0")
+    for k in ("xi_c", "eta_c", "f", "angle", "x", "y", "phi", "vx", "vy", "omega"):
+        _check(k, col[k], np.isfinite(col[k]), "finite")
+    inertia = col["moment_of_inertia"]
+    inertia = np.where(np.isnan(inertia), col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4, inertia)
+    _check("moment_of_inertia", inertia, np.isfinite(inertia) & (inertia > 0), "finite and > 0")
+    is_lin = col["law"] == 1
+    core = (col["xi_c"] / col["a"]) ** 2 + (col["eta_c"] / col["b"]) ** 2
+    _check("xi_c, eta_c (core measure (xi_c/a)^2 + (eta_c/b)^2)", core,
+           ~is_lin | (core <= 1.0 / 16.0 * (1 + 1e-12)), "[0, 0.0625]")
+    return col, inertia
