@@ -287,7 +287,7 @@ def _case_fields(cols: dict) -> dict:
         bad = ~((e >= 0) & (e < 1))
         if bad.any():
             i = int(np.flatnonzero(bad)[0])
-            raise SweepError(f"e = {e[i]!r} (case {i}) is invalid; valid range: [0, 1)")
+            raise SweepError(f"e = {float(e[i])!r} (case {i}) is invalid; valid range: [0, 1)")
         b = a * np.sqrt(1.0 - e * e)
     elif "aspect" in cols:
         b = a * cols["aspect"].astype(float)
@@ -305,7 +305,7 @@ def _case_fields(cols: dict) -> dict:
     v0 = get("v0").astype(float)
     if (v0 < 0).any():
         i = int(np.flatnonzero(v0 < 0)[0])
-        raise SweepError(f"v0 = {v0[i]!r} (case {i}) is invalid; valid range: >= 0")
+        raise SweepError(f"v0 = {float(v0[i])!r} (case {i}) is invalid; valid range: >= 0")
     th = get("theta0").astype(float)
     fields = dict(
         a=a, b=b, law=get("law"), xi_c=get("xi_c").astype(float),
