@@ -12,6 +12,18 @@ from .friction import FrictionTensor
 from .geometry import Circle, Ellipse
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
 from .simulate import Trajectory, simulate
+from .terminal import (
+    InertiaIntervals,
+    PhasePortrait,
+    TerminalState,
+    circle_terminal_ratio,
+    inertia_for_ratio,
+    inertia_intervals,
+    paper_inertia_intervals,
+    phase_portrait,
+    terminal_ratio,
+    terminal_states,
+)
 from .wrench import Wrench, friction_wrench
 
 __version__ = "0.1.0"
@@ -30,5 +42,15 @@ __all__ = [
     "Wrench",
     "simulate",
     "Trajectory",
+    "terminal_ratio",
+    "terminal_states",
+    "TerminalState",
+    "inertia_intervals",
+    "paper_inertia_intervals",
+    "InertiaIntervals",
+    "inertia_for_ratio",
+    "circle_terminal_ratio",
+    "phase_portrait",
+    "PhasePortrait",
     "__version__",
 ]

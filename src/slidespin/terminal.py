@@ -236,8 +236,8 @@ class TerminalState:
         β*/a, the paper's units.
     theta : float
         Direction ϑ* of the velocity of G [rad] in (−π, π]. For a pure-spinning ending, the
-        direction along which the vanishing velocity leaves the pole (the slow eigendirection,
-        defined modulo π and given in (−π/2, π/2]). NaN when it is undetermined: a circle of
+        direction of the vanishing velocity as u approaches the pole (the slow
+        eigendirection, defined modulo π and given in (−π/2, π/2]). NaN when it is undetermined: a circle of
         fixed points (isotropic friction with a rotationally symmetric body) or a pure spin
         approached along every direction alike.
     ending : str
@@ -383,8 +383,7 @@ def _equator_points(par, body, friction, phi, a_len):
             e1 = np.array([-math.sin(th), math.cos(th), 0.0])
             e2 = np.array([0.0, 0.0, 1.0])
             st = _make_state(par, phi, u, a_len, continuum=True, e1=e1, e2=e2)
-            across = max(z.real for z in st.eigenvalues if abs(z) == max(abs(w) for w in
-                                                                          st.eigenvalues))
+            across = max(st.eigenvalues, key=abs).real  # the other one is ≈ 0 (neutral)
             if worst is None or across > worst[0]:
                 worst = (across, st)
         return [worst[1]]
@@ -587,7 +586,7 @@ class InertiaIntervals(NamedTuple):
         return 1 + int(x > self.i1) + int(x > self.i2) + int(x > self.i3)
 
     def ending(self, inertia_ratio: float) -> str:
-        """Expected ending for ``inertia_ratio``: ``pure_sliding``, ``mixed`` or ``pure_spinning``."""
+        """Ending for ``inertia_ratio``: ``pure_sliding``, ``mixed`` or ``pure_spinning``."""
         return {1: "pure_sliding", 2: "mixed", 3: "mixed", 4: "pure_spinning"}[
             self.regime(inertia_ratio)
         ]
@@ -813,6 +812,32 @@ class PhasePortrait:
     theta: float
 
 
+def _dense_curve(par, y0, s_end, points):
+    """(u, s) sampled evenly in the regularised time τ from y0 until s = s_end (MODEL §5).
+
+    Integrates the compiled right-hand side of :mod:`slidespin._ode` with scipy's DOP853 and
+    its dense output; used only to draw smooth curves (the stop itself comes from simulate).
+    """
+    from scipy.integrate import solve_ivp
+
+    out = np.empty(_ode.NY)
+
+    def f(tau, y):
+        _ode.rhs(par, y, out)
+        return out.copy()
+
+    def reached(tau, y):
+        return y[3] - math.log(s_end)
+
+    reached.terminal = True
+    sol = solve_ivp(f, (0.0, 1e4), y0, method="DOP853", rtol=1e-9, atol=1e-12,
+                    dense_output=True, events=reached)
+    tau = np.linspace(0.0, sol.t[-1], points)
+    y = sol.sol(tau)
+    u = y[:3] / np.linalg.norm(y[:3], axis=0)
+    return u, np.exp(y[3])
+
+
 def phase_portrait(
     body: Body,
     friction: FrictionTensor,
@@ -822,13 +847,15 @@ def phase_portrait(
     phi: float = 0.0,
     theta: float = 0.0,
     g: float = 9.81,
-    max_step: float = 0.1,
+    points: int = 300,
 ) -> PhasePortrait:
     """Simulate ``n`` motions starting on a quarter ellipse of equal kinetic energy.
 
     The initial states are v₀ = s cos α, k ω₀ = s sin α (k = √(I/m)) for n angles α evenly
-    spaced in (0, π/2), so every ratio v₀/(a ω₀) is represented; each is integrated to its
-    stop with :func:`slidespin.simulate`.
+    spaced in (0, π/2), so every ratio v₀/(a ω₀) is represented. Each is integrated to its
+    stop with :func:`slidespin.simulate` (terminal ratio and ending); the curve drawn is the
+    same regularised system sampled densely until s has fallen to 1e-4 of its start, then
+    closed at the origin.
 
     Parameters
     ----------
@@ -842,9 +869,8 @@ def phase_portrait(
         Initial body angle φ₀ and direction ϑ₀ of the velocity [rad].
     g : float, default 9.81
         Gravitational acceleration [m/s²].
-    max_step : float, default 0.1
-        Largest step of the regularised time τ (``simulate``'s ``max_step``): smaller values
-        give smoother curves, not more accuracy.
+    points : int, default 300
+        Points per curve (10 to 100000).
 
     Returns
     -------
@@ -855,21 +881,31 @@ def phase_portrait(
     _check_body_friction(body, friction)
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 200:
         raise ValueError(f"n = {n!r} is invalid; valid range: integer in [1, 200]")
+    if (isinstance(points, bool) or not isinstance(points, (int, np.integer))
+            or not 10 <= points <= 100_000):
+        raise ValueError(f"points = {points!r} is invalid; valid range: integer in [10, 100000]")
     s0 = v.positive("speed", speed, "m/s")
     phi = v.finite("phi", phi)
     theta = v.finite("theta", theta)
-    max_step = v.positive("max_step", max_step)
+    g = v.positive("g", g, "m/s^2")
     k = body.radius_of_gyration
     a = body.patch.a
+    par = body.kernel_params(friction)
+    kn = par[_ode.P_K]  # k/a
+    v_unit, t_unit = math.sqrt(a * g), math.sqrt(a / g)
     spins, speeds, betas, endings = [], [], [], []
     for i in range(n):
         alpha = 0.5 * math.pi * (i + 0.5) / n
         st = State.from_speed(s0 * math.cos(alpha), s0 * math.sin(alpha) / k, theta, phi)
-        tr = simulate(body, friction, st, g=g, rtol=1e-9, max_step=max_step)
-        spins.append(tr.omega * a)
-        speeds.append(tr.speed)
+        tr = simulate(body, friction, st, g=g, rtol=1e-9)
         betas.append(tr.beta_stop / a if math.isfinite(tr.beta_stop) else tr.beta_stop)
         endings.append(tr.ending)
+        vxn, vyn, wn = st.vx / v_unit, st.vy / v_unit, st.omega * t_unit
+        sn = math.sqrt(vxn * vxn + vyn * vyn + (kn * wn) ** 2)
+        y0 = np.array([vxn / sn, vyn / sn, kn * wn / sn, math.log(sn), 0.0, 0.0, 0.0, phi, 0.0])
+        u, s = _dense_curve(par, y0, 1e-4 * sn, points - 1)
+        spins.append(np.append(s * u[2] / kn * v_unit, 0.0))  # a ω = (s u₃/k) · a
+        speeds.append(np.append(s * np.hypot(u[0], u[1]) * v_unit, 0.0))
     return PhasePortrait(
         body=body, friction=friction, spin=tuple(spins), speed=tuple(speeds),
         beta_stop=np.array(betas), endings=tuple(endings),

@@ -112,6 +112,8 @@ def new_figure(width: float, height: float):
 
 def save(fig, out, name: str, fmt: str = "png") -> str:
     """Write ``fig`` to ``out/name.fmt`` and return the path."""
+    if fmt not in FORMATS:
+        raise ValueError(f"format = {fmt!r} is invalid; valid values: {', '.join(FORMATS)}")
     path = os.path.join(prepare_out(out), f"{name}.{fmt}")
     fig.savefig(path, dpi=150, bbox_inches="tight", metadata=_metadata(fmt))
     return path

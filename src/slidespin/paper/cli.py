@@ -2,8 +2,8 @@
 
 Usage::
 
-    slidespin reproduce table1  [--fx FX] [--out DIR] [--json]
-    slidespin reproduce table2  [--fx FX] [--mu MU] [--out DIR] [--json]
+    slidespin reproduce table1  [--fx FX] [--out DIR] [--json] [--format png|pdf|svg]
+    slidespin reproduce table2  [--fx FX] [--mu MU] [--out DIR] [--json] [--format ...]
     slidespin reproduce fig2|fig3|fig4 [--fx FX] [--mu MU] [--out DIR] [--format png|pdf|svg]
     slidespin reproduce errata  [--fx FX] [--out DIR] [--json]
     slidespin reproduce phase   [--out DIR] [--format ...]
@@ -40,8 +40,8 @@ _HELP = {
 
 # which options each target accepts
 _ACCEPTS = {
-    "table1": {"fx"},
-    "table2": {"fx", "mu"},
+    "table1": {"fx", "format"},
+    "table2": {"fx", "mu", "format"},
     "fig2": {"fx", "mu", "format"},
     "fig3": {"fx", "mu", "format"},
     "fig4": {"fx", "mu", "format"},

@@ -56,8 +56,7 @@ class ErrataResult:
             {"number": e.number, "where": e.where, "printed": e.printed,
              "corrected": e.corrected, "measure": e.measure, "printed_value": e.printed_value,
              "corrected_value": e.corrected_value, "effect": e.effect, "check": e.check,
-             "values": {k: sh.num(x) if isinstance(x, (float, int)) else x
-                        for k, x in e.values.items()}}
+             "values": {k: _json_value(x) for k, x in e.values.items()}}
             for e in self.errata
         ]}
 
@@ -77,6 +76,16 @@ class ErrataResult:
                 lines.append(f"   check    : {e.check}")
             lines.append("")
         return "\n".join(lines).rstrip()
+
+
+def _json_value(x):
+    if isinstance(x, (bool, int, np.integer)):
+        return int(x)
+    if isinstance(x, (float, np.floating)):
+        return sh.num(x)
+    if isinstance(x, (list, tuple)):
+        return [_json_value(y) for y in x]
+    return x
 
 
 # ------------------------------------------------------------------------------------------
@@ -277,11 +286,12 @@ def _e5():
     p0 = load / (math.pi * a * b)
     p1_printed = load * xi_c / (m * a * a / 4.0)  # I_eta_eta = m a^2/4 (mass moment)
     p1_correct = 4.0 * p0 * xi_c / (a * a)  # area moment pi a^3 b/4
-    # pressure centroid of p0 + p1 xi over the ellipse, by quadrature
+    # pressure centroid of p0 + p1 xi over the ellipse, by quadrature (xi = a sin t)
     x, w = np.polynomial.legendre.leggauss(64)
-    xi = a * x
-    chord = 2.0 * b * np.sqrt(1.0 - x * x)
-    area_moment = np.sum(w * a * chord * xi * xi)
+    t = 0.5 * math.pi * x
+    xi = a * np.sin(t)
+    chord = 2.0 * b * np.cos(t)
+    area_moment = np.sum(0.5 * math.pi * w * a * np.cos(t) * chord * xi * xi)
 
     def centroid(p1):
         return p1 * area_moment / load
@@ -289,7 +299,8 @@ def _e5():
     c_p, c_c = centroid(p1_printed), centroid(p1_correct)
     return Erratum(
         5, "eq. 10: slopes of the linear pressure law",
-        "p1 = P xi_c/I_etaeta, p2 = P eta_c/I_xixi with I_etaeta = m a^2/4, I_xixi = m a^2 (1-e^2)/4",
+        "p1 = P xi_c/I_etaeta, p2 = P eta_c/I_xixi with I_etaeta = m a^2/4, "
+        "I_xixi = m a^2 (1-e^2)/4",
         "p1 = 4 p0 xi_c/a^2, p2 = 4 p0 eta_c/b^2 (area moments pi a^3 b/4, pi a b^3/4)",
         "pressure centroid of p0 + p1 xi for a plate a = 0.1 m, b = 0.05 m, m = 1 kg, "
         "intended xi_c = 0.01 m (quadrature)",
@@ -365,12 +376,13 @@ def _e7(fx):
 
 def _e8():
     a, m, g = 0.1, 1.0, 9.81
-    x, w = np.polynomial.legendre.leggauss(80)
-    rho = 0.5 * a * (x + 1.0)
-    wr = 0.5 * a * w
+    x, w = np.polynomial.legendre.leggauss(40)
+    t = 0.25 * math.pi * (x + 1.0)  # rho = a sin t, t in [0, pi/2]
+    rho = a * np.sin(t)
+    wr = 0.25 * math.pi * w * a * np.cos(t)
 
     def load(p0):
-        return float(np.sum(wr * 2.0 * math.pi * rho * p0 * np.sqrt(1.0 - (rho / a) ** 2)))
+        return float(np.sum(wr * 2.0 * math.pi * rho * p0 * np.cos(t)))
 
     lp = load(3.0 * m * g / (2.0 * math.pi * a)) / (m * g)
     lc = load(3.0 * m * g / (2.0 * math.pi * a * a)) / (m * g)

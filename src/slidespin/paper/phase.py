@@ -79,7 +79,8 @@ def compute(n: int = 11) -> PhaseResult:
     return PhaseResult(bounds, ratios, tuple(portraits))
 
 
-def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0"):
+def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0",
+                        legend: bool = True):
     """Draw a phase portrait: trajectories in the (a ω, v) plane and the terminal rays.
 
     Parameters
@@ -90,6 +91,8 @@ def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0"):
         Axes to draw on; a new figure is made if omitted.
     color : str
         Colour of the trajectories.
+    legend : bool, default True
+        Draw a legend on the axes.
 
     Returns
     -------
@@ -133,27 +136,45 @@ def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0"):
     ax.set_ylim(-0.02 * ymax, 1.05 * ymax)
     ax.set_xlabel("a ω [m/s]")
     ax.set_ylabel("v [m/s]")
-    ax.legend(loc="upper right", fontsize=7)
+    if legend:
+        ax.legend(loc="upper right", fontsize=7, frameon=True, framealpha=0.9,
+                  edgecolor="none")
     return ax
 
 
-_REGIME = ("I* < I₁: spin dies first", "I₁ < I* < I₂: k > 1", "I₂ < I* < I₃: k < 1",
-           "I* > I₃: sliding dies first")
+_REGIME = ("I* < I₁", "I₁ < I* < I₂", "I₂ < I* < I₃", "I* > I₃")
+
+
+def _ending_text(pp):
+    stable = [s for s in pp.terminal if s.stable and s.u[2] >= 0.0]
+    s = stable[0]
+    if s.ending == "mixed":
+        return f"v → {abs(s.beta_ratio):.3f} aω"
+    return "ω/v → 0" if s.ending == "pure_sliding" else "v/ω → 0"
 
 
 def plot(result: PhaseResult):
     """The four phase portraits in a 2 × 2 figure."""
+    from matplotlib.lines import Line2D
+
     with sh.style():
-        fig = sh.new_figure(7.4, 6.6)
+        fig = sh.new_figure(7.4, 7.0)
         axes = fig.subplots(2, 2).ravel()
-        for ax, i_star, pp, title in zip(axes, result.inertia_ratios, result.portraits,
-                                         _REGIME):
-            plot_phase_portrait(pp, ax)
-            ax.set_title(f"I* = {i_star:.3g}  ({title})")
+        for ax, i_star, pp, regime in zip(axes, result.inertia_ratios, result.portraits,
+                                          _REGIME):
+            plot_phase_portrait(pp, ax, legend=False)
+            ax.set_title(f"I* = {i_star:.3g} ({regime}): {_ending_text(pp)}")
         i1, i2, i3 = result.intervals
+        n = len(result.portraits[0].spin)
         fig.suptitle(
-            "Uniform disk, isotropic friction: v against aω from 11 starts of equal energy "
+            f"Uniform disk, isotropic friction: v against aω from {n} starts of equal energy "
             f"(I₁ = {i1:.3g}, I₂ = {i2:.3g}, I₃ = {i3:.3g})", fontsize=9.5)
+        handles = [
+            Line2D([], [], color="C0", lw=0.9, marker="o", ms=2.5, label="motion from its start"),
+            Line2D([], [], color="k", lw=1.8, label="attracting terminal motion"),
+            Line2D([], [], color="0.55", lw=1.0, ls="--", label="repelling terminal motion"),
+        ]
+        fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize=8)
     return fig
 
 

@@ -162,7 +162,8 @@ def true_terminal_state(fx: float, mu: float, phi: float):
     body = sh.uniform_body()
     states = terminal_states(body, FrictionTensor(fx, fx + mu), phi)
     for s in states:
-        if s.stable and s.ending == "mixed" and s.u[2] > 0 and -math.pi / 2 < s.theta <= math.pi / 2:
+        forward = -math.pi / 2 < s.theta <= math.pi / 2
+        if s.stable and s.ending == "mixed" and s.u[2] > 0 and forward:
             return s
     return next(s for s in states if s.stable)
 
@@ -342,12 +343,13 @@ def plot(result: Table1Result):
         ax1.plot([], [], "--", color="0.3", lw=1.1, label="true terminal β*")
         ax1.set_xlabel("μ = fy − fx")
         ax1.set_ylabel("β/a = v/(aω) at the stop")
-        ax1.set_title(f"Table 1 (fx = {result.fx:.4f})")
+        ax1.set_title(f"Table 1: eq. 16 with ϑ = 0 vs true terminal state (fx = {result.fx:.4f})",
+                      fontsize=8.5)
         ax1.legend(loc="upper left")
-        ax2.axhline(0.0, color="0.5", lw=0.8)
+        ax2.axhline(0.0, color="0.5", lw=0.6, zorder=0)
         ax2.set_xlabel("μ = fy − fx")
         ax2.set_ylabel("ϑ* [rad]")
-        ax2.set_title("direction of the velocity at the stop")
+        ax2.set_title("true terminal direction of the velocity", fontsize=8.5)
         ax2.legend(loc="lower left")
     return fig
 

@@ -237,7 +237,7 @@ def plot(result: Table2Result):
             ax.set_ylim(0.005, 200.0)
             ax.set_xlim(0.0, 1.05 * max(r.numeric[2] for r in rows) * 1.5)
             ax.set_xlabel("I* = I/(m a²)")
-        axes[0].set_ylabel("terminal ratio k = v/(aω)")
+            ax.set_ylabel("terminal ratio k = v/(aω)")
         handles = [
             Line2D([], [], color=LAW_COLORS[name], label=f"{name} law") for name, _ in LAWS
         ] + [
