@@ -36,8 +36,10 @@ class Body:
     mass : float
         Mass m [kg], finite and > 0.
     moment_of_inertia : float or None
-        I about the vertical axis through G [kg m²], finite and > 0. ``None`` means a
-        uniform plate of the patch's shape, I = m (a² + b²)/4.
+        I about the vertical axis through G [kg m²], finite and > 0. ``None`` means
+        I = m (a² + b²)/4, the inertia of a uniform plate of the patch's shape about its
+        centre; this is the paper's I* = (1 + κ²)/4 (eq. 7). For the linear law, whose G is
+        off-centre, give I explicitly if the body is not such a plate.
 
     Examples
     --------

@@ -82,7 +82,7 @@ class Trajectory:
     stop_state : State
         Position and angle at the stop (velocities zero).
     beta_stop, theta_stop : float
-        Terminal ratio β* = lim v/ω [m] and terminal direction ϑ* [rad] (MODEL §5): ±inf
+        Terminal ratio β* = lim v/ω [m] and terminal direction ϑ* [rad] (MODEL §5): +inf
         for a pure-sliding ending, 0 for a pure-spinning one (ϑ* is then the limiting
         direction of the vanishing velocity); NaN only when the body starts at rest.
     ending : str
@@ -291,7 +291,7 @@ def simulate(
     ending = classify_ending(u12s, u3s)
     beta_stop = float(_beta(u12s, u3s, k)) * a
     if ending == "pure_sliding":
-        beta_stop = math.copysign(math.inf, u3s) if u3s != 0.0 else math.inf
+        beta_stop = math.inf  # ω/v → 0; the sign of the vanishing ω is not meaningful
     elif ending == "pure_spinning":
         beta_stop = 0.0
     theta_stop = math.atan2(u2s, u1s)
