@@ -171,3 +171,19 @@ def test_initial_state_at_rest():
     tr = ss.simulate(body, fr, ss.State(1.0, 2.0, 0.5))
     assert tr.status == "at_rest" and tr.t_stop == 0.0 and tr.ending == "at_rest"
     assert (tr.stop_state.x, tr.stop_state.y, tr.stop_state.phi) == (1.0, 2.0, 0.5)
+
+
+def test_skew_tensor_spiral_stop_closed_form():
+    """𝔽 = c·I + f·J (|f| > |μ|/2 = 0: no real eigenvector) in pure sliding: the speed drops
+    at c g, the direction turns for ever (ϑ = ϑ₀ ± (f/c) ln(v/v₀)), the body stops on a
+    logarithmic spiral: t_stop = v₀/(c g), path length v₀²/(2 c g), and the stop lies at
+    distance v₀²/(g √(4c² + f²)) from the start. There is no terminal direction."""
+    c, f, v0, g = 0.4, 0.3, 1.5, 9.81
+    body = ss.Body(ss.Ellipse(0.1, 0.06), ss.HertzPressure(), mass=2.0)
+    tr = ss.simulate(body, ss.FrictionTensor(c, c, f=f), ss.State.from_speed(v0, 0.0, 0.7))
+    assert tr.status == "stopped" and tr.ending == "spiral"
+    assert math.isnan(tr.theta_stop) and tr.beta_stop == math.inf
+    assert tr.t_stop == pytest.approx(v0 / (c * g), rel=1e-10)
+    assert tr.distance == pytest.approx(v0**2 / (2 * c * g), rel=1e-10)
+    assert math.hypot(tr.stop_state.x, tr.stop_state.y) == pytest.approx(
+        v0**2 / (g * math.sqrt(4 * c * c + f * f)), rel=1e-9)

@@ -47,7 +47,10 @@ P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range
 NPAR = 11
 
 # integration status codes
-ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST = 0, 1, 2, 3
+ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_SPIRAL = 0, 1, 2, 3, 4
+# once s has dropped by a further e^-60 beyond ``s_drop`` without u converging, the body has
+# stopped to machine precision while its direction of motion keeps turning: a spiral stop
+LN_S_SPIRAL = -60.0
 
 
 @jit
@@ -219,7 +222,8 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     y_stop : ndarray (9,)
         State at the stop (tail added; s = 0 there, stored as ln s = −inf).
     status : int
-        ``ST_STOPPED``, ``ST_MAX_STEPS`` or ``ST_STEP_TOO_SMALL``.
+        ``ST_STOPPED``, ``ST_SPIRAL`` (stopped, but the direction of motion keeps turning:
+        no terminal direction exists), ``ST_MAX_STEPS`` or ``ST_STEP_TOO_SMALL``.
     n_steps, n_rhs, n_wrench_failed : int
         Accepted steps, right-hand-side calls, wrench evaluations above their error target.
     rate : float
@@ -330,6 +334,10 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                     nrhs += 1
                     status = ST_STOPPED
                     break
+            if y[3] < ln_s_target + LN_S_SPIRAL:
+                # t, x, y, φ have converged (the tail is below 1e-26 of s₀); u has not
+                status = ST_SPIRAL
+                break
     # closed-form tail: ln s decays at the rate |u·A| once u has converged
     rate = -f[3]
     yend = y.copy()

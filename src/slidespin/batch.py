@@ -44,8 +44,9 @@ class StopResults:
     path_length : ndarray
         Distance travelled by G [m].
     beta_stop, theta_stop : ndarray
-        Terminal ratio β* [m] (±inf pure sliding, 0 pure spinning, NaN at rest) and the
-        terminal direction ϑ* [rad] (NaN at rest).
+        Terminal ratio β* [m] (inf pure sliding, 0 pure spinning, NaN at rest) and the
+        terminal direction ϑ* [rad] (NaN at rest and for ``spiral`` endings, which have none:
+        see :class:`slidespin.Trajectory`).
     ending_code, status_code : ndarray of int8
         Indices into :data:`ENDINGS` and status names; ``ending``/``status`` give strings.
     n_steps : ndarray of int
@@ -219,13 +220,17 @@ def _run(col, inertia, rtol, max_steps) -> StopResults:
     u1, u2, u3 = yend[:, 0], yend[:, 1], yend[:, 2]
     u12 = np.hypot(u1, u2)
     ending = np.where(np.abs(u3) <= ENDING_TOL, 1, np.where(u12 <= ENDING_TOL, 2, 0))
-    ending = np.where(rest, 3, ending).astype(np.int8)
+    ending = np.where(rest, 3, ending)
+    spiral = status == _ode.ST_SPIRAL
+    ending = np.where(spiral, 4, ending).astype(np.int8)
+    status = np.where(spiral, _ode.ST_STOPPED, status)
     with np.errstate(divide="ignore", invalid="ignore"):
         beta = k * u12 / u3 * a
-    beta = np.where(ending == 1, np.copysign(np.inf, np.where(u3 == 0, 1.0, u3)), beta)
+    beta = np.where(ending == 1, np.inf, beta)
     beta = np.where(ending == 2, 0.0, beta)
     beta = np.where(rest, np.nan, beta)
-    theta = np.where(rest, np.nan, np.arctan2(u2, u1))
+    beta = np.where(spiral & (np.abs(u3) > ENDING_TOL), np.nan, beta)
+    theta = np.where(rest | spiral, np.nan, np.arctan2(u2, u1))
     return StopResults(
         t_stop=yend[:, 4] * t_unit,
         x_stop=yend[:, 5] * a,

@@ -31,12 +31,13 @@ from .friction import FrictionTensor
 
 __all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending"]
 
-ENDINGS = ("mixed", "pure_sliding", "pure_spinning", "at_rest")
+ENDINGS = ("mixed", "pure_sliding", "pure_spinning", "at_rest", "spiral")
 STATUSES = {
     _ode.ST_STOPPED: "stopped",
     _ode.ST_MAX_STEPS: "max_steps",
     _ode.ST_STEP_TOO_SMALL: "step_too_small",
     _ode.ST_AT_REST: "at_rest",
+    _ode.ST_SPIRAL: "stopped",
 }
 ENDING_TOL = 1e-6
 
@@ -84,11 +85,17 @@ class Trajectory:
     beta_stop, theta_stop : float
         Terminal ratio β* = lim v/ω [m] and terminal direction ϑ* [rad] (MODEL §5): +inf
         for a pure-sliding ending, 0 for a pure-spinning one (ϑ* is then the limiting
-        direction of the vanishing velocity); NaN only when the body starts at rest.
+        direction of the vanishing velocity); NaN when the body starts at rest, and for a
+        ``spiral`` ending (see ``ending``).
     ending : str
-        ``mixed``, ``pure_sliding`` (ω/v → 0), ``pure_spinning`` (v/ω → 0) or ``at_rest``.
+        ``mixed``, ``pure_sliding`` (ω/v → 0), ``pure_spinning`` (v/ω → 0), ``at_rest``, or
+        ``spiral``: the body stops (t_stop, position and angle are converged) while the
+        direction of its motion keeps turning, so there is no terminal direction; ϑ* is then
+        NaN, and β* too unless the spin has died out first (β* = inf). This happens e.g. in
+        pure sliding under a skew tensor with |f| > |μ|/2, where 𝔽 has no real eigenvector.
     status : str
-        ``stopped`` (converged), ``max_steps``, ``step_too_small`` or ``at_rest``.
+        ``stopped`` (the stop is reached and converged), ``max_steps``, ``step_too_small``
+        or ``at_rest``.
     n_steps, n_rhs : int
         Integrator steps and right-hand-side evaluations.
     """
@@ -290,11 +297,17 @@ def simulate(
     u12s = math.hypot(u1s, u2s)
     ending = classify_ending(u12s, u3s)
     beta_stop = float(_beta(u12s, u3s, k)) * a
+    theta_stop = math.atan2(u2s, u1s)
     if ending == "pure_sliding":
         beta_stop = math.inf  # ω/v → 0; the sign of the vanishing ω is not meaningful
     elif ending == "pure_spinning":
         beta_stop = 0.0
-    theta_stop = math.atan2(u2s, u1s)
+    if status == _ode.ST_SPIRAL:
+        # the direction of motion turns for ever while the body stops: no terminal direction
+        ending = "spiral"
+        theta_stop = math.nan
+        if abs(u3s) > ENDING_TOL:
+            beta_stop = math.nan
     stop = State(yend[5] * a, yend[6] * a, yend[7])
     return Trajectory(
         t=rows[:, 4] * t_unit,
