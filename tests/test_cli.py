@@ -52,10 +52,11 @@ def test_simulate_json_csv_plot(tmp_path, capsys):
     assert png.stat().st_size > 20_000
 
 
-@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.toml")), ids=lambda p: p.name)
+CASE_FILES = sorted(p for p in EXAMPLES.glob("*.toml") if not p.name.startswith("sweep_"))
+
+
+@pytest.mark.parametrize("path", CASE_FILES, ids=lambda p: p.name)
 def test_every_example_case_runs(path, capsys):
-    if path.name.startswith("sweep_"):
-        pytest.skip("sweep specification, not a case")
     assert main(["simulate", str(path), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["status"] == "stopped" and math.isfinite(data["t_stop"])
@@ -91,3 +92,20 @@ def test_missing_file_and_unwritable_output(tmp_path):
     assert r.returncode == 2 and "does not exist" in r.stderr
     r = run("simulate", str(EXAMPLES / "demo.toml"), "--csv", str(tmp_path / "no" / "x.csv"))
     assert r.returncode == 2 and "does not exist" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_internal_error_is_reported_without_traceback(monkeypatch, capsys):
+    import sys
+
+    sim = sys.modules["slidespin.simulate"]
+
+    def boom(*args, **kwargs):
+        raise RuntimeError("kernel exploded")
+
+    monkeypatch.setattr(sim, "simulate", boom)
+    assert main(["simulate", str(EXAMPLES / "demo.toml")]) == 3
+    err = capsys.readouterr().err
+    assert "internal error: RuntimeError: kernel exploded" in err
+    assert "report" in err and "--debug" in err and "Traceback" not in err
+    with pytest.raises(RuntimeError, match="kernel exploded"):
+        main(["--debug", "simulate", str(EXAMPLES / "demo.toml")])

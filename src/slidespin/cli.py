@@ -55,8 +55,15 @@ def check_output_path(path: str, what: str) -> str:
         raise ValueError(f"{what} = {path!r} is a directory; valid values: a file path")
     if not os.path.isdir(parent):
         raise ValueError(f"{what} = {path!r}: the directory {parent!r} does not exist")
-    if not os.access(parent, os.W_OK):
-        raise ValueError(f"{what} = {path!r}: the directory {parent!r} is not writable")
+    try:  # a real probe: permissions, read-only file systems, quotas
+        import tempfile
+
+        with tempfile.NamedTemporaryFile(dir=parent, prefix=".slidespin-probe-"):
+            pass
+    except OSError as exc:
+        raise ValueError(
+            f"{what} = {path!r}: the directory {parent!r} is not writable ({exc.strerror})"
+        ) from None
     return path
 
 
