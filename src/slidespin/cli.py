@@ -128,9 +128,9 @@ def _cmd_simulate(args) -> int:
 def _cmd_sweep(args) -> int:
     from .sweep import connect_dask, load_spec, sweep
 
-    spec = load_spec(args.spec)
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"--workers = {args.workers} is invalid; valid range: integer >= 1")
+    spec = load_spec(args.spec)
     client = None
     if args.scheduler or args.workers:
         client = connect_dask(args.scheduler, args.workers)
@@ -200,10 +200,19 @@ def _add_outputs(p, default_plot=None) -> None:
     p.add_argument("--csv", metavar="OUT.csv", help="write the trajectory as CSV")
 
 
+class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors (exit status 2), like every other slidespin error."""
+
+    def error(self, message):
+        print(f"slidespin: error: {self.prog.split()[-1]}: {message} "
+              f"(see '{self.prog} --help')", file=sys.stderr)
+        sys.exit(2)
+
+
 def build_parser() -> argparse.ArgumentParser:
     from . import __version__
 
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="slidespin",
         description="Sliding and spinning of a flat body on a plane under anisotropic dry "
         "friction with an elliptic contact patch.",
@@ -266,7 +275,10 @@ def main(argv=None) -> int:
     debug = "--debug" in argv
     try:
         parser = build_parser()
-        args = parser.parse_args(argv)
+        try:
+            args = parser.parse_args(argv)
+        except SystemExit as exc:  # --help, --version, or a one-line usage error
+            return int(exc.code or 0)
         return int(args.func(args) or 0)
     except ValueError as exc:
         if debug:
