@@ -10,7 +10,12 @@ from __future__ import annotations
 import numba
 from numba import prange
 
-__all__ = ["jit", "prange", "numba"]
+__all__ = ["jit", "prange", "numba", "set_threads"]
+
+
+def set_threads(n: int) -> None:
+    """Limit the threads of compiled parallel loops (e.g. one per Dask worker thread)."""
+    numba.set_num_threads(max(1, min(int(n), numba.config.NUMBA_NUM_THREADS)))
 
 
 def jit(fn=None, **options):

@@ -48,8 +48,9 @@ NPAR = 11
 
 # integration status codes
 ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_SPIRAL = 0, 1, 2, 3, 4
-# once s has dropped by a further e^-60 beyond ``s_drop`` without u converging, the body has
-# stopped to machine precision while its direction of motion keeps turning: a spiral stop
+# each time s drops by a further e^-60 beyond ``s_drop`` while u has not converged, |du/dτ|
+# must have halved; if not, the body has stopped (to far below rounding) while its direction
+# of motion keeps turning: a spiral stop with no terminal direction
 LN_S_SPIRAL = -60.0
 
 
@@ -259,6 +260,8 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     status = ST_MAX_STEPS
     nsteps = 0
     exponent = -1.0 / 8.0
+    du_check = -1.0  # |du/dτ| when s first fell below target, then at each spiral check
+    ln_s_check = 0.0
     while nsteps < max_steps:
         rejected = False
         while True:
@@ -334,10 +337,18 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                     nrhs += 1
                     status = ST_STOPPED
                     break
-            if y[3] < ln_s_target + LN_S_SPIRAL:
-                # t, x, y, φ have converged (the tail is below 1e-26 of s₀); u has not
-                status = ST_SPIRAL
-                break
+            if du_check < 0.0:
+                du_check = du
+                ln_s_check = y[3] + LN_S_SPIRAL
+            elif y[3] < ln_s_check:
+                # s fell by another e^60 (t, x, y, φ are converged far below rounding):
+                # a direction still approaching its fixed point has at least halved its
+                # rate of change since the last check; one turning for ever has not
+                if du > 0.5 * du_check:
+                    status = ST_SPIRAL
+                    break
+                du_check = du
+                ln_s_check = y[3] + LN_S_SPIRAL
     # closed-form tail: ln s decays at the rate |u·A| once u has converged
     rate = -f[3]
     yend = y.copy()

@@ -328,6 +328,7 @@ def compute_chunk(spec_data: dict, index: int) -> dict:
     Returns a dict of equal-length columns: the case inputs and the stop results.
     """
     spec = load_spec(spec_data) if not isinstance(spec_data, SweepSpec) else spec_data
+    _limit_threads_in_dask_worker()
     start = index * spec.chunk_size
     cols = spec.parameters(start, start + spec.chunk_size)
     fields = _case_fields(cols)
@@ -348,6 +349,22 @@ def compute_chunk(spec_data: dict, index: int) -> dict:
         val = d[k]
         out[k] = val.astype(str) if val.dtype == object else val
     return out
+
+
+def _limit_threads_in_dask_worker() -> None:
+    """Inside a Dask worker, use as many compute threads as the worker has task threads,
+    so that N workers on N cores do not oversubscribe them."""
+    if "distributed" not in sys.modules:
+        return
+    try:
+        from distributed import get_worker
+
+        worker = get_worker()
+    except (ImportError, ValueError):
+        return
+    from ._jit import set_threads
+
+    set_threads(getattr(worker.state, "nthreads", None) or getattr(worker, "nthreads", 1))
 
 
 # --------------------------------------------------------------------------- storage
