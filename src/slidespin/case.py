@@ -23,7 +23,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
-__all__ = ["Case", "load_case", "case_from_dict"]
+__all__ = ["Case", "load_case", "case_from_dict", "read_toml"]
 
 _TABLES = {
     "patch": {"shape", "a", "b", "eccentricity", "radius"},
@@ -156,6 +156,21 @@ def case_from_dict(data: dict) -> Case:
     return Case(body, friction, state, g, rtol, max_steps, name)
 
 
+def read_toml(path, what: str) -> dict:
+    """Parse a TOML file; unreadable or malformed files raise a one-line ``ValueError``."""
+    try:
+        with open(path, "rb") as fh:
+            return tomllib.load(fh)
+    except FileNotFoundError:
+        raise ValueError(f"{what} {str(path)!r} does not exist") from None
+    except IsADirectoryError:
+        raise ValueError(f"{what} {str(path)!r} is a directory, not a TOML file") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{what} {str(path)!r} is not valid TOML: {exc}") from None
+    except OSError as exc:
+        raise ValueError(f"{what} {str(path)!r} cannot be read: {exc.strerror}") from None
+
+
 def load_case(path) -> Case:
     """Read and validate a case file.
 
@@ -165,17 +180,7 @@ def load_case(path) -> Case:
         Unreadable or malformed TOML, unknown or missing keys, or invalid values; the message
         names the file, the key, the value and the valid range.
     """
-    try:
-        with open(path, "rb") as fh:
-            data = tomllib.load(fh)
-    except FileNotFoundError:
-        raise ValueError(f"case file {str(path)!r} does not exist") from None
-    except IsADirectoryError:
-        raise ValueError(f"case file {str(path)!r} is a directory, not a TOML file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"case file {str(path)!r} is not valid TOML: {exc}") from None
-    except OSError as exc:
-        raise ValueError(f"case file {str(path)!r} cannot be read: {exc.strerror}") from None
+    data = read_toml(path, "case file")
     try:
         return case_from_dict(data)
     except ValueError as exc:

@@ -252,17 +252,12 @@ def load_spec(spec) -> SweepSpec:
         return spec
     if isinstance(spec, dict):
         return _validate_spec(spec)
-    from .case import tomllib
+    from .case import read_toml
 
     try:
-        with open(spec, "rb") as fh:
-            data = tomllib.load(fh)
-    except FileNotFoundError:
-        raise SweepError(f"sweep spec {str(spec)!r} does not exist") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise SweepError(f"sweep spec {str(spec)!r} is not valid TOML: {exc}") from None
-    except OSError as exc:
-        raise SweepError(f"sweep spec {str(spec)!r} cannot be read: {exc.strerror}") from None
+        data = read_toml(spec, "sweep spec")
+    except ValueError as exc:
+        raise SweepError(str(exc)) from None
     try:
         return _validate_spec(data)
     except ValueError as exc:
