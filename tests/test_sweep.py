@@ -184,8 +184,21 @@ def test_dask_local_cluster_gives_exactly_the_local_results(tmp_path):
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, host="127.0.0.1",
                                   dashboard_address=None, processes=True) as cluster:
         with distributed.Client(cluster) as client:
-            sweep(data, tmp_path / "dask", executor=client)
+            sweep(data, tmp_path / "dask", executor=client, task_cases=6)  # 2 tasks
     a, b = read_sweep(tmp_path / "local"), read_sweep(tmp_path / "dask")
+    for k in a:
+        assert same(a[k], b[k]), k
+
+
+def test_thread_pool_executor_groups_chunks_into_tasks(tmp_path):
+    import concurrent.futures as cf
+
+    data = small_spec(chunk_size=5)  # 24 cases, 5 chunks
+    sweep(data, tmp_path / "local")
+    with cf.ThreadPoolExecutor(2) as ex:
+        res = sweep(data, tmp_path / "pool", executor=ex, task_cases=10)
+    assert res.chunks_computed == 5
+    a, b = read_sweep(tmp_path / "local"), read_sweep(tmp_path / "pool")
     for k in a:
         assert same(a[k], b[k]), k
 

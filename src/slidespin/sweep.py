@@ -8,7 +8,8 @@ version and the chunks done. A sweep killed at any moment loses only its unfinis
 ``resume=True`` computes exactly the missing ones.
 
 Executors: by default all local cores (the compiled batch engine, :func:`simulate_cases`);
-a ``dask.distributed.Client`` (or any ``concurrent.futures.Executor``) runs one chunk per task.
+a ``dask.distributed.Client`` (or any ``concurrent.futures.Executor``) runs consecutive chunks
+of at least 1000 cases per task; the results are identical to the local ones, bit for bit.
 
 Parameters a spec may fix or vary (SI units, angles in radians):
 
@@ -51,7 +52,8 @@ from ._cases import validated_columns
 from .batch import simulate_cases
 from .pressure import LAW_NAMES
 
-__all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "compute_chunk", "PARAMETERS"]
+__all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "compute_chunk", "compute_chunks",
+           "connect_dask", "PARAMETERS", "SweepError", "SweepResult"]
 
 PARAMETERS = {
     "a": None, "b": None, "e": None, "aspect": None, "law": "uniform", "xi_c": 0.0,
@@ -67,6 +69,8 @@ RESULT_COLUMNS = (
     "ending", "status", "n_steps",
 )
 MANIFEST = "manifest.json"
+#: smallest number of cases per task sent to an executor (Dask or concurrent.futures)
+MIN_TASK_CASES = 1000
 
 
 class SweepError(ValueError):
@@ -362,6 +366,11 @@ def _limit_threads_in_dask_worker() -> None:
     set_threads(getattr(worker.state, "nthreads", None) or getattr(worker, "nthreads", 1))
 
 
+def compute_chunks(spec_data: dict, indices) -> list:
+    """:func:`compute_chunk` for several chunks in one task (a list of tables)."""
+    return [compute_chunk(spec_data, int(i)) for i in indices]
+
+
 # --------------------------------------------------------------------------- storage
 def _require_pyarrow():
     try:
@@ -509,7 +518,8 @@ class SweepResult:
         return self.cases_computed / self.seconds if self.cases_computed else 0.0
 
 
-def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | None = None) -> SweepResult:
+def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | None = None,
+          task_cases: int = MIN_TASK_CASES) -> SweepResult:
     """Run (or resume) a parameter sweep and store its results in ``out``.
 
     Parameters
@@ -525,12 +535,16 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
         existing sweep directory is refused, and a directory of a different spec always is.
     progress : bool or None
         Progress bar on stderr; ``None`` means only when stderr is a terminal.
+    task_cases : int, default 1000
+        With an executor, the least number of cases per task (whole chunks are grouped).
 
     Returns
     -------
     SweepResult
     """
     _require_pyarrow()
+    if isinstance(task_cases, bool) or not isinstance(task_cases, int) or task_cases < 1:
+        raise SweepError(f"task_cases = {task_cases!r} is invalid; valid range: integer >= 1")
     spec = load_spec(spec)
     out = Path(out)
     done = _prepare(out, spec, resume)
@@ -552,18 +566,25 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
         if executor is None:
             for i in todo:
                 finish(i, compute_chunk(spec, i))
-        elif _is_dask_client(executor):
-            from distributed import as_completed
-
-            futs = {executor.submit(compute_chunk, spec.data, i, pure=False): i for i in todo}
-            for fut in as_completed(list(futs)):
-                finish(futs[fut], fut.result())
         else:
-            import concurrent.futures as cf
+            # one task computes consecutive chunks totalling >= MIN_TASK_CASES cases, so that
+            # scheduling overhead stays small; each chunk is still written on its own
+            per_task = max(1, -(-task_cases // spec.chunk_size))
+            groups = [todo[i:i + per_task] for i in range(0, len(todo), per_task)]
+            if _is_dask_client(executor):
+                from distributed import as_completed
 
-            futs = {executor.submit(compute_chunk, spec.data, i): i for i in todo}
-            for fut in cf.as_completed(futs):
-                finish(futs[fut], fut.result())
+                futs = {executor.submit(compute_chunks, spec.data, g, pure=False): g
+                        for g in groups}
+                done_iter = as_completed(list(futs))
+            else:
+                import concurrent.futures as cf
+
+                futs = {executor.submit(compute_chunks, spec.data, g): g for g in groups}
+                done_iter = cf.as_completed(futs)
+            for fut in done_iter:
+                for i, table in zip(futs[fut], fut.result()):
+                    finish(i, table)
     finally:
         bar.close()
     return SweepResult(out, spec.n_cases, spec.n_chunks, len(todo),
