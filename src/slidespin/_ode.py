@@ -16,11 +16,19 @@ fixed point u* of the sphere flow; t, x, y, φ converge to their stop values. Th
 is the Dormand–Prince 8(5,3) pair (DOP853, Hairer–Nørsett–Wanner) with the coefficients and
 error norm of ``scipy.integrate.DOP853``, run entirely in compiled code; u is projected back
 onto the unit sphere after each step. Once s has dropped by ``s_drop`` and u is near a fixed
-point (|du/dτ| < 1e-6), the fixed point u* is found by Newton's method at the frozen final φ
-and accepted if it is stable (both tangent eigenvalues negative); otherwise integration goes
-on until |du/dτ| < ``utol``. The remaining tail is added in closed form
-(t += s/|u·A|, x += s² u₁/(2|u·A|), ...), which is exact to first order in the already
-negligible remainder.
+point (|du/dτ| < ``POLISH_START``), the fixed point u* is found by Newton's method at the
+frozen final φ (φ moves by O(s²) from there on) and accepted if it is stable (both tangent
+eigenvalues negative) and within ``POLISH_MAX_MOVE`` of u; otherwise integration goes on (a
+new attempt each time |du/dτ| has halved) until |du/dτ| < ``utol``. The remaining tail is
+added in closed form (t += s/|u·A|, x += s² u₁/(2|u·A|), ...); its error is
+O(s·|u − u*|/|u·A|), below 1e-12 s₀ in t since s < 1e-8 s₀ and |u − u*| ≲ 1e-4/|λ|.
+
+Speed: the wrench kernel's per-body constants and its workspace are set up once per
+trajectory (:func:`slidespin._kernel.wrench_constants`, :func:`~slidespin._kernel.workspace`),
+so a right-hand side costs one call of the kernel's inner function; the batch
+(:func:`integrate_many`) runs :func:`integrate` itself, without records, under ``prange``.
+Compile time: the Newton polish is inlined and every call site passes non-literal arguments,
+so the first call compiles each function once.
 """
 
 from __future__ import annotations
@@ -31,7 +39,7 @@ import numpy as np
 from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from ._jit import jit, prange
-from ._kernel import wrench_world
+from ._kernel import WORKSPACE_SHAPE, wrench_constants, wrench_world_fast
 
 _NS = _dop.N_STAGES  # 12
 _A = np.ascontiguousarray(_dop.A[:_NS, :_NS])
@@ -41,7 +49,10 @@ _E3 = np.ascontiguousarray(_dop.E3)
 _E5 = np.ascontiguousarray(_dop.E5)
 
 NY = 9
-POLISH_START = 1e-6  # |du/dτ| below which the terminal direction is polished by Newton
+#: |du/dτ| below which the terminal direction is polished by Newton (once s has dropped by
+#: ``s_drop``), and the farthest the polished direction may lie from the integrated one
+POLISH_START = 1e-4
+POLISH_MAX_MOVE = 1e-2
 # parameter vector layout
 P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range(11)
 NPAR = 11
@@ -54,29 +65,40 @@ ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_SPIRAL = 0, 1, 2, 3,
 LN_S_SPIRAL = -60.0
 
 
-@jit
-def accelerations(par, u1, u2, u3, phi):
-    """A(u, φ) = (Fx, Fy, M/k)/(m g) in natural units, and the wrench status."""
+@jit(error_model="numpy")
+def kernel_constants(par):
+    """The wrench kernel's per-body constants for the parameter vector ``par``."""
+    t00, t01, t10, t11 = par[P_T00], par[P_T01], par[P_T10], par[P_T11]
+    return wrench_constants(par[P_BN], int(par[P_LAW]), par[P_XG], par[P_YG],
+                            math.sqrt(t00 * t00 + t01 * t01 + t10 * t10 + t11 * t11),
+                            par[P_WTOL])
+
+
+@jit(error_model="numpy", inline="always")
+def accelerations(par, kc, W, u1, u2, u3, phi):
+    """A(u, φ) = (Fx, Fy, M/k)/(m g) in natural units, and the wrench status.
+
+    ``kc`` are the kernel constants (:func:`kernel_constants`), ``W`` a kernel workspace.
+    """
     k = par[P_K]
-    fx, fy, m, st = wrench_world(
-        par[P_BN], int(par[P_LAW]), par[P_XG], par[P_YG],
-        par[P_T00], par[P_T01], par[P_T10], par[P_T11],
-        par[P_BODY] != 0.0, phi, u1, u2, u3 / k, par[P_WTOL],
+    fx, fy, m, st = wrench_world_fast(
+        int(par[P_LAW]), kc, par[P_T00], par[P_T01], par[P_T10], par[P_T11],
+        par[P_BODY] != 0.0, phi, u1, u2, u3 / k, par[P_WTOL], W,
     )
     return fx, fy, m / k, st
 
 
-@jit
-def rhs(par, y, out):
+@jit(error_model="numpy")
+def _rhs(par, kc, W, y, out):
     """Right-hand side of the regularised system; returns the wrench status."""
     u1 = y[0]
     u2 = y[1]
     u3 = y[2]
-    nrm = math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
-    u1 /= nrm
-    u2 /= nrm
-    u3 /= nrm
-    ax, ay, am, st = accelerations(par, u1, u2, u3, y[7])
+    inv = 1.0 / math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
+    u1 *= inv
+    u2 *= inv
+    u3 *= inv
+    ax, ay, am, st = accelerations(par, kc, W, u1, u2, u3, y[7])
     ua = u1 * ax + u2 * ay + u3 * am
     out[0] = ax - ua * u1
     out[1] = ay - ua * u2
@@ -92,69 +114,78 @@ def rhs(par, y, out):
     return st
 
 
-@jit
-def _sphere_residual(par, u1, u2, u3, phi, out):
-    """G(u) = A − (u·A)u, the sphere flow at frozen φ, for û = u/|u|."""
-    n = math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
-    u1 /= n
-    u2 /= n
-    u3 /= n
-    ax, ay, am, st = accelerations(par, u1, u2, u3, phi)
-    ua = u1 * ax + u2 * ay + u3 * am
-    out[0] = ax - ua * u1
-    out[1] = ay - ua * u2
-    out[2] = am - ua * u3
-    return ua
+@jit(error_model="numpy")
+def rhs(par, y, out):
+    """Right-hand side of the regularised system (one call; the integrator keeps its
+    constants and workspace); returns the wrench status."""
+    return _rhs(par, kernel_constants(par), np.empty(WORKSPACE_SHAPE), y, out)
 
 
-@jit
-def polish_fixed_point(par, u, phi, max_iter=12):
+@jit(error_model="numpy", inline="always")
+def polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist):
     """Newton iteration for the fixed point u* of the sphere flow at frozen φ (MODEL §5–6).
 
     Starts from ``u`` (close to u*); works in the tangent plane of the sphere with a
     central-difference Jacobian. Returns (u*, converged, largest real part of the two
     tangent eigenvalues, number of iterations). ``converged`` is false if the iteration
-    moves more than 1e-3 away from ``u`` or does not settle below 1e-13.
+    moves more than ``max_dist`` away from ``u`` or does not settle below 1e-13 within
+    ``max_iter`` iterations. ``kc``, ``W``: kernel constants and workspace.
+
+    The sphere flow G(u) = A − (u·A)u is the first three components of the right-hand side
+    (:func:`_rhs` at ln s = 0); one call site for it keeps the compiled code small.
     """
-    uu = u / math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
-    u0 = uu.copy()
+    # (scalar loops throughout: array expressions are slow to compile)
+    nu = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
+    uu = np.empty(3)
+    u0 = np.empty(3)
+    for i in range(3):
+        uu[i] = u[i] / nu
+        u0[i] = uu[i]
     g = np.empty(3)
-    gp = np.empty(3)
-    gm = np.empty(3)
     t1 = np.empty(3)
     t2 = np.empty(3)
     jac = np.empty((2, 2))
+    yp = np.zeros(NY)
+    yp[7] = phi
+    out = np.empty(NY)
     hd = 1e-6
     converged = False
     lam = 0.0
     it = 0
     for it in range(max_iter):
-        # orthonormal tangent basis (t1, t2) at uu
+        # orthonormal tangent basis (t1, t2) at uu, from the axis least aligned with uu
         ax = 0 if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2]) else (
             1 if abs(uu[1]) <= abs(uu[2]) else 2)
-        e = np.zeros(3)
-        e[ax] = 1.0
-        d = e[0] * uu[0] + e[1] * uu[1] + e[2] * uu[2]
+        d = uu[ax]
         for i in range(3):
-            t1[i] = e[i] - d * uu[i]
+            t1[i] = (1.0 if i == ax else 0.0) - d * uu[i]
         n1 = math.sqrt(t1[0] ** 2 + t1[1] ** 2 + t1[2] ** 2)
-        t1 /= n1
+        for i in range(3):
+            t1[i] /= n1
         t2[0] = uu[1] * t1[2] - uu[2] * t1[1]
         t2[1] = uu[2] * t1[0] - uu[0] * t1[2]
         t2[2] = uu[0] * t1[1] - uu[1] * t1[0]
-        _sphere_residual(par, uu[0], uu[1], uu[2], phi, g)
+        # G at uu (m = 0) and at uu ± hd t_j (m = 1..4), central differences along t_j
+        for m in range(5):
+            j = (m - 1) // 2
+            sg = 0.0 if m == 0 else (1.0 if m % 2 == 1 else -1.0)
+            for i in range(3):
+                yp[i] = uu[i] + sg * hd * (t1[i] if j == 0 else t2[i])
+            _rhs(par, kc, W, yp, out)
+            if m == 0:
+                for i in range(3):
+                    g[i] = out[i]
+                continue
+            a0 = out[0] * t1[0] + out[1] * t1[1] + out[2] * t1[2]
+            a1 = out[0] * t2[0] + out[1] * t2[1] + out[2] * t2[2]
+            if m % 2 == 1:
+                jac[0, j] = a0
+                jac[1, j] = a1
+            else:
+                jac[0, j] = (jac[0, j] - a0) / (2.0 * hd)
+                jac[1, j] = (jac[1, j] - a1) / (2.0 * hd)
         r0 = g[0] * t1[0] + g[1] * t1[1] + g[2] * t1[2]
         r1 = g[0] * t2[0] + g[1] * t2[1] + g[2] * t2[2]
-        for j in range(2):
-            tj = t1 if j == 0 else t2
-            _sphere_residual(par, uu[0] + hd * tj[0], uu[1] + hd * tj[1], uu[2] + hd * tj[2],
-                             phi, gp)
-            _sphere_residual(par, uu[0] - hd * tj[0], uu[1] - hd * tj[1], uu[2] - hd * tj[2],
-                             phi, gm)
-            jac[0, j] = ((gp[0] - gm[0]) * t1[0] + (gp[1] - gm[1]) * t1[1]
-                         + (gp[2] - gm[2]) * t1[2]) / (2.0 * hd)
-            jac[1, j] = ((gp[0] - gm[0]) * t2[0] + (gp[1] - gm[1]) * t2[1]
-                         + (gp[2] - gm[2]) * t2[2]) / (2.0 * hd)
         det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
         tr = jac[0, 0] + jac[1, 1]
         disc = 0.25 * tr * tr - det
@@ -165,9 +196,11 @@ def polish_fixed_point(par, u, phi, max_iter=12):
         d1 = (-r1 * jac[0, 0] + r0 * jac[1, 0]) / det
         for i in range(3):
             uu[i] += d0 * t1[i] + d1 * t2[i]
-        uu /= math.sqrt(uu[0] ** 2 + uu[1] ** 2 + uu[2] ** 2)
+        nu = math.sqrt(uu[0] ** 2 + uu[1] ** 2 + uu[2] ** 2)
+        for i in range(3):
+            uu[i] /= nu
         dist = math.sqrt((uu[0] - u0[0]) ** 2 + (uu[1] - u0[1]) ** 2 + (uu[2] - u0[2]) ** 2)
-        if dist > 1e-3:
+        if dist > max_dist:
             break
         if math.sqrt(d0 * d0 + d1 * d1) < 1e-13:
             converged = True
@@ -175,8 +208,9 @@ def polish_fixed_point(par, u, phi, max_iter=12):
     return uu, converged, lam, it + 1
 
 
-@jit
+@jit(error_model="numpy")
 def _err_norm(K, h, scale):
+    """scipy's DOP853 error norm."""
     n = scale.size
     e5 = 0.0
     e3 = 0.0
@@ -195,7 +229,7 @@ def _err_norm(K, h, scale):
     return abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * n)
 
 
-@jit
+@jit(error_model="numpy")
 def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     """Integrate the regularised system from ``y0`` to the stop.
 
@@ -243,8 +277,10 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     yt = np.empty(NY)
     ynew = np.empty(NY)
     scale = np.empty(NY)
+    kc = kernel_constants(par)
+    W = np.empty(WORKSPACE_SHAPE)
     fails = 0
-    fails += rhs(par, y, f)
+    fails += _rhs(par, kc, W, y, f)
     nrhs = 1
     cap = 256 if record else 1
     rec = np.empty((cap, NY + 1))
@@ -252,7 +288,8 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     tau = 0.0
     if record:
         rec[0, 0] = tau
-        rec[0, 1:] = y
+        for i in range(NY):
+            rec[0, 1 + i] = y[i]
         nrec = 1
     # initial step: resolve the sphere flow (rates are O(friction coefficient))
     fm = math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2 + f[3] ** 2)
@@ -260,6 +297,7 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     status = ST_MAX_STEPS
     nsteps = 0
     exponent = -1.0 / 8.0
+    du_polish = math.inf  # |du/dτ| at the last polishing attempt
     du_check = -1.0  # |du/dτ| when s first fell below target, then at each spiral check
     ln_s_check = 0.0
     while nsteps < max_steps:
@@ -268,21 +306,22 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
             if h < 1e-12 * (1.0 + tau):
                 status = ST_STEP_TOO_SMALL
                 break
-            K[0, :] = f
+            for i in range(NY):
+                K[0, i] = f[i]
             for st in range(1, _NS):
                 for i in range(NY):
                     acc = 0.0
                     for j in range(st):
                         acc += _A[st, j] * K[j, i]
                     yt[i] = y[i] + h * acc
-                fails += rhs(par, yt, K[st])
+                fails += _rhs(par, kc, W, yt, K[st])
                 nrhs += 1
             for i in range(NY):
                 acc = 0.0
                 for j in range(_NS):
                     acc += _B[j] * K[j, i]
                 ynew[i] = y[i] + h * acc
-            fails += rhs(par, ynew, K[_NS])
+            fails += _rhs(par, kc, W, ynew, K[_NS])
             nrhs += 1
             for i in range(NY):
                 scale[i] = atol + max(abs(y[i]), abs(ynew[i])) * rtol
@@ -313,27 +352,32 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
         if record:
             if nrec == cap:
                 big = np.empty((2 * cap, NY + 1))
-                big[:cap, :] = rec
+                for i in range(cap):  # (loops: slice assignment is slow to compile)
+                    for c in range(NY + 1):
+                        big[i, c] = rec[i, c]
                 rec = big
                 cap *= 2
             rec[nrec, 0] = tau
-            rec[nrec, 1:] = y
+            for i in range(NY):
+                rec[nrec, 1 + i] = y[i]
             nrec += 1
         du = math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2)
         if y[3] < ln_s_target:
             if du < utol:
                 status = ST_STOPPED
                 break
-            if du < POLISH_START:
-                # near a hyperbolic fixed point: Newton gives u* to ~1e-12 at once, where the
-                # explicit integrator, its steps limited by stability, would crawl
-                us, ok, lam, nit = polish_fixed_point(par, y[:3], y[7])
+            if du < POLISH_START and du < 0.5 * du_polish:
+                # near a hyperbolic fixed point: Newton gives u* to ~1e-13 at once, where the
+                # explicit integrator would take many more steps to converge
+                du_polish = du
+                us, ok, lam, nit = polish_fixed_point(par, kc, W, y[:3], y[7], 12,
+                                                      POLISH_MAX_MOVE)
                 nrhs += 5 * nit
                 if ok and lam < 0.0:
                     y[0] = us[0]
                     y[1] = us[1]
                     y[2] = us[2]
-                    fails += rhs(par, y, f)
+                    fails += _rhs(par, kc, W, y, f)
                     nrhs += 1
                     status = ST_STOPPED
                     break
@@ -364,39 +408,85 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     return yend, status, nsteps, nrhs, fails, rate, rec[:nrec].copy()
 
 
-@jit(parallel=True)
-def integrate_many(pars, y0s, rtol, atol, utol, s_drop, max_steps):
+@jit(error_model="numpy")
+def initial_state(par, vx, vy, wn, x, y, phi):
+    """Regularised initial state (MODEL §5) from the velocity (vx, vy) of G, the spin ω (as
+    ``wn``) and the position (x, y, φ), all in natural units; a body at rest gets
+    ln s = −inf. The same arithmetic as :func:`slidespin.simulate`, so that batch and single
+    runs agree to the last bit."""
+    k = par[P_K]
+    y0 = np.zeros(NY)
+    s0 = math.sqrt(vx * vx + vy * vy + (k * wn) ** 2)
+    y0[5] = x
+    y0[6] = y
+    y0[7] = phi
+    if s0 == 0.0:
+        y0[3] = -np.inf
+        return y0
+    y0[0] = vx / s0
+    y0[1] = vy / s0
+    y0[2] = k * wn / s0
+    y0[3] = math.log(s0)
+    return y0
+
+
+@jit(error_model="numpy")
+def stop_direction(yend):
+    """|u₁₂| and the direction ϑ = atan2(u₂, u₁) of each stop state, with the same libm
+    functions as :func:`slidespin.simulate` (math.hypot, math.atan2), bit for bit."""
+    n = yend.shape[0]
+    u12 = np.empty(n)
+    theta = np.empty(n)
+    for i in range(n):
+        u12[i] = math.hypot(yend[i, 0], yend[i, 1])
+        theta[i] = math.atan2(yend[i, 1], yend[i, 0])
+    return u12, theta
+
+
+@jit(parallel=True, error_model="numpy")
+def integrate_many(pars, init, rtol, atol, utol, s_drop, max_steps):
     """:func:`integrate` for many independent cases in parallel (no per-step records).
 
     Parameters
     ----------
     pars : ndarray (N, NPAR)
         One parameter vector per case.
-    y0s : ndarray (N, NY)
-        Initial regularised states; a row with ln s = −inf is a body at rest.
+    init : ndarray (N, 6)
+        Initial (vx, vy, ω, x, y, φ) per case in natural units (:func:`initial_state`).
 
     Returns
     -------
     y_stop : ndarray (N, NY)
-    status, n_steps, n_wrench_failed : ndarray (N,) of int64
+        Stop states (a body at rest keeps its initial state, with ln s = −inf).
+    status, n_steps, n_rhs, n_wrench_failed : ndarray (N,) of int64
     """
-    n = y0s.shape[0]
+    n = init.shape[0]
     out = np.empty((n, NY))
     status = np.empty(n, dtype=np.int64)
     steps = np.empty(n, dtype=np.int64)
+    rhss = np.empty(n, dtype=np.int64)
     fails = np.empty(n, dtype=np.int64)
+    no_record = max_steps < 0
     for i in prange(n):
-        if y0s[i, 3] == -np.inf:
-            out[i, :] = y0s[i, :]
+        y0 = initial_state(pars[i], init[i, 0], init[i, 1], init[i, 2], init[i, 3],
+                           init[i, 4], init[i, 5])
+        if y0[3] == -np.inf:
+            for c in range(NY):
+                out[i, c] = y0[c]
             status[i] = ST_AT_REST
             steps[i] = 0
+            rhss[i] = 0
             fails[i] = 0
             continue
+        # ``no_record`` is False as a variable: a literal False would compile integrate() a
+        # second time, specialised, instead of reusing the version simulate() compiled
         yend, st, ns, nr, nf, rate, rec = integrate(
-            pars[i], y0s[i], rtol, atol, utol, s_drop, max_steps, np.inf, False
+            pars[i], y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
         )
-        out[i, :] = yend
+        for c in range(NY):
+            out[i, c] = yend[c]
         status[i] = st
         steps[i] = ns
+        rhss[i] = nr
         fails[i] = nf
-    return out, status, steps, fails
+    return out, status, steps, rhss, fails

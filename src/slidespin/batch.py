@@ -2,8 +2,12 @@
 
 ``simulate_many`` integrates one body under one friction tensor from N initial states;
 ``simulate_cases`` takes every parameter per case (patch, law, tensor, inertia, g, state),
-which is what parameter sweeps need. Both return a :class:`StopResults` of arrays and hold
-no per-step data, so memory grows only with N (about 200 bytes per case).
+which is what parameter sweeps need. Both return a :class:`StopResults` of arrays.
+
+Memory: no per-step data is kept. The cases run in chunks of ``CHUNK`` through
+:func:`slidespin._ode.integrate_many` (``prange`` over the cases of a chunk), so besides the
+inputs only the results are held for all N (67 bytes per case) and the working arrays for one
+chunk; each worker thread integrates in a fixed ~20 kB.
 """
 
 from __future__ import annotations
@@ -14,12 +18,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _ode
+from . import _validate as v
 from .body import Body
 from .friction import FrictionTensor
 from .pressure import LAW_NAMES
 from .simulate import ENDING_TOL, ENDINGS, STATUSES
 
 __all__ = ["StopResults", "simulate_many", "simulate_cases", "CASE_FIELDS"]
+
+#: cases per call of the parallel engine (bounds the temporary arrays of a batch)
+CHUNK = 1 << 16
 
 #: per-case inputs of :func:`simulate_cases` and their defaults (None: required)
 CASE_FIELDS = {
@@ -101,11 +109,21 @@ def _column(name, value, n, kind="real"):
     return np.broadcast_to(arr, (n,)) if arr.ndim == 0 or arr.size == 1 else arr
 
 
+def _check_options(rtol, max_steps):
+    """Validate the integrator options as :func:`slidespin.simulate` does."""
+    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
+    if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
+        raise ValueError(f"max_steps = {max_steps!r} is invalid; valid range: integer >= 1")
+    return rtol, int(max_steps)
+
+
 def _check(name, arr, ok, valid):
     bad = ~ok
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name} = {arr[i]!r} (case {i}) is invalid; valid range: {valid}")
+        # 1.5 rather than np.float64(1.5) in the message
+        value = arr[i].item() if isinstance(arr[i], np.generic) else arr[i]
+        raise ValueError(f"{name} = {value!r} (case {i}) is invalid; valid range: {valid}")
 
 
 def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -> StopResults:
@@ -129,6 +147,9 @@ def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -
     -------
     StopResults
     """
+    rtol, max_steps = _check_options(rtol, max_steps)
+    if not isinstance(cases, dict):
+        raise ValueError(f"cases must be a dict of case fields, got {type(cases).__name__}")
     unknown = sorted(set(cases) - set(CASE_FIELDS))
     if unknown:
         raise ValueError(f"unknown case field {unknown[0]!r}; valid: {', '.join(CASE_FIELDS)}")
@@ -165,7 +186,8 @@ def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -
     for k in ("xi_c", "eta_c", "f", "angle", "x", "y", "phi", "vx", "vy", "omega"):
         _check(k, col[k], np.isfinite(col[k]), "finite")
     inertia = col["moment_of_inertia"]
-    inertia = np.where(np.isnan(inertia), col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4, inertia)
+    plate = col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4
+    inertia = np.where(np.isnan(inertia), plate, inertia)
     _check("moment_of_inertia", inertia, np.isfinite(inertia) & (inertia > 0), "finite and > 0")
     is_lin = col["law"] == 1
     core = (col["xi_c"] / col["a"]) ** 2 + (col["eta_c"] / col["b"]) ** 2
@@ -175,74 +197,97 @@ def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -
 
 
 def _run(col, inertia, rtol, max_steps) -> StopResults:
-    n = col["a"].size
-    a = col["a"]
-    k = np.sqrt(inertia / col["mass"]) / a
-    lin = col["law"] == 1
-    ang = col["angle"]
-    c, s = np.cos(ang), np.sin(ang)
-    fx, fy, f = col["fx"], col["fy"], col["f"]
-    # R(angle) [[fx, f], [-f, fy]] R(angle)^T
-    t00 = fx * c * c + fy * s * s
-    t11 = fx * s * s + fy * c * c
-    t01 = (fx - fy) * c * s + f
-    t10 = (fx - fy) * c * s - f
-    pars = np.empty((n, _ode.NPAR))
-    pars[:, _ode.P_BN] = col["b"] / a
-    pars[:, _ode.P_LAW] = col["law"]
-    pars[:, _ode.P_XG] = np.where(lin, col["xi_c"] / a, 0.0)
-    pars[:, _ode.P_YG] = np.where(lin, col["eta_c"] / a, 0.0)
-    pars[:, _ode.P_T00], pars[:, _ode.P_T01] = t00, t01
-    pars[:, _ode.P_T10], pars[:, _ode.P_T11] = t10, t11
-    pars[:, _ode.P_BODY] = col["frame"]
-    pars[:, _ode.P_K] = k
-    pars[:, _ode.P_WTOL] = 1e-12
-    g = col["g"]
-    t_unit = np.sqrt(a / g)
-    v_unit = np.sqrt(a * g)
-    vx, vy, wn = col["vx"] / v_unit, col["vy"] / v_unit, col["omega"] * t_unit
-    s0 = np.sqrt(vx * vx + vy * vy + (k * wn) ** 2)
-    rest = s0 == 0.0
-    safe = np.where(rest, 1.0, s0)
-    y0 = np.empty((n, _ode.NY))
-    y0[:, 0], y0[:, 1], y0[:, 2] = vx / safe, vy / safe, k * wn / safe
-    with np.errstate(divide="ignore"):
-        y0[:, 3] = np.where(rest, -np.inf, np.log(safe))
-    y0[:, 4] = 0.0
-    y0[:, 5], y0[:, 6], y0[:, 7] = col["x"] / a, col["y"] / a, col["phi"]
-    y0[:, 8] = 0.0
-    yend, status, steps, fails = _ode.integrate_many(
-        pars, y0, float(rtol), float(rtol), float(rtol), min(float(rtol), 1e-8), int(max_steps)
+    def pars_of(lo, hi):
+        """Parameter rows of cases lo..hi (natural units)."""
+        a = col["a"][lo:hi]
+        lin = col["law"][lo:hi] == 1
+        ang = col["angle"][lo:hi]
+        c, s = np.cos(ang), np.sin(ang)
+        fx, fy, f = col["fx"][lo:hi], col["fy"][lo:hi], col["f"][lo:hi]
+        pars = np.empty((hi - lo, _ode.NPAR))
+        pars[:, _ode.P_BN] = col["b"][lo:hi] / a
+        pars[:, _ode.P_LAW] = col["law"][lo:hi]
+        pars[:, _ode.P_XG] = np.where(lin, col["xi_c"][lo:hi] / a, 0.0)
+        pars[:, _ode.P_YG] = np.where(lin, col["eta_c"][lo:hi] / a, 0.0)
+        # R(angle) [[fx, f], [-f, fy]] R(angle)^T
+        pars[:, _ode.P_T00] = fx * c * c + fy * s * s
+        pars[:, _ode.P_T11] = fx * s * s + fy * c * c
+        pars[:, _ode.P_T01] = (fx - fy) * c * s + f
+        pars[:, _ode.P_T10] = (fx - fy) * c * s - f
+        pars[:, _ode.P_BODY] = col["frame"][lo:hi]
+        pars[:, _ode.P_K] = np.sqrt(inertia[lo:hi] / col["mass"][lo:hi]) / a
+        pars[:, _ode.P_WTOL] = 1e-12
+        return pars
+
+    return _integrate_all(col["a"].size, pars_of, col["a"], col["g"], col, rtol, max_steps)
+
+
+def _integrate_all(n, pars_of, a, g, st, rtol, max_steps) -> StopResults:
+    """Integrate n cases in chunks of ``CHUNK`` and convert to SI stop results.
+
+    ``pars_of(lo, hi)``: parameter rows of cases lo..hi (natural units); ``a``, ``g``: semi-axis
+    and gravity (arrays of length n, or scalars); ``st``: mapping with the initial ``x, y, phi,
+    vx, vy, omega`` (SI, arrays of length n). Only the results are held for all n cases.
+    """
+    a = np.broadcast_to(np.asarray(a, dtype=float), (n,))
+    g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
+    res = StopResults(
+        t_stop=np.empty(n), x_stop=np.empty(n), y_stop=np.empty(n), phi_stop=np.empty(n),
+        path_length=np.empty(n), beta_stop=np.empty(n), theta_stop=np.empty(n),
+        ending_code=np.empty(n, dtype=np.int8), status_code=np.empty(n, dtype=np.int8),
+        n_steps=np.empty(n, dtype=np.int64),
     )
-    if fails.any():  # pragma: no cover - guard
-        raise RuntimeError(f"{int((fails > 0).sum())} cases had wrench evaluations above their "
-                           "error target; please report")
-    u1, u2, u3 = yend[:, 0], yend[:, 1], yend[:, 2]
-    u12 = np.hypot(u1, u2)
+    fails = 0
+    for lo in range(0, n, CHUNK):
+        hi = min(n, lo + CHUNK)
+        pars = pars_of(lo, hi)
+        ac = a[lo:hi]
+        t_unit = np.sqrt(ac / g[lo:hi])
+        v_unit = np.sqrt(ac * g[lo:hi])
+        # the same arithmetic as simulate(): natural units here, y0 in compiled code
+        init = np.empty((hi - lo, 6))
+        init[:, 0] = st["vx"][lo:hi] / v_unit
+        init[:, 1] = st["vy"][lo:hi] / v_unit
+        init[:, 2] = st["omega"][lo:hi] * t_unit
+        init[:, 3] = st["x"][lo:hi] / ac
+        init[:, 4] = st["y"][lo:hi] / ac
+        init[:, 5] = st["phi"][lo:hi]
+        yend, status, steps, _, nf = _ode.integrate_many(
+            pars, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
+        )
+        fails += int((nf > 0).sum())
+        _stop_values(res, lo, hi, yend, status, steps, pars[:, _ode.P_K], ac, t_unit, st)
+    if fails:  # pragma: no cover - guard
+        raise RuntimeError(f"{fails} cases had wrench evaluations above their error target; "
+                           "please report")
+    return res
+
+
+def _stop_values(res, lo, hi, yend, status, steps, k, a, t_unit, st):
+    """Fill cases lo..hi of ``res`` from the stop states, exactly as simulate() does."""
+    rest = status == _ode.ST_AT_REST
+    u3 = yend[:, 2]
+    u12, theta = _ode.stop_direction(yend)
+    # classification and β* from u*, then the spiral override
     ending = np.where(np.abs(u3) <= ENDING_TOL, 1, np.where(u12 <= ENDING_TOL, 2, 0))
-    ending = np.where(rest, 3, ending)
-    spiral = status == _ode.ST_SPIRAL
-    ending = np.where(spiral, 4, ending).astype(np.int8)
-    status = np.where(spiral, _ode.ST_STOPPED, status)
     with np.errstate(divide="ignore", invalid="ignore"):
         beta = k * u12 / u3 * a
     beta = np.where(ending == 1, np.inf, beta)
     beta = np.where(ending == 2, 0.0, beta)
-    beta = np.where(rest, np.nan, beta)
+    spiral = status == _ode.ST_SPIRAL
     beta = np.where(spiral & (np.abs(u3) > ENDING_TOL), np.nan, beta)
-    theta = np.where(rest | spiral, np.nan, np.arctan2(u2, u1))
-    return StopResults(
-        t_stop=yend[:, 4] * t_unit,
-        x_stop=yend[:, 5] * a,
-        y_stop=yend[:, 6] * a,
-        phi_stop=yend[:, 7].copy(),
-        path_length=yend[:, 8] * a,
-        beta_stop=beta,
-        theta_stop=theta,
-        ending_code=ending,
-        status_code=status.astype(np.int8),
-        n_steps=steps,
-    )
+    ending = np.where(spiral, 4, ending)
+    # a body at rest stays where it is
+    res.ending_code[lo:hi] = np.where(rest, 3, ending)
+    res.status_code[lo:hi] = np.where(spiral, _ode.ST_STOPPED, status)
+    res.beta_stop[lo:hi] = np.where(rest, np.nan, beta)
+    res.theta_stop[lo:hi] = np.where(rest | spiral, np.nan, theta)
+    res.t_stop[lo:hi] = np.where(rest, 0.0, yend[:, 4] * t_unit)
+    res.x_stop[lo:hi] = np.where(rest, st["x"][lo:hi], yend[:, 5] * a)
+    res.y_stop[lo:hi] = np.where(rest, st["y"][lo:hi], yend[:, 6] * a)
+    res.phi_stop[lo:hi] = np.where(rest, st["phi"][lo:hi], yend[:, 7])
+    res.path_length[lo:hi] = np.where(rest, 0.0, yend[:, 8] * a)
+    res.n_steps[lo:hi] = steps
 
 
 def simulate_many(
@@ -277,16 +322,25 @@ def simulate_many(
         raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
     if not isinstance(friction, FrictionTensor):
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
-    st = np.asarray(initial_states, dtype=float)
+    try:
+        st = np.asarray(initial_states, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("initial_states must be an (N, 6) array of real numbers "
+                         "(x, y, phi, vx, vy, omega)") from None
     if st.ndim != 2 or st.shape[1] != 6:
         raise ValueError(
             f"initial_states has shape {st.shape}; valid: (N, 6) rows of (x, y, phi, vx, vy, omega)"
         )
-    xg, yg = body.mass_centre
-    fields = dict(
-        a=body.patch.a, b=body.patch.b, law=body.pressure.code, xi_c=xg, eta_c=yg,
-        fx=friction.fx, fy=friction.fy, f=friction.f, frame=friction.frame,
-        angle=friction.angle, mass=body.mass, moment_of_inertia=body.moment_of_inertia, g=g,
-        x=st[:, 0], y=st[:, 1], phi=st[:, 2], vx=st[:, 3], vy=st[:, 4], omega=st[:, 5],
-    )
-    return simulate_cases(fields, rtol=rtol, max_steps=max_steps)
+    rtol, max_steps = _check_options(rtol, max_steps)
+    g = v.positive("g", g, "m/s^2")
+    bad = ~np.isfinite(st)
+    if bad.any():
+        i, j = (int(x[0]) for x in np.nonzero(bad))
+        name = ("x", "y", "phi", "vx", "vy", "omega")[j]
+        raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
+                         "valid range: any finite real number")
+    # the parameter vector of simulate() itself, so that the numbers agree to the last bit
+    par = body.kernel_params(friction)
+    states = {name: st[:, i] for i, name in enumerate(("x", "y", "phi", "vx", "vy", "omega"))}
+    return _integrate_all(st.shape[0], lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
+                          body.patch.a, g, states, rtol, max_steps)

@@ -1,0 +1,836 @@
+"""``slidespin bench``: how fast the compiled engine is, against the routes it replaces.
+
+Everything is measured in one run on this machine and printed as a table (and written as
+JSON with ``--json``):
+
+* the friction wrench from compiled code, per pressure law, ICR inside and outside the patch
+  (the engine's inner call: constants and workspace reused), with its node counts;
+* one trajectory to the converged stop (the demo case; and the mean over a batch, one thread);
+* trajectories per second on all cores (:func:`slidespin.batch.simulate_many`), and the peak
+  memory of a batch (measured in a subprocess);
+* the Python-call overhead of :func:`slidespin.simulate` beyond its compiled part;
+* the JIT compile time of the first call, cold (empty numba cache, in a subprocess) and with
+  the cache;
+* the accuracy reached: the wrench against the slow adaptive reference (``tests/reference.py``
+  of a source checkout) and the trajectory against a run at rtol = 1e-13;
+* the baselines: (a) the naive route, ``scipy.integrate.dblquad`` for Fx, Fy and M at every
+  right-hand side driven by ``solve_ivp`` RK45 (rtol 1e-8) with a stop event, time-boxed by
+  ``--naive-seconds`` (its per-RHS cost is measured; its full time is that cost times the
+  number of right-hand sides the same solver needs on the same problem, counted with the
+  compiled wrench); (b) the paper's semi-analytic route in vectorised NumPy
+  (:mod:`slidespin.paper.semianalytic`) driven by ``solve_ivp``.
+
+The demo case is the elliptic plate of ``slidespin demo`` (e = 0.866, a = 0.1 m, uniform
+pressure, fx = 0.42, fy = 0.54, v₀ = 1 m/s, ω₀ = 5 rad/s, ϑ₀ = π/4). Timings are wall-clock;
+no test asserts them. Also runnable as ``python -m slidespin.bench``. This module follows the
+plugin contract of :mod:`slidespin.cli`: ``configure(parser)`` and ``run(args) -> int``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ._jit import jit, numba
+from ._kernel import WORKSPACE_SHAPE, wrench_constants, wrench_fast
+
+__all__ = ["configure", "run", "main", "GOALS"]
+
+#: the goals of the issue (2-core machine), for the PASS/MISS column
+GOALS = {
+    "wrench_uniform_linear_us": 2.0,
+    "wrench_boussinesq_hertz_us": 5.0,
+    "trajectory_ms": 0.5,
+    "batch_per_s": 10_000.0,
+    "simulate_overhead_us": 50.0,
+    "first_call_cold_s": 10.0,
+    "first_call_cached_s": 1.5,
+    "speedup_semianalytic": 1e3,
+    "speedup_naive": 1e5,
+}
+
+_LAWS = ("uniform", "linear", "boussinesq", "hertz")
+
+
+def configure(parser) -> None:
+    """Add the arguments of ``slidespin bench`` to an argparse (sub)parser."""
+    parser.description = (
+        "Benchmark the compiled engine (wrench, trajectory, batch, compile time, accuracy) "
+        "against the naive dblquad + solve_ivp route and the paper's semi-analytic NumPy "
+        "route, all measured in this run."
+    )
+    parser.add_argument("--quick", action="store_true",
+                        help="smaller samples and a 10 s naive time box (under a minute)")
+    parser.add_argument("--naive-seconds", type=float, default=None, metavar="S",
+                        help="time box of the naive baseline (default 60, quick 10)")
+    parser.add_argument("--batch", type=int, default=None, metavar="N",
+                        help="trajectories in the throughput batch (default 40000, quick 4000)")
+    parser.add_argument("--memory-cases", type=int, default=None, metavar="N",
+                        help="cases of the peak-memory batch (default 100000, quick 10000; "
+                             "1000000 for the full-size check)")
+    parser.add_argument("--no-compile", action="store_true",
+                        help="skip the cold/cached compile-time subprocesses")
+    parser.add_argument("--json", metavar="OUT.json", default=None,
+                        help="where to write all figures as JSON (default slidespin-bench.json)")
+    parser.add_argument("--no-json", action="store_true", help="do not write the JSON file")
+
+
+def _defaults(args):
+    quick = bool(getattr(args, "quick", False))
+    naive = args.naive_seconds if args.naive_seconds is not None else (10.0 if quick else 60.0)
+    batch = args.batch if args.batch is not None else (4000 if quick else 40_000)
+    mem = args.memory_cases if args.memory_cases is not None else (10_000 if quick else 100_000)
+    if not (naive > 0 and math.isfinite(naive)):
+        raise ValueError(f"--naive-seconds = {naive!r} is invalid; valid range: > 0")
+    for name, val in (("--batch", batch), ("--memory-cases", mem)):
+        if val < 10:
+            raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 10")
+    out = None
+    if not args.no_json:
+        from .cli import check_output_path
+
+        out = check_output_path(args.json or "slidespin-bench.json", "--json")
+    return quick, naive, batch, mem, out
+
+
+def _log(msg):
+    print(f"  ... {msg}", file=sys.stderr, flush=True)
+
+
+# ---------------------------------------------------------------------------------------------
+# the demo case and its pieces
+
+
+def _demo():
+    from .cli import demo_case
+
+    case = demo_case()
+    return case.body, case.friction, case.initial_state, case.g
+
+
+def _natural(body, friction, state, g):
+    """Parameter vector and regularised initial state of :func:`slidespin.simulate`."""
+    from . import _ode
+
+    a = body.patch.a
+    par = body.kernel_params(friction)
+    v_unit, t_unit = math.sqrt(a * g), math.sqrt(a / g)
+    y0 = _ode.initial_state(par, state.vx / v_unit, state.vy / v_unit, state.omega * t_unit,
+                            state.x / a, state.y / a, state.phi)
+    return par, y0
+
+
+def _best(fn, repeat=5, number=1):
+    """Best mean time of ``number`` calls over ``repeat`` rounds [s]."""
+    best = math.inf
+    for _ in range(repeat):
+        t = time.perf_counter()
+        for _ in range(number):
+            fn()
+        best = min(best, (time.perf_counter() - t) / number)
+    return best
+
+
+# ---------------------------------------------------------------------------------------------
+# compiled timing loops
+
+
+@jit(error_model="numpy")
+def _wrench_loop(law, bn, xg, yg, t, cx, cy, omega, reps):
+    """The engine's inner wrench call (constants and workspace reused) for the ICR at each
+    (cx, cy), ``reps`` times over; returns a checksum and the mean node count."""
+    tn = math.sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2] + t[3] * t[3])
+    kc = wrench_constants(bn, law, xg, yg, tn, 1e-12)
+    W = np.empty(WORKSPACE_SHAPE)
+    s = 0.0
+    nodes = 0
+    for r in range(reps):
+        for i in range(cx.size):
+            vx = (cy[i] - yg) * omega
+            vy = -(cx[i] - xg) * omega
+            fx, fy, m, st, meth, n = wrench_fast(law, kc, t[0], t[1], t[2], t[3], vx, vy,
+                                                 omega, 1e-12, W)
+            s += fx + fy + m
+            nodes += n
+    return s, nodes / (reps * cx.size)
+
+
+def _icr_states(bn, where, n, rng):
+    """ICR positions (body frame, units of a) uniformly inside q < 0.9² or in 1.1² < q < 10²."""
+    out = []
+    while len(out) < n:
+        r = math.sqrt(rng.uniform(0, 0.81)) if where == "inside" else rng.uniform(1.1, 10.0)
+        t = rng.uniform(0, 2 * math.pi)
+        out.append((r * math.cos(t), r * bn * math.sin(t)))
+    c = np.array(out)
+    return np.ascontiguousarray(c[:, 0]), np.ascontiguousarray(c[:, 1])
+
+
+def bench_wrench(quick, rng):
+    """Time per wrench [µs] for each law, ICR inside and outside (demo patch b/a = 0.5)."""
+    bn = math.sqrt(1 - 0.866**2)
+    t = np.array([0.42, 0.1, -0.1, 0.54])
+    n = 200 if quick else 1000
+    res = {}
+    for code, law in enumerate(_LAWS):
+        xg, yg = (0.1, 0.05 * bn) if law == "linear" else (0.0, 0.0)
+        for where in ("inside", "outside"):
+            cx, cy = _icr_states(bn, where, n, rng)
+            _wrench_loop(code, bn, xg, yg, t, cx, cy, 1.0, 1)
+            reps = 5 if quick else 20
+            dt = _best(lambda: _wrench_loop(code, bn, xg, yg, t, cx, cy, 1.0, reps), repeat=3)
+            _, nodes = _wrench_loop(code, bn, xg, yg, t, cx, cy, 1.0, 1)
+            res[f"{law}_{where}"] = {"us": dt / (reps * n) * 1e6, "nodes": float(nodes)}
+    return res
+
+
+def bench_wrench_python(body, friction):
+    """Wall time of one friction_wrench() call from Python [µs] (validation included)."""
+    import slidespin as ss
+
+    ss.friction_wrench(body, friction, 0.3, 0.1, 4.0)
+    return _best(lambda: ss.friction_wrench(body, friction, 0.3, 0.1, 4.0), 5, 200) * 1e6
+
+
+# ---------------------------------------------------------------------------------------------
+# trajectories and batches
+
+
+def bench_trajectory(quick):
+    """Demo trajectory: compiled integration (no records) per trajectory, the Python call
+    ``simulate`` and its overhead beyond its compiled part, at rtol 1e-10 and 1e-8."""
+    import slidespin as ss
+    from . import _ode
+    from ._kernel import wrench_array
+
+    body, fr, st, g = _demo()
+    par, y0 = _natural(body, fr, st, g)
+    out = {}
+    number = 20 if quick else 100
+    for rtol in (1e-10, 1e-8):
+        def compiled(record=False):
+            return _ode.integrate(par, y0, rtol, rtol, rtol, min(rtol, 1e-8), 200_000, np.inf,
+                                  record)
+
+        r = compiled()
+        t_int = _best(compiled, 5, number)
+        # what simulate() runs compiled: integration with records + wrench on the records
+        r2 = compiled(True)
+        rows = np.vstack([r2[6][:, 1:], r2[0][None, :]])
+        k = par[_ode.P_K]
+
+        def post():
+            return wrench_array(par[0], int(par[1]), par[2], par[3], par[4], par[5], par[6],
+                                par[7], par[8] != 0.0, rows[:, 7].copy(), rows[:, 0].copy(),
+                                rows[:, 1].copy(), rows[:, 2] / k, 1e-12)
+
+        t_rec = _best(lambda: compiled(True), 5, number)
+        t_post = _best(post, 5, number)
+        ss.simulate(body, fr, st, g=g, rtol=rtol)
+        t_sim = _best(lambda: ss.simulate(body, fr, st, g=g, rtol=rtol), 5, number)
+        out[f"rtol={rtol:g}"] = {
+            "integrate_ms": t_int * 1e3,
+            "steps": int(r[2]),
+            "rhs": int(r[3]),
+            "us_per_rhs": t_int / r[3] * 1e6,
+            "simulate_ms": t_sim * 1e3,
+            "simulate_compiled_ms": (t_rec + t_post) * 1e3,
+            "simulate_overhead_us": max(t_sim - t_rec - t_post, 0.0) * 1e6,
+            "t_stop_s": float(r[0][4] * math.sqrt(body.patch.a / g)),
+        }
+    return out
+
+
+def _batch_states(n, rng):
+    """Random starts of the demo body: |v| ≤ 1.4 m/s in any direction, |ω| ≤ 20 rad/s, φ₀."""
+    s = np.zeros((n, 6))
+    s[:, 2] = rng.uniform(0, 2 * math.pi, n)
+    s[:, 3] = rng.uniform(-1, 1, n)
+    s[:, 4] = rng.uniform(-1, 1, n)
+    s[:, 5] = rng.uniform(-20, 20, n)
+    return s
+
+
+def bench_batch(n, rng):
+    """Trajectories per second of simulate_many, on all cores and on one."""
+    from .batch import simulate_many
+
+    body, fr, _, g = _demo()
+    s = _batch_states(n, rng)
+    simulate_many(body, fr, s[:8], g=g)
+    threads = numba.get_num_threads()
+    t = time.perf_counter()
+    res = simulate_many(body, fr, s, g=g)
+    t_all = time.perf_counter() - t
+    one = s[: max(10, n // 4)]
+    numba.set_num_threads(1)
+    try:
+        t = time.perf_counter()
+        simulate_many(body, fr, one, g=g)
+        t_one = (time.perf_counter() - t) / len(one)
+    finally:
+        numba.set_num_threads(threads)
+    counts = {name: int((res.ending == name).sum()) for name in set(res.ending)}
+    return {
+        "cases": n,
+        "threads": threads,
+        "per_s": n / t_all,
+        "per_s_one_thread": 1.0 / t_one,
+        "ms_per_trajectory_one_thread": t_one * 1e3,
+        "mean_steps": float(res.n_steps.mean()),
+        "endings": counts,
+        "all_stopped": bool(np.all(res.status == "stopped")),
+    }
+
+
+_MEMORY_SCRIPT = r"""
+import json, sys, time
+import numpy as np
+from slidespin.batch import simulate_many
+from slidespin.cli import demo_case
+n = int(sys.argv[1])
+case = demo_case()
+rng = np.random.default_rng(2)
+s = np.zeros((n, 6)); s[:, 3] = rng.uniform(-1, 1, n); s[:, 4] = rng.uniform(-1, 1, n)
+s[:, 5] = rng.uniform(-20, 20, n)
+simulate_many(case.body, case.friction, s[:8], g=case.g)
+print("READY", flush=True)
+sys.stdin.readline()
+t = time.perf_counter()
+res = simulate_many(case.body, case.friction, s, g=case.g)
+dt = time.perf_counter() - t
+print(json.dumps({"cases": n, "seconds": dt, "input_mb": s.nbytes / 2**20,
+                  "result_mb": sum(a.nbytes for a in vars(res).values()) / 2**20}), flush=True)
+"""
+
+
+def _rss_mb(pid):
+    try:
+        with open(f"/proc/{pid}/statm", encoding="ascii") as fh:
+            return int(fh.read().split()[1]) * os.sysconf("SC_PAGE_SIZE") / 2**20
+    except (OSError, ValueError, IndexError):
+        return math.nan
+
+
+def bench_memory(n):
+    """Resident memory of one simulate_many batch of n cases: a fresh process is warmed up
+    (compiled code loaded), then its RSS is sampled every millisecond from outside while the
+    batch runs; the growth over the warmed-up RSS is what the batch holds at its peak."""
+    p = subprocess.Popen([sys.executable, "-c", _MEMORY_SCRIPT, str(n)], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        line = p.stdout.readline()
+        if not line.startswith("READY"):
+            p.kill()
+            return {"error": (p.stderr.read().strip().splitlines() or ["failed"])[-1]}
+        base = _rss_mb(p.pid)
+        if not math.isfinite(base):
+            p.kill()
+            return {"error": "no /proc: resident memory not measurable here"}
+        p.stdin.write("go\n")
+        p.stdin.flush()
+        peak = base
+        while p.poll() is None:
+            peak = max(peak, _rss_mb(p.pid) if p.poll() is None else peak)
+            time.sleep(0.001)
+        out, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:  # pragma: no cover
+            p.kill()
+    if p.returncode != 0:
+        return {"error": (err.strip().splitlines() or ["failed"])[-1]}
+    d = json.loads(out.strip().splitlines()[-1])
+    d.update(baseline_mb=base, peak_mb=peak, growth_mb=peak - base,
+             bytes_per_case=(peak - base) * 2**20 / n)
+    return d
+
+
+# ---------------------------------------------------------------------------------------------
+# compile time
+
+
+_COMPILE_SCRIPT = r"""
+import json, math, time
+t0 = time.perf_counter()
+import numpy as np
+import slidespin as ss
+from slidespin.batch import simulate_many
+from slidespin.cli import demo_case
+t_import = time.perf_counter() - t0
+case = demo_case()
+out = {"import_s": t_import}
+t = time.perf_counter()
+ss.simulate(case.body, case.friction, case.initial_state, g=case.g)
+out["simulate_s"] = time.perf_counter() - t
+t = time.perf_counter()
+simulate_many(case.body, case.friction, np.array([[0, 0, 0, 0.5, 0.2, 3.0]]), g=case.g)
+out["simulate_many_s"] = time.perf_counter() - t
+t = time.perf_counter()
+ss.friction_wrench(case.body, case.friction, 0.3, 0.1, 4.0)
+out["friction_wrench_s"] = time.perf_counter() - t
+print(json.dumps(out))
+"""
+
+
+def bench_compile():
+    """First calls in a fresh process: cold (empty numba cache) and again with the cache."""
+    out = {}
+    with tempfile.TemporaryDirectory(prefix="slidespin-bench-cache-") as cache:
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache)
+        env.pop("NUMBA_DISABLE_JIT", None)
+        for label in ("cold", "cached"):
+            _log(f"compile time, {label} cache (subprocess)")
+            r = subprocess.run([sys.executable, "-c", _COMPILE_SCRIPT], capture_output=True,
+                               text=True, env=env, timeout=1800)
+            if r.returncode != 0:
+                out[label] = {"error": r.stderr.strip().splitlines()[-1] if r.stderr else "?"}
+                continue
+            out[label] = json.loads(r.stdout.strip().splitlines()[-1])
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# accuracy
+
+
+def _reference_module():
+    path = Path(__file__).resolve().parents[2] / "tests" / "reference.py"
+    if not path.is_file():
+        return None
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("_slidespin_reference", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def bench_accuracy(quick):
+    """Wrench vs the slow reference (if this is a source checkout); trajectory vs rtol 1e-13."""
+    import warnings
+
+    import slidespin as ss
+    from .pressure import pressure_law_from_name
+
+    out = {}
+    ref = _reference_module()
+    if ref is None:
+        out["wrench"] = {"note": "tests/reference.py not found (installed package)"}
+    else:
+        rng = np.random.default_rng(11)
+        worst = 0.0
+        count = 0
+        kinds = ("inside", "near rim", "on rim", "outside", "far")
+        for law in _LAWS:
+            for bn in ((0.5, 1.0) if quick else (0.5, 1.0, 0.1, 2.0)):
+                a, b = 1.0, bn
+                pl = ss.LinearPressure(0.1, -0.05 * b) if law == "linear" else (
+                    pressure_law_from_name(law))
+                body = ss.Body(ss.Ellipse(a, b), pl, mass=1.0)
+                fr = ss.FrictionTensor(0.42, 0.61, f=0.13, angle=0.3)
+                xg, yg = body.mass_centre
+                for kind in kinds:
+                    r = {"inside": 0.6, "near rim": 1 - 1e-6, "on rim": 1.0, "outside": 2.5,
+                         "far": 300.0}[kind]
+                    t = rng.uniform(0, 2 * math.pi)
+                    cx, cy = r * a * math.cos(t), r * b * math.sin(t)
+                    om, phi = 1.3, 0.4
+                    vbx, vby = (cy - yg) * om, -(cx - xg) * om
+                    c, s = math.cos(phi), math.sin(phi)
+                    vx, vy = c * vbx - s * vby, s * vbx + c * vby
+                    w = ss.friction_wrench(body, fr, vx, vy, om, phi, g=1.0)
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        want = ref.reference_wrench(a, b, law, fr.world_matrix(phi), phi, vx, vy,
+                                                    om, xi_c=xg, eta_c=yg, P=1.0)
+                    err = max(abs(w.force_x - want[0]), abs(w.force_y - want[1]),
+                              abs(w.moment - want[2]))
+                    worst = max(worst, err)
+                    count += 1
+        out["wrench"] = {"max_abs_error": worst, "states": count, "contract": 1e-10}
+    body, fr, st, g = _demo()
+    runs = {rt: ss.simulate(body, fr, st, g=g, rtol=rt) for rt in (1e-10, 1e-8, 1e-13)}
+    ref13 = runs[1e-13]
+    for rt in (1e-10, 1e-8):
+        tr = runs[rt]
+        out[f"trajectory_rtol={rt:g}"] = {
+            "t_stop_rel": abs(tr.t_stop - ref13.t_stop) / ref13.t_stop,
+            "beta_stop_rel": abs(tr.beta_stop - ref13.beta_stop) / abs(ref13.beta_stop),
+            "theta_stop_abs": abs(tr.theta_stop - ref13.theta_stop),
+            "distance_rel": abs(tr.distance - ref13.distance) / ref13.distance,
+        }
+    out["reference_run"] = {"t_stop": ref13.t_stop, "beta_stop": ref13.beta_stop,
+                            "theta_stop": ref13.theta_stop}
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# baselines
+
+
+class _TimeUp(Exception):
+    pass
+
+
+def _naive_wrench(body, friction, vx, vy, omega, phi, g):
+    """Force and moment by ``scipy.integrate.dblquad`` over the patch, one call per
+    component, default tolerances: what a script built from the paper's formulas does."""
+    from scipy.integrate import dblquad
+
+    a, b = body.patch.a, body.patch.b
+    xg, yg = body.mass_centre
+    p0 = body.mass * g / (math.pi * a * b)
+    law = body.pressure.name
+    T = friction.world_matrix(phi)
+    c, s = math.cos(phi), math.sin(phi)
+
+    def pressure(xi, eta):
+        q = xi * xi / (a * a) + eta * eta / (b * b)
+        if law == "uniform":
+            return p0
+        if law == "linear":
+            return p0 * (1 + 4 * xg * xi / a**2 + 4 * yg * eta / b**2)
+        if law == "boussinesq":
+            return 0.5 * p0 / math.sqrt(max(1 - q, 1e-300))
+        return 1.5 * p0 * math.sqrt(max(1 - q, 0.0))
+
+    def traction(eta, xi):
+        dx, dy = xi - xg, eta - yg
+        x, y = c * dx - s * dy, s * dx + c * dy
+        wx, wy = vx - omega * y, vy + omega * x
+        nw = math.hypot(wx, wy)
+        if nw == 0.0:
+            return 0.0, 0.0, x, y
+        p = pressure(xi, eta)
+        tx = -p * (T[0, 0] * wx + T[0, 1] * wy) / nw
+        ty = -p * (T[1, 0] * wx + T[1, 1] * wy) / nw
+        return tx, ty, x, y
+
+    lo = lambda xi: -b * math.sqrt(max(1 - xi * xi / (a * a), 0.0))  # noqa: E731
+    hi = lambda xi: b * math.sqrt(max(1 - xi * xi / (a * a), 0.0))  # noqa: E731
+    fx = dblquad(lambda eta, xi: traction(eta, xi)[0], -a, a, lo, hi)[0]
+    fy = dblquad(lambda eta, xi: traction(eta, xi)[1], -a, a, lo, hi)[0]
+    m = dblquad(lambda eta, xi: (lambda r: r[2] * r[1] - r[3] * r[0])(traction(eta, xi)),
+                -a, a, lo, hi)[0]
+    return fx, fy, m
+
+
+def _naive_problem(body, friction, st, g, wrench):
+    """solve_ivp pieces of the naive route in physical time with a stop event."""
+    m, inertia = body.mass, body.moment_of_inertia
+    k2 = inertia / m
+    s0 = math.sqrt(st.vx**2 + st.vy**2 + k2 * st.omega**2)
+
+    def rhs(t, y):
+        fx, fy, mm = wrench(y[3], y[4], y[5], y[2])
+        return [y[3], y[4], y[5], fx / m, fy / m, mm / inertia]
+
+    def stop(t, y):
+        return math.sqrt(y[3] ** 2 + y[4] ** 2 + k2 * y[5] ** 2) - 1e-6 * s0
+
+    stop.terminal = True
+    stop.direction = -1
+    y0 = [st.x, st.y, st.phi, st.vx, st.vy, st.omega]
+    return rhs, stop, y0
+
+
+def bench_naive(seconds):
+    """The naive route, time-boxed: per-RHS cost, progress, and the estimated full time."""
+    import slidespin as ss
+    from scipy.integrate import solve_ivp
+
+    body, fr, st, g = _demo()
+    opts = dict(method="RK45", rtol=1e-8, atol=1e-10)
+    # how many right-hand sides the same solver needs: run it with the compiled wrench
+    fast = lambda vx, vy, om, phi: (lambda w: (w.force_x, w.force_y, w.moment))(  # noqa: E731
+        ss.friction_wrench(body, fr, vx, vy, om, phi, g=g))
+    rhs, stop, y0 = _naive_problem(body, fr, st, g, fast)
+    sol = solve_ivp(rhs, (0.0, 100.0), y0, events=stop, **opts)
+    needed = int(sol.nfev)
+    t_stop_fast = float(sol.t[-1])
+    # the naive route itself, until the stop or the time box
+    calls = [0]
+    t_start = time.perf_counter()
+
+    def slow(vx, vy, om, phi):
+        if time.perf_counter() - t_start > seconds:
+            raise _TimeUp
+        calls[0] += 1
+        return _naive_wrench(body, fr, vx, vy, om, phi, g)
+
+    rhs, stop, y0 = _naive_problem(body, fr, st, g, slow)
+    progress = {"t": 0.0}
+
+    def rhs_tracked(t, y):
+        progress["t"] = max(progress["t"], t)
+        return rhs(t, y)
+
+    finished = False
+    try:
+        sol = solve_ivp(rhs_tracked, (0.0, 100.0), y0, events=stop, **opts)
+        finished = sol.status == 1
+    except _TimeUp:
+        pass
+    elapsed = time.perf_counter() - t_start
+    per_rhs = elapsed / max(calls[0], 1)
+    return {
+        "method": "dblquad (Fx, Fy, M) per RHS + solve_ivp RK45, rtol 1e-8, stop at s = 1e-6 s0",
+        "time_box_s": seconds,
+        "finished": finished,
+        "rhs_done": calls[0],
+        "elapsed_s": elapsed,
+        "s_per_rhs": per_rhs,
+        "t_reached_s": progress["t"],
+        "fraction_of_t_stop": progress["t"] / t_stop_fast,
+        "rhs_needed": needed,
+        "full_time_s": elapsed if finished else per_rhs * needed,
+        "full_time_is_estimate": not finished,
+    }
+
+
+def bench_semianalytic(quick):
+    """The paper's semi-analytic route (vectorised NumPy, eq. 8-9) driven by solve_ivp."""
+    try:
+        from .paper import semianalytic as sa
+    except ImportError:  # pragma: no cover - the module ships with slidespin
+        return {"error": "slidespin.paper.semianalytic is not available"}
+    body, fr, st, g = _demo()
+    a = body.patch.a
+    model = sa.PaperModel(body.patch.b / a, fr.fx, fr.fy, fr.f,
+                          inertia_ratio=body.moment_of_inertia / (body.mass * a * a))
+    v_unit = math.sqrt(a * g / math.pi)
+    w_unit = math.sqrt(g / (a * math.pi))
+    speed = math.hypot(st.vx, st.vy)
+    kw = dict(v0=speed / v_unit, omega0=st.omega / w_unit, theta0=math.atan2(st.vy, st.vx),
+              phi0=st.phi)
+    out = {}
+    for label, opts in (("defaults (DOP853, rtol 1e-8, stop 1e-6)", {}),
+                        ("RK45, rtol 1e-8, stop 1e-8", dict(method="RK45", stop=1e-8))):
+        run = sa.integrate(model, **kw, **opts)
+        t = _best(lambda: sa.integrate(model, **kw, **opts), 2 if quick else 3)
+        y = [0.0, 0.0, st.phi, 1.0, 0.5, 1.0]
+        per_rhs = _best(lambda: sa.rhs(0.0, y, model), 3, 50)
+        out[label] = {
+            "s_per_trajectory": t,
+            "rhs": run.nfev,
+            "s_per_rhs": per_rhs,
+            "t_stop_s": run.t_stop * math.sqrt(a * math.pi / g),
+            "beta_stop_m": run.beta_stop * a,
+            "status": run.status,
+        }
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
+# report
+
+
+def _machine():
+    cpu = platform.processor() or "?"
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as fh:
+            for line in fh:
+                if line.startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    import scipy
+
+    return {
+        "cpu": cpu,
+        "logical_cpus": os.cpu_count(),
+        "numba_threads": numba.get_num_threads(),
+        "threading_layer": numba.config.THREADING_LAYER,
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "scipy": scipy.__version__,
+        "numba": numba.__version__,
+        "platform": platform.platform(),
+    }
+
+
+def _verdict(value, goal, smaller_is_better=True):
+    if value is None or not math.isfinite(value):
+        return "n/a"
+    ok = value <= goal if smaller_is_better else value >= goal
+    return "PASS" if ok else "MISS"
+
+
+def _rows(r):
+    """(quantity, value, goal, verdict) rows of the table."""
+    rows = []
+    w = r["wrench_us"]
+    for law in _LAWS:
+        goal = GOALS["wrench_uniform_linear_us" if law in ("uniform", "linear")
+                     else "wrench_boussinesq_hertz_us"]
+        for where in ("inside", "outside"):
+            d = w[f"{law}_{where}"]
+            rows.append((f"wrench, {law}, ICR {where} ({d['nodes']:.0f} nodes)",
+                         f"{d['us']:.2f} µs", f"≤ {goal:g} µs", _verdict(d["us"], goal)))
+    rows.append(("wrench, one friction_wrench() call from Python",
+                 f"{r['wrench_python_us']:.1f} µs", "", ""))
+    tj = r["trajectory"]["rtol=1e-10"]
+    rows.append((f"trajectory to the converged stop, demo, rtol 1e-10 ({tj['steps']} steps, "
+                 f"{tj['rhs']} RHS)", f"{tj['integrate_ms']:.3f} ms",
+                 f"≤ {GOALS['trajectory_ms']:g} ms", _verdict(tj["integrate_ms"],
+                                                              GOALS["trajectory_ms"])))
+    t8 = r["trajectory"]["rtol=1e-08"]
+    rows.append((f"trajectory, demo, rtol 1e-8 ({t8['steps']} steps, {t8['rhs']} RHS)",
+                 f"{t8['integrate_ms']:.3f} ms", "", ""))
+    b = r["batch"]
+    rows.append((f"trajectory, batch mean, one thread ({b['mean_steps']:.0f} steps)",
+                 f"{b['ms_per_trajectory_one_thread']:.3f} ms", "", ""))
+    rows.append((f"batch, {b['threads']} threads ({b['cases']} cases)",
+                 f"{b['per_s']:,.0f} /s", f"≥ {GOALS['batch_per_s']:,.0f} /s",
+                 _verdict(b["per_s"], GOALS["batch_per_s"], False)))
+    mem = r.get("memory", {})
+    if "bytes_per_case" in mem:
+        rows.append((f"batch memory: peak growth, {mem['cases']:,} cases (inputs "
+                     f"{mem['input_mb']:.1f} MB, results {mem['result_mb']:.1f} MB)",
+                     f"{mem['growth_mb']:.1f} MB = {mem['bytes_per_case']:.0f} B/case", "", ""))
+    rows.append(("simulate(): Python overhead beyond its compiled part",
+                 f"{tj['simulate_overhead_us']:.0f} µs", f"≤ {GOALS['simulate_overhead_us']:g} µs",
+                 _verdict(tj["simulate_overhead_us"], GOALS["simulate_overhead_us"])))
+    rows.append(("simulate(): whole call, demo", f"{tj['simulate_ms']:.3f} ms", "", ""))
+    comp = r.get("compile", {})
+    for label, goal in (("cold", GOALS["first_call_cold_s"]),
+                        ("cached", GOALS["first_call_cached_s"])):
+        d = comp.get(label)
+        if d and "simulate_s" in d:
+            first = d["import_s"] + d["simulate_s"]
+            rows.append((f"first simulate() incl. import, {label} numba cache", f"{first:.2f} s",
+                         f"≤ {goal:g} s", _verdict(first, goal)))
+            rows.append((f"  then first simulate_many(), {label}", f"{d['simulate_many_s']:.2f} s",
+                         "", ""))
+    acc = r["accuracy"]
+    if "max_abs_error" in acc.get("wrench", {}):
+        rows.append((f"accuracy: wrench vs slow reference ({acc['wrench']['states']} states)",
+                     f"{acc['wrench']['max_abs_error']:.1e}", "≤ 1e-10",
+                     _verdict(acc["wrench"]["max_abs_error"], 1e-10)))
+    a10 = acc["trajectory_rtol=1e-10"]
+    rows.append(("accuracy: demo at rtol 1e-10 vs 1e-13: t_stop, beta*, theta*",
+                 f"{a10['t_stop_rel']:.0e}, {a10['beta_stop_rel']:.0e}, "
+                 f"{a10['theta_stop_abs']:.0e}", "1e-8, 1e-6, 1e-6", ""))
+    nv = r["naive"]
+    rows.append((f"naive: dblquad+RK45, per RHS ({nv['rhs_done']} RHS in {nv['elapsed_s']:.0f} s)",
+                 f"{nv['s_per_rhs']:.3f} s", "", ""))
+    label = "measured" if nv["finished"] else (
+        f"estimated: {nv['rhs_needed']} RHS; reached {100 * nv['fraction_of_t_stop']:.0f}% "
+        "of t_stop")
+    rows.append((f"naive: one trajectory ({label})", f"{nv['full_time_s']:.0f} s", "", ""))
+    ours = tj["integrate_ms"] * 1e-3
+    sp_naive = nv["full_time_s"] / ours
+    rows.append(("speed-up vs naive, per trajectory", f"{sp_naive:.1e} x",
+                 f"≥ {GOALS['speedup_naive']:.0e} x", _verdict(sp_naive, GOALS["speedup_naive"],
+                                                               False)))
+    rows.append(("speed-up vs naive, per RHS (wrench + step)",
+                 f"{nv['s_per_rhs'] / (tj['us_per_rhs'] * 1e-6):.1e} x", "", ""))
+    sa = r["semianalytic"]
+    if "error" not in sa:
+        for key, d in sa.items():
+            rows.append((f"semi-analytic NumPy + solve_ivp, {key} ({d['rhs']} RHS)",
+                         f"{d['s_per_trajectory'] * 1e3:.0f} ms", "", ""))
+        d = sa["defaults (DOP853, rtol 1e-8, stop 1e-6)"]
+        sp = d["s_per_trajectory"] / ours
+        rows.append(("speed-up vs semi-analytic, per trajectory (ours at rtol 1e-10)",
+                     f"{sp:,.0f} x", f"≥ {GOALS['speedup_semianalytic']:,.0f} x",
+                     _verdict(sp, GOALS["speedup_semianalytic"], False)))
+        sp8 = d["s_per_trajectory"] / (t8["integrate_ms"] * 1e-3)
+        rows.append(("speed-up vs semi-analytic, per trajectory (both at rtol 1e-8)",
+                     f"{sp8:,.0f} x", "", _verdict(sp8, GOALS["speedup_semianalytic"], False)))
+        rows.append(("speed-up vs semi-analytic, per RHS",
+                     f"{d['s_per_rhs'] / (tj['us_per_rhs'] * 1e-6):,.0f} x", "", ""))
+    return rows
+
+
+def format_table(r) -> str:
+    rows = _rows(r)
+    w0 = max(len(x[0]) for x in rows)
+    w1 = max(len(x[1]) for x in rows)
+    w2 = max(len(x[2]) for x in rows)
+    head = f"| {'quantity':{w0}} | {'measured':>{w1}} | {'goal':{w2}} | verdict |"
+    sep = f"|{'-' * (w0 + 2)}|{'-' * (w1 + 2)}|{'-' * (w2 + 2)}|---------|"
+    lines = [head, sep]
+    for q, m, g, v in rows:
+        lines.append(f"| {q:{w0}} | {m:>{w1}} | {g:{w2}} | {v:7} |")
+    return "\n".join(lines)
+
+
+def run(args) -> int:
+    """Run the benchmarks; print the table; write JSON. Returns the exit status."""
+    quick, naive_s, n_batch, n_mem, out_path = _defaults(args)
+    rng = np.random.default_rng(20261122)
+    r = {"machine": _machine(), "quick": quick}
+    t0 = time.perf_counter()
+    if not args.no_compile:
+        r["compile"] = bench_compile()
+    _log("warming up (numba cache or compile)")
+    import slidespin as ss
+    from .batch import simulate_many
+
+    body, fr, st, g = _demo()
+    t = time.perf_counter()
+    ss.simulate(body, fr, st, g=g)
+    simulate_many(body, fr, np.array([[0, 0, 0, 0.5, 0.2, 3.0]]), g=g)
+    ss.friction_wrench(body, fr, 0.3, 0.1, 4.0)
+    _wrench_loop(0, 0.5, 0.0, 0.0, np.array([0.4, 0.0, 0.0, 0.5]), np.zeros(1), np.zeros(1),
+                 1.0, 1)
+    r["warmup_s"] = time.perf_counter() - t
+    _log("wrench")
+    r["wrench_us"] = bench_wrench(quick, rng)
+    r["wrench_python_us"] = bench_wrench_python(body, fr)
+    _log("trajectory")
+    r["trajectory"] = bench_trajectory(quick)
+    _log(f"batch of {n_batch} trajectories")
+    r["batch"] = bench_batch(n_batch, rng)
+    _log(f"peak memory of a batch of {n_mem} (subprocess)")
+    r["memory"] = bench_memory(n_mem)
+    _log("accuracy")
+    r["accuracy"] = bench_accuracy(quick)
+    _log("semi-analytic NumPy baseline")
+    r["semianalytic"] = bench_semianalytic(quick)
+    _log(f"naive dblquad baseline (time box {naive_s:g} s)")
+    r["naive"] = bench_naive(naive_s)
+    r["goals"] = GOALS
+    r["bench_seconds"] = time.perf_counter() - t0
+    table = format_table(r)
+    m = r["machine"]
+    print(f"slidespin bench on {m['cpu']} ({m['logical_cpus']} logical CPUs, {m['numba_threads']} "
+          f"numba threads, {m['threading_layer']} layer), Python {m['python']}, numba "
+          f"{m['numba']}, NumPy {m['numpy']}, SciPy {m['scipy']}"
+          f"{' [quick]' if quick else ''}; {r['bench_seconds']:.0f} s")
+    print(table)
+    r["table"] = table
+    if out_path:
+        with open(out_path, "w", encoding="utf-8") as fh:
+            json.dump(r, fh, indent=2, default=float)
+            fh.write("\n")
+        print(f"JSON: {out_path}")
+    return 0
+
+
+def main(argv=None) -> int:
+    """``python -m slidespin.bench``: the same as ``slidespin bench``."""
+    parser = argparse.ArgumentParser(prog="python -m slidespin.bench")
+    configure(parser)
+    args = parser.parse_args(argv)
+    try:
+        return run(args)
+    except ValueError as exc:
+        print(f"slidespin bench: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
