@@ -38,7 +38,9 @@ def _check(name, arr, ok, valid):
     bad = ~ok
     if bad.any():
         i = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name} = {float(arr[i])!r} (case {i}) is invalid; valid range: {valid}")
+        # 1.5 rather than np.float64(1.5) in the message
+        value = arr[i].item() if isinstance(arr[i], np.generic) else arr[i]
+        raise ValueError(f"{name} = {value!r} (case {i}) is invalid; valid range: {valid}")
 
 
 def validated_columns(cases: dict):
@@ -47,6 +49,8 @@ def validated_columns(cases: dict):
     ``columns`` maps every name of :data:`CASE_FIELDS` to a float array of length N (codes
     for ``law`` and ``frame``); ``moment_of_inertia`` has the uniform-plate default filled in.
     """
+    if not isinstance(cases, dict):
+        raise ValueError(f"cases must be a dict of case fields, got {type(cases).__name__}")
     unknown = sorted(set(cases) - set(CASE_FIELDS))
     if unknown:
         raise ValueError(f"unknown case field {unknown[0]!r}; valid: {', '.join(CASE_FIELDS)}")
@@ -83,7 +87,8 @@ def validated_columns(cases: dict):
     for k in ("xi_c", "eta_c", "f", "angle", "x", "y", "phi", "vx", "vy", "omega"):
         _check(k, col[k], np.isfinite(col[k]), "finite")
     inertia = col["moment_of_inertia"]
-    inertia = np.where(np.isnan(inertia), col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4, inertia)
+    plate = col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4
+    inertia = np.where(np.isnan(inertia), plate, inertia)
     _check("moment_of_inertia", inertia, np.isfinite(inertia) & (inertia > 0), "finite and > 0")
     is_lin = col["law"] == 1
     core = (col["xi_c"] / col["a"]) ** 2 + (col["eta_c"] / col["b"]) ** 2

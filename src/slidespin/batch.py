@@ -12,7 +12,6 @@ chunk; each worker thread integrates in a fixed ~20 kB.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -21,7 +20,7 @@ from . import _ode
 from . import _validate as v
 from .body import Body
 from .friction import FrictionTensor
-from .pressure import LAW_NAMES
+from ._cases import CASE_FIELDS, validated_columns
 from .simulate import ENDING_TOL, ENDINGS, STATUSES
 
 __all__ = ["StopResults", "simulate_many", "simulate_cases", "CASE_FIELDS"]
@@ -29,13 +28,6 @@ __all__ = ["StopResults", "simulate_many", "simulate_cases", "CASE_FIELDS"]
 #: cases per call of the parallel engine (bounds the temporary arrays of a batch)
 CHUNK = 1 << 16
 
-#: per-case inputs of :func:`simulate_cases` and their defaults (None: required)
-CASE_FIELDS = {
-    "a": None, "b": None, "law": "uniform", "xi_c": 0.0, "eta_c": 0.0,
-    "fx": None, "fy": None, "f": 0.0, "frame": "plane", "angle": 0.0,
-    "mass": 1.0, "moment_of_inertia": math.nan, "g": 9.81,
-    "x": 0.0, "y": 0.0, "phi": 0.0, "vx": 0.0, "vy": 0.0, "omega": 0.0,
-}
 _ENDING_CODE = {name: i for i, name in enumerate(ENDINGS)}
 
 
@@ -98,32 +90,12 @@ class StopResults:
         return out
 
 
-def _column(name, value, n, kind="real"):
-    arr = np.asarray(value)
-    if arr.ndim > 1 or (arr.ndim == 1 and arr.size not in (1, n)):
-        raise ValueError(f"{name} has shape {arr.shape}; valid: a scalar or an array of length {n}")
-    if kind == "real":
-        if arr.dtype.kind not in "fiu":
-            raise ValueError(f"{name} must be real numbers, got dtype {arr.dtype}")
-        arr = arr.astype(float)
-    return np.broadcast_to(arr, (n,)) if arr.ndim == 0 or arr.size == 1 else arr
-
-
 def _check_options(rtol, max_steps):
     """Validate the integrator options as :func:`slidespin.simulate` does."""
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
         raise ValueError(f"max_steps = {max_steps!r} is invalid; valid range: integer >= 1")
     return rtol, int(max_steps)
-
-
-def _check(name, arr, ok, valid):
-    bad = ~ok
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
-        # 1.5 rather than np.float64(1.5) in the message
-        value = arr[i].item() if isinstance(arr[i], np.generic) else arr[i]
-        raise ValueError(f"{name} = {value!r} (case {i}) is invalid; valid range: {valid}")
 
 
 def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -> StopResults:
@@ -148,51 +120,7 @@ def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -
     StopResults
     """
     rtol, max_steps = _check_options(rtol, max_steps)
-    if not isinstance(cases, dict):
-        raise ValueError(f"cases must be a dict of case fields, got {type(cases).__name__}")
-    unknown = sorted(set(cases) - set(CASE_FIELDS))
-    if unknown:
-        raise ValueError(f"unknown case field {unknown[0]!r}; valid: {', '.join(CASE_FIELDS)}")
-    missing = [k for k, d in CASE_FIELDS.items() if d is None and k not in cases]
-    if missing:
-        raise ValueError(f"missing case field {missing[0]!r}")
-    sizes = {np.size(v) for v in cases.values() if np.ndim(v) == 1 and np.size(v) != 1}
-    if len(sizes) > 1:
-        raise ValueError(f"case arrays have different lengths {sorted(sizes)}")
-    n = sizes.pop() if sizes else 1
-    col = {}
-    for k, d in CASE_FIELDS.items():
-        val = cases.get(k, d)
-        if k in ("law", "frame"):
-            arr = np.asarray(val)
-            names = LAW_NAMES if k == "law" else ("plane", "body")
-            if arr.dtype.kind in "USO":
-                lookup = {nm: i for i, nm in enumerate(names)}
-                flat = np.atleast_1d(arr).ravel()
-                try:
-                    codes = np.array([lookup[str(x).lower()] for x in flat], dtype=float)
-                except KeyError as exc:
-                    raise ValueError(
-                        f"{k} = {exc.args[0]!r} is invalid; valid values: {', '.join(names)}"
-                    ) from None
-                val = codes
-            arr = _column(k, val, n)
-            _check(k, arr, np.isin(arr, np.arange(len(names))), f"one of {', '.join(names)}")
-            col[k] = arr
-        else:
-            col[k] = _column(k, val, n)
-    for k in ("a", "b", "fx", "fy", "mass", "g"):
-        _check(k, col[k], np.isfinite(col[k]) & (col[k] > 0), "finite and > 0")
-    for k in ("xi_c", "eta_c", "f", "angle", "x", "y", "phi", "vx", "vy", "omega"):
-        _check(k, col[k], np.isfinite(col[k]), "finite")
-    inertia = col["moment_of_inertia"]
-    plate = col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4
-    inertia = np.where(np.isnan(inertia), plate, inertia)
-    _check("moment_of_inertia", inertia, np.isfinite(inertia) & (inertia > 0), "finite and > 0")
-    is_lin = col["law"] == 1
-    core = (col["xi_c"] / col["a"]) ** 2 + (col["eta_c"] / col["b"]) ** 2
-    _check("xi_c, eta_c (core measure (xi_c/a)^2 + (eta_c/b)^2)", core,
-           ~is_lin | (core <= 1.0 / 16.0 * (1 + 1e-12)), "[0, 0.0625]")
+    col, inertia = validated_columns(cases)
     return _run(col, inertia, rtol, max_steps)
 
 
