@@ -78,6 +78,11 @@ def configure(parser) -> None:
     parser.add_argument("--memory-cases", type=int, default=None, metavar="N",
                         help="cases of the peak-memory batch (default 100000, quick 10000; "
                              "1000000 for the full-size check)")
+    parser.add_argument("--sweep-local", type=int, default=None, metavar="N",
+                        help="cases of the local sweep (default 1000000, quick 20000)")
+    parser.add_argument("--sweep-dask", type=int, default=None, metavar="N",
+                        help="cases of the sweep through a 2-worker LocalCluster "
+                             "(default 100000, quick 10000; 0 to skip)")
     parser.add_argument("--no-compile", action="store_true",
                         help="skip the cold/cached compile-time subprocesses")
     parser.add_argument("--json", metavar="OUT.json", default=None,
@@ -751,6 +756,20 @@ def _rows(r):
                      f"{sp8:,.0f} x", "", _verdict(sp8, GOALS["speedup_semianalytic"], False)))
         rows.append(("speed-up vs semi-analytic, per RHS",
                      f"{d['s_per_rhs'] / (tj['us_per_rhs'] * 1e-6):,.0f} x", "", ""))
+    sw = r.get("sweep", {})
+    if "local_cases_per_s" in sw:
+        rows.append((f"sweep, all local cores, {sw['local_cases']:,} cases to Parquet",
+                     f"{sw['local_cases_per_s']:,.0f} /s", "≥ 10,000 /s",
+                     _verdict(sw["local_cases_per_s"], 10_000, False)))
+    if "dask_cases_per_s" in sw:
+        rows.append((f"sweep, 2-worker Dask LocalCluster, {sw['dask_cases']:,} cases",
+                     f"{sw['dask_cases_per_s']:,.0f} /s", "", ""))
+    if "dask_over_local_per_core" in sw:
+        rows.append(("sweep, Dask per core / local per core",
+                     f"{sw['dask_over_local_per_core']:.2f}", "≥ 0.8",
+                     _verdict(sw["dask_over_local_per_core"], 0.8, False)))
+    if "error" in sw:
+        rows.append(("sweep", sw["error"], "", ""))
     return rows
 
 
@@ -802,6 +821,22 @@ def run(args) -> int:
     r["semianalytic"] = bench_semianalytic(quick)
     _log(f"naive dblquad baseline (time box {naive_s:g} s)")
     r["naive"] = bench_naive(naive_s)
+    n_sl = args.sweep_local if getattr(args, "sweep_local", None) is not None else (
+        20_000 if quick else 1_000_000)
+    n_sd = args.sweep_dask if getattr(args, "sweep_dask", None) is not None else (
+        10_000 if quick else 100_000)
+    for name, val in (("--sweep-local", n_sl), ("--sweep-dask", n_sd)):
+        if val < 0:
+            raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 0")
+    if n_sl or n_sd:
+        _log(f"sweeps: {n_sl} cases locally, {n_sd} through a 2-worker LocalCluster")
+        from .sweep import SweepError, benchmark as sweep_benchmark
+
+        try:
+            r["sweep"] = sweep_benchmark(n_local=n_sl, n_dask=n_sd, workers=2,
+                                         chunk_size=10_000 if n_sl >= 100_000 else 2_000)
+        except SweepError as exc:  # e.g. Dask not installed
+            r["sweep"] = {"error": str(exc)}
     r["goals"] = GOALS
     r["bench_seconds"] = time.perf_counter() - t0
     table = format_table(r)
