@@ -34,10 +34,20 @@ def outline_world(body, x, y, phi, n: int = 121) -> np.ndarray:
 
 
 def draw_path(ax, traj, n_outlines: int = 9, color: str = "C0", label: str | None = "path of G"):
-    """Path of the mass centre with the patch outline drawn at equal time intervals."""
+    """Path of the mass centre with the patch outline drawn along it.
+
+    The outlines are spaced evenly in the amount of motion (distance travelled by G plus
+    a times the angle turned), so that they spread over the whole path rather than crowd
+    where the body is slow; their shade darkens with time.
+    """
     scale, unit = (1e2, "cm") if traj.body.patch.a < 0.5 else (1.0, "m")
     ax.plot(traj.x * scale, traj.y * scale, color=color, lw=1.6, label=label, zorder=3)
-    times = np.linspace(0.0, traj.t_stop, n_outlines)
+    a = traj.body.patch.a
+    progress = traj.path_length + a * np.concatenate(([0.0], np.cumsum(np.abs(np.diff(traj.phi)))))
+    if progress[-1] > 0.0:
+        times = np.interp(np.linspace(0.0, progress[-1], n_outlines), progress, traj.t)
+    else:
+        times = np.linspace(0.0, traj.t_stop, n_outlines)
     cmap = _plt().get_cmap("Greys")
     for i, ti in enumerate(times):
         xi = np.interp(ti, traj.t, traj.x)
