@@ -59,10 +59,13 @@ NPAR = 11
 
 # integration status codes
 ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_SPIRAL = 0, 1, 2, 3, 4
-# each time s drops by a further e^-60 beyond ``s_drop`` while u has not converged, |du/dτ|
-# must have halved; if not, the body has stopped (to far below rounding) while its direction
-# of motion keeps turning: a spiral stop with no terminal direction
+# each time s drops by a further e^-60 beyond ``s_drop`` while u has not converged: if |du/dτ|
+# has not halved and u has swept more than SPIRAL_ARC since the last check, in SPIRAL_WINDOWS
+# windows in a row, the body has stopped (to far below rounding) while its direction of
+# motion keeps turning: a spiral stop with no terminal direction
 LN_S_SPIRAL = -60.0
+SPIRAL_ARC = 1.0  # [rad] u must also have swept this arc between two checks
+SPIRAL_WINDOWS = 2  # ... in this many consecutive windows
 
 
 @jit(error_model="numpy")
@@ -300,6 +303,9 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     du_polish = math.inf  # |du/dτ| at the last polishing attempt
     du_check = -1.0  # |du/dτ| when s first fell below target, then at each spiral check
     ln_s_check = 0.0
+    arc = 0.0  # arc swept by u since the last spiral check [rad]
+    spiral_windows = 0  # consecutive checks that looked like a spiral
+    tau_arc = 0.0
     while nsteps < max_steps:
         rejected = False
         while True:
@@ -381,18 +387,27 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                     nrhs += 1
                     status = ST_STOPPED
                     break
+            arc += du * (tau - tau_arc)
+            tau_arc = tau
             if du_check < 0.0:
                 du_check = du
                 ln_s_check = y[3] + LN_S_SPIRAL
+                arc = 0.0
             elif y[3] < ln_s_check:
-                # s fell by another e^60 (t, x, y, φ are converged far below rounding):
-                # a direction still approaching its fixed point has at least halved its
-                # rate of change since the last check; one turning for ever has not
-                if du > 0.5 * du_check:
-                    status = ST_SPIRAL
-                    break
+                # s fell by another e^60 (t, x, y, φ are converged far below rounding). A
+                # direction turning for ever has kept its rate of change and swept a large
+                # arc since the last check; one approaching a fixed point, however slowly
+                # (near a Table 2 boundary the approach is algebraic), moves less and less
+                if du > 0.5 * du_check and arc > SPIRAL_ARC:
+                    spiral_windows += 1
+                    if spiral_windows >= SPIRAL_WINDOWS:  # not a transient near a saddle
+                        status = ST_SPIRAL
+                        break
+                else:
+                    spiral_windows = 0
                 du_check = du
                 ln_s_check = y[3] + LN_S_SPIRAL
+                arc = 0.0
     # closed-form tail: ln s decays at the rate |u·A| once u has converged
     rate = -f[3]
     yend = y.copy()
