@@ -147,8 +147,11 @@ class State:
         cls, speed: float, omega: float, theta: float = 0.0, phi: float = 0.0,
         x: float = 0.0, y: float = 0.0,
     ) -> "State":
-        """State from the paper's variables: speed v ≥ 0 [m/s] in direction ϑ [rad], spin ω."""
-        v0 = v.in_range("speed", speed, 0.0, math.inf)
+        """State from the paper's variables: speed v ≥ 0 [m/s] in direction ϑ, spin ω.
+
+        ``theta`` and ``phi`` are in radians (``math.radians(45)``, not 45).
+        """
+        v0 = v.in_range("speed", speed, 0.0, math.inf, hi_open=True)
         th = v.finite("theta", theta)
         return cls(x, y, phi, v0 * math.cos(th), v0 * math.sin(th), omega)
 

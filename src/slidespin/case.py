@@ -59,6 +59,15 @@ def _angle(table: dict, where: str, key: str, default: float = 0.0) -> float:
     return v.finite(f"[{where}] {key}", table.get(key, default))
 
 
+def _in(where: str, build, *args, **kwargs):
+    """Call ``build``; prefix its ValueError with the TOML table it came from."""
+    try:
+        return build(*args, **kwargs)
+    except ValueError as exc:
+        msg = str(exc)
+        raise ValueError(msg if msg.startswith("[") else f"[{where}] {msg}") from None
+
+
 def _need(table: dict, where: str, key: str):
     if key not in table:
         raise ValueError(f"[{where}] is missing the required key {key!r}")
@@ -109,10 +118,12 @@ def case_from_dict(data: dict) -> Case:
 
     pr = dict(data["pressure"])
     law_name = _need(pr, "pressure", "law")
-    law = pressure_law_from_name(law_name, **{k: val for k, val in pr.items() if k != "law"})
+    law = _in("pressure", pressure_law_from_name, law_name,
+              **{k: val for k, val in pr.items() if k != "law"})
 
     fr = data["friction"]
-    friction = FrictionTensor(
+    friction = _in(
+        "friction", FrictionTensor,
         fx=_need(fr, "friction", "fx"),
         fy=_need(fr, "friction", "fy"),
         f=fr.get("f", 0.0),
@@ -139,7 +150,8 @@ def case_from_dict(data: dict) -> Case:
     x0 = v.finite("[initial] x", ini.get("x", 0.0))
     y0 = v.finite("[initial] y", ini.get("y", 0.0))
     if has_speed:
-        speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf)
+        speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf,
+                           hi_open=True)
         state = State.from_speed(speed, omega, _angle(ini, "initial", "theta"), phi, x0, y0)
     else:
         state = State(x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0), omega)

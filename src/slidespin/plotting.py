@@ -199,8 +199,9 @@ def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str
         fig.colorbar(mesh, ax=ax, label=axis_label(value))
         ax.set_ylabel(axis_label(y))
         if not finite.all():
-            ax.text(0.01, 0.01, f"blank: {axis_label(value)} not finite (e.g. β* = ∞, pure sliding)",
-                    transform=ax.transAxes, fontsize=7, color="0.3", va="bottom")
+            fig.text(0.01, 0.005, f"blank cells: {axis_label(value)} not finite "
+                     "(β* = ∞: pure sliding; NaN: no terminal direction, a spiral stop)",
+                     fontsize=7, color="0.3", va="bottom")
     ax.set_xlabel(axis_label(x))
     if title:
         ax.set_title(title, fontsize=10)

@@ -138,11 +138,16 @@ class Trajectory:
         return self.beta_stop / self.body.patch.a
 
     def summary(self) -> dict:
-        """The stop results as a JSON-ready dict (SI units; ``inf`` written as a string)."""
+        """The stop results as a JSON-ready dict (SI units).
+
+        Non-finite values are ``None`` (JSON ``null``), always for a reason that ``ending``
+        gives: β* = ∞ for ``pure_sliding``, β* and ϑ* undefined for ``spiral`` and
+        ``at_rest``. Numbers stay numbers, so scripts need not parse strings.
+        """
 
         def num(x):
             x = float(x)
-            return x if math.isfinite(x) else ("inf" if x > 0 else "-inf")
+            return x if math.isfinite(x) else None
 
         s = self.stop_state
         return {
@@ -217,7 +222,9 @@ def simulate(
         those reached.
     max_step : float or None
         Largest step in the regularised time τ (dimensionless); smaller values give more
-        points along the trajectory (for plotting), not more accuracy.
+        points along the trajectory (for plotting and CSV export; ``slidespin demo`` uses
+        0.05, about 1000 points), not more accuracy. By default only the integrator's own
+        steps are recorded (about 40 for the demo), which is enough for the stop values.
 
     Returns
     -------

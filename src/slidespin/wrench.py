@@ -62,9 +62,10 @@ class Wrench:
 
 
 def _check_array(name, value):
-    arr = np.asarray(value, dtype=float) if not isinstance(value, bool) else None
+    arr = None if isinstance(value, bool) else np.asarray(value)
     if arr is None or arr.dtype.kind not in "fiu":
-        raise ValueError(f"{name} must be a real number or array, got {value!r}")
+        raise ValueError(f"{name} must be a real number or array of them, got {value!r}")
+    arr = arr.astype(float)
     bad = ~np.isfinite(arr)
     if bad.any():
         raise ValueError(
