@@ -244,16 +244,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_sweep)
 
     p = sub.add_parser("sweep-read", help="gather a sweep's results into one CSV table")
-    p.add_argument("dir", metavar="DIR")
+    p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--csv", required=True, metavar="OUT.csv")
     p.set_defaults(func=_cmd_sweep_read)
 
     p = sub.add_parser("sweep-plot", help="heat map or line plot of a sweep result")
-    p.add_argument("dir", metavar="DIR")
+    p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--x", required=True, help="input column for the x axis, e.g. fx")
     p.add_argument("--y", help="input column for the y axis (heat map), e.g. I_star")
     p.add_argument("--value", default="beta_stop", help="result column shown (default beta_stop)")
-    p.add_argument("--out", default="sweep.png", metavar="OUT.png")
+    p.add_argument("--out", default="sweep.png", metavar="OUT.png",
+                   help="figure file (default sweep.png in the current directory)")
     p.set_defaults(func=_cmd_sweep_plot)
 
     for name, module, help_text in _PLUGINS:

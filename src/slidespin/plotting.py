@@ -86,8 +86,8 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     matplotlib.figure.Figure
     """
     plt = _plt()
-    fig = plt.figure(figsize=(11.0, 6.2), layout="constrained")
-    gs = fig.add_gridspec(2, 3, width_ratios=[1.35, 1.0, 1.0])
+    fig = plt.figure(figsize=(12.5, 6.2), layout="constrained")
+    gs = fig.add_gridspec(2, 3, width_ratios=[1.8, 1.0, 1.0])
     ax_path = fig.add_subplot(gs[:, 0])
     ax_beta = fig.add_subplot(gs[0, 1])
     ax_theta = fig.add_subplot(gs[0, 2])

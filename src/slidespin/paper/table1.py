@@ -280,8 +280,9 @@ class Table1Result:
         if self.best_count is not None:
             lo, hi = self.best_interval
             lines.append(
-                f"at most {self.best_count} of the 24 cells with mu > 0 round to the printed "
-                f"value for a single fx: fx in [{lo:.5f}, {hi:.5f}]"
+                "the least-squares fx above minimises the differences; no fx makes every cell "
+                f"round right: the best, fx in [{lo:.5f}, {hi:.5f}] (e.g. 0.42), makes "
+                f"{self.best_count} of the 24 fx-dependent cells round to the print"
             )
         lines.append(
             "true beta*, th* [rad]: the attracting terminal motion at that phi "
