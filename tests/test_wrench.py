@@ -244,32 +244,3 @@ def test_at_rest_the_wrench_is_zero():
     w = ss.friction_wrench(body, ss.FrictionTensor(0.3, 0.3), 0.0, 0.0, 0.0)
     assert (w.force_x, w.force_y, w.moment) == (0.0, 0.0, 0.0)
 
-
-def test_pure_python_kernel_matches_compiled():
-    """The kernel run as plain Python (NUMBA_DISABLE_JIT=1) gives the compiled numbers."""
-    import json
-    import os
-    import subprocess
-    import sys
-
-    code = (
-        "import json, slidespin as ss\n"
-        "b = ss.Body(ss.Ellipse(1.0, 0.5), ss.LinearPressure(0.1, 0.05), 1.0)\n"
-        "fr = ss.FrictionTensor(0.3, 0.6, f=0.1)\n"
-        "out = []\n"
-        "for s in [(0.3, 0.2, 1.0, 0.4), (2.0, -1.0, 0.5, 1.0), (0.0, 0.0, -2.0, 0.0)]:\n"
-        "    w = ss.friction_wrench(b, fr, *s, g=1.0)\n"
-        "    out.append([w.force_x, w.force_y, w.moment])\n"
-        "print(json.dumps(out))\n"
-    )
-    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
-                       timeout=300)
-    assert r.returncode == 0, r.stderr
-    python_values = json.loads(r.stdout)
-    body = ss.Body(ss.Ellipse(1.0, 0.5), ss.LinearPressure(0.1, 0.05), 1.0)
-    fr = ss.FrictionTensor(0.3, 0.6, f=0.1)
-    for s, got in zip([(0.3, 0.2, 1.0, 0.4), (2.0, -1.0, 0.5, 1.0), (0.0, 0.0, -2.0, 0.0)],
-                      python_values):
-        w = ss.friction_wrench(body, fr, *s, g=1.0)
-        assert np.allclose(got, [w.force_x, w.force_y, w.moment], atol=1e-13, rtol=0)
