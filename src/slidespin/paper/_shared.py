@@ -100,6 +100,28 @@ def style():
         yield
 
 
+def emit_table(name: str, res, out, as_json: bool, stream, plot=None, fmt: str = "png"):
+    """Print a table result (text, or JSON with ``as_json``) and, if ``out`` is given, write
+    ``<name>.json``, ``<name>.txt`` and, with ``plot``, the figure ``<name>.<fmt>``.
+
+    ``res`` needs ``as_dict()`` and ``to_text()``; ``out`` must have been prepared already.
+    """
+    import json
+    import sys
+
+    stream = stream or sys.stdout
+    text = res.to_text()
+    print(json.dumps(res.as_dict(), indent=2) if as_json else text, file=stream)
+    if out is not None:
+        with open(os.path.join(out, f"{name}.json"), "w", encoding="utf-8") as fh:
+            json.dump(res.as_dict(), fh, indent=2)
+        with open(os.path.join(out, f"{name}.txt"), "w", encoding="utf-8") as fh:
+            fh.write(text + "\n")
+        if plot is not None:
+            save(plot(res), out, name, fmt)
+    return res
+
+
 def new_figure(width: float, height: float):
     """A matplotlib Figure with an Agg canvas, made without pyplot (no global state)."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg

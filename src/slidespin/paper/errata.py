@@ -10,7 +10,6 @@ over the patch evaluates the formulas of eq. 3 and (6) literally.
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass, field
 
@@ -487,20 +486,9 @@ def compute(fx: float | None = None) -> ErrataResult:
 def main(out=None, *, as_json: bool = False, fx: float | None = None,
          stream=None) -> ErrataResult:
     """Print the errata (text or JSON) and, if ``out`` is given, write errata.json/.txt."""
-    import os
-    import sys
-
-    stream = stream or sys.stdout
     if out is not None:
         sh.prepare_out(out)
-    res = compute(fx)
-    print(json.dumps(res.as_dict(), indent=2) if as_json else res.to_text(), file=stream)
-    if out is not None:
-        with open(os.path.join(out, "errata.json"), "w", encoding="utf-8") as fh:
-            json.dump(res.as_dict(), fh, indent=2)
-        with open(os.path.join(out, "errata.txt"), "w", encoding="utf-8") as fh:
-            fh.write(res.to_text() + "\n")
-    return res
+    return sh.emit_table("errata", compute(fx), out, as_json, stream)
 
 
 if __name__ == "__main__":  # pragma: no cover

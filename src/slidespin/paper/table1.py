@@ -15,7 +15,6 @@ it is the paper's root with ϑ* = 0; for φ = π/4 and π/3 it has ϑ* ≠ 0 and
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass
 from functools import lru_cache
@@ -359,23 +358,9 @@ def main(out=None, *, as_json: bool = False, fx: float | None = None, fmt: str =
          stream=None) -> Table1Result:
     """Print Table 1 (text or JSON) and, if ``out`` is given, write table1.json/.txt and a
     figure. ``fx`` overrides the least-squares value."""
-    import sys
-
-    stream = stream or sys.stdout
     if out is not None:
         sh.prepare_out(out)
-    res = compute(fx)
-    text = json.dumps(res.as_dict(), indent=2) if as_json else res.to_text()
-    print(text, file=stream)
-    if out is not None:
-        import os
-
-        with open(os.path.join(out, "table1.json"), "w", encoding="utf-8") as fh:
-            json.dump(res.as_dict(), fh, indent=2)
-        with open(os.path.join(out, "table1.txt"), "w", encoding="utf-8") as fh:
-            fh.write(res.to_text() + "\n")
-        sh.save(plot(res), out, "table1", fmt)
-    return res
+    return sh.emit_table("table1", compute(fx), out, as_json, stream, plot, fmt)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -12,7 +12,6 @@ simulates one motion inside each of the four intervals to show the stated ending
 
 from __future__ import annotations
 
-import json
 import math
 from dataclasses import dataclass
 
@@ -256,21 +255,9 @@ def plot(result: Table2Result):
 def main(out=None, *, as_json: bool = False, fx: float = 0.3, mu: float = 0.15,
          fmt: str = "png", stream=None) -> Table2Result:
     """Print Table 2 (text or JSON) and, if ``out`` is given, write table2.json and a figure."""
-    import os
-    import sys
-
-    stream = stream or sys.stdout
     if out is not None:
         sh.prepare_out(out)
-    res = compute(fx, mu)
-    print(json.dumps(res.as_dict(), indent=2) if as_json else res.to_text(), file=stream)
-    if out is not None:
-        with open(os.path.join(out, "table2.json"), "w", encoding="utf-8") as fh:
-            json.dump(res.as_dict(), fh, indent=2)
-        with open(os.path.join(out, "table2.txt"), "w", encoding="utf-8") as fh:
-            fh.write(res.to_text() + "\n")
-        sh.save(plot(res), out, "table2", fmt)
-    return res
+    return sh.emit_table("table2", compute(fx, mu), out, as_json, stream, plot, fmt)
 
 
 if __name__ == "__main__":  # pragma: no cover
