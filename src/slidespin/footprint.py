@@ -1,0 +1,689 @@
+"""Footprints of any shape: polygons, rectangles, disks, rings and several separate pads.
+
+A footprint Ω is a finite union of disjoint regions in the body frame C ξ η (MODEL §10). Every
+patch is a frozen value object, placed in the body frame by ``centre=(ξ, η)`` [m] and
+``angle=`` [rad] (counter-clockwise, about the patch's own origin):
+
+=====================================  ============================================
+class                                  region (in the patch's own frame)
+=====================================  ============================================
+``Polygon(vertices)``                  simple polygon, convex or not, either orientation
+``Rectangle(length, width)``           |ξ| ≤ length/2, |η| ≤ width/2 (length along ξ)
+``Disk(radius)``                       |r| ≤ radius
+``Annulus(inner_radius, outer_radius)``  inner_radius ≤ |r| ≤ outer_radius
+``Pads(patches)``                      the union of several disjoint patches
+=====================================  ============================================
+
+Each has ``area`` [m²], ``centroid`` (area centroid, body frame) [m], ``second_moment``
+(J = ∫(r − r_c)(r − r_c)ᵀ dS about the area centroid, MODEL §10) [m⁴], ``outlines()``
+(closed curves for plotting) and ``to_arrays()``, the plain-array form that the compiled
+kernel (:mod:`slidespin._footprint_kernel`) reads:
+
+* ``edges``, float64 (n_edges, 4): oriented straight edges (ξ₀, η₀, ξ₁, η₁) [m]. Each
+  polygon's edges run counter-clockwise, so that the signed fan of triangles (c, P₀, P₁)
+  over all edges, from any apex c, adds up to the polygons' area.
+* ``circles``, float64 (n_circles, 4): (ξ_o, η_o, radius, sign) [m]: a disk counted with
+  ``sign`` +1, or removed with sign −1 (the hole of a ring: an annulus is a disk minus a
+  disk).
+* ``frame``, float64 (3,): (ξ_o, η_o, extent): a reference point (the area centroid) and the
+  largest distance from it to any point of the footprint [m].
+
+Invalid input raises ``ValueError`` naming the parameter: fewer than 3 vertices, repeated
+vertices, a self-intersecting polygon, zero area, radii out of order, overlapping pads.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import NamedTuple, Union
+
+import numpy as np
+
+from . import _validate as v
+
+__all__ = [
+    "Polygon",
+    "Rectangle",
+    "Disk",
+    "Annulus",
+    "Pads",
+    "Footprint",
+    "FootprintArrays",
+]
+
+
+class FootprintArrays(NamedTuple):
+    """Plain-array form of a footprint, read by the compiled kernel (see the module notes)."""
+
+    edges: np.ndarray  #: (n, 4) oriented edges ξ₀, η₀, ξ₁, η₁ [m], counter-clockwise
+    circles: np.ndarray  #: (m, 4) ξ_o, η_o, radius [m], sign (+1 disk, −1 hole)
+    frame: np.ndarray  #: (3,) ξ_o, η_o [m] (area centroid), extent [m]
+
+
+# ---------------------------------------------------------------------------------------------
+# validation helpers
+
+
+def _point(name: str, value) -> tuple[float, float]:
+    try:
+        seq = tuple(value)
+    except TypeError:
+        raise ValueError(f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m") from None
+    if len(seq) != 2:
+        raise ValueError(f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m")
+    return (v.finite(f"{name}[0]", seq[0]), v.finite(f"{name}[1]", seq[1]))
+
+
+def _place(points: np.ndarray, centre: tuple[float, float], angle: float) -> np.ndarray:
+    """Rotate ``points`` (n, 2) by ``angle`` about the origin, then shift by ``centre``."""
+    c, s = math.cos(angle), math.sin(angle)
+    x, y = points[:, 0], points[:, 1]
+    return np.column_stack((centre[0] + c * x - s * y, centre[1] + s * x + c * y))
+
+
+def _cross(ax, ay, bx, by):
+    return ax * by - ay * bx
+
+
+def _segments_intersect(p, q, r, s, eps) -> bool:
+    """Closed segments pq and rs share a point (collinear overlaps included)."""
+    d1 = _cross(q[0] - p[0], q[1] - p[1], r[0] - p[0], r[1] - p[1])
+    d2 = _cross(q[0] - p[0], q[1] - p[1], s[0] - p[0], s[1] - p[1])
+    d3 = _cross(s[0] - r[0], s[1] - r[1], p[0] - r[0], p[1] - r[1])
+    d4 = _cross(s[0] - r[0], s[1] - r[1], q[0] - r[0], q[1] - r[1])
+
+    def sgn(x):
+        return 0 if abs(x) <= eps else (1 if x > 0 else -1)
+
+    o1, o2, o3, o4 = sgn(d1), sgn(d2), sgn(d3), sgn(d4)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return True
+
+    def on(a, b, c):  # c on segment ab, given collinear
+        return (min(a[0], b[0]) - eps <= c[0] <= max(a[0], b[0]) + eps
+                and min(a[1], b[1]) - eps <= c[1] <= max(a[1], b[1]) + eps)
+
+    return ((o1 == 0 and on(p, q, r)) or (o2 == 0 and on(p, q, s))
+            or (o3 == 0 and on(r, s, p)) or (o4 == 0 and on(r, s, q)))
+
+
+def _signed_area(pts: np.ndarray) -> float:
+    x, y = pts[:, 0], pts[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def _check_simple(pts: np.ndarray) -> None:
+    """Raise if the closed polygon ``pts`` repeats a vertex, intersects itself or has no area."""
+    n = len(pts)
+    scale = float(np.max(np.abs(pts - pts.mean(axis=0)))) or 1.0
+    eps = 1e-13 * scale * scale
+    for i in range(n):
+        j = (i + 1) % n
+        if math.hypot(*(pts[j] - pts[i])) <= 1e-14 * scale:
+            raise ValueError(
+                f"vertices: vertex {j} repeats vertex {i} at {tuple(pts[i])!r}; valid values: "
+                "distinct consecutive vertices of a simple polygon"
+            )
+    for i in range(n):
+        p, q = pts[i], pts[(i + 1) % n]
+        for k in range(i + 1, n):
+            r, s = pts[k], pts[(k + 1) % n]
+            adjacent = k == i + 1 or (i == 0 and k == n - 1)
+            if adjacent:
+                # adjacent edges share one vertex; they must not fold back onto each other
+                shared = q if k == i + 1 else p
+                a = p if k == i + 1 else q
+                b = s if k == i + 1 else r
+                ux, uy = a[0] - shared[0], a[1] - shared[1]
+                wx, wy = b[0] - shared[0], b[1] - shared[1]
+                if abs(_cross(ux, uy, wx, wy)) <= eps and ux * wx + uy * wy > 0.0:
+                    raise ValueError(
+                        f"vertices: edges {i} and {k} fold back onto each other; valid values: "
+                        "a simple (non-self-intersecting) polygon"
+                    )
+                continue
+            if _segments_intersect(p, q, r, s, eps):
+                raise ValueError(
+                    f"vertices: edges {i} and {k} of the polygon intersect; valid values: a "
+                    "simple (non-self-intersecting) polygon"
+                )
+    area = _signed_area(pts)
+    if not abs(area) > 1e-12 * scale * scale:
+        raise ValueError(f"vertices: the polygon has zero area ({area!r} m^2); valid range: > 0")
+
+
+def _ear_clip(pts: np.ndarray) -> np.ndarray:
+    """Triangles (k, 3, 2) covering a simple counter-clockwise polygon (ear clipping)."""
+    idx = list(range(len(pts)))
+    tris = []
+
+    def inside(a, b, c, p):  # p in the closed triangle abc (ccw)
+        return (_cross(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1]) >= 0
+                and _cross(c[0] - b[0], c[1] - b[1], p[0] - b[0], p[1] - b[1]) >= 0
+                and _cross(a[0] - c[0], a[1] - c[1], p[0] - c[0], p[1] - c[1]) >= 0)
+
+    guard = 0
+    while len(idx) > 3 and guard < 10 * len(pts) ** 2:
+        guard += 1
+        n = len(idx)
+        for k in range(n):
+            i0, i1, i2 = idx[k - 1], idx[k], idx[(k + 1) % n]
+            a, b, c = pts[i0], pts[i1], pts[i2]
+            cr = _cross(b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1])
+            if cr < 0:
+                continue
+            if cr == 0:  # collinear vertex: drop it, no triangle
+                idx.pop(k)
+                break
+            if any(inside(a, b, c, pts[j]) for j in idx if j not in (i0, i1, i2)):
+                continue
+            tris.append((a, b, c))
+            idx.pop(k)
+            break
+        else:  # pragma: no cover - a simple polygon always has an ear
+            raise RuntimeError("ear clipping failed")
+    if len(idx) == 3:
+        a, b, c = (pts[j] for j in idx)
+        if _cross(b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]) > 0:
+            tris.append((a, b, c))
+    return np.array(tris, dtype=float).reshape(-1, 3, 2)
+
+
+def _clip_area(t1: np.ndarray, t2: np.ndarray) -> float:
+    """Area of the intersection of two counter-clockwise convex polygons (Sutherland–Hodgman)."""
+    out = [tuple(p) for p in t1]
+    m = len(t2)
+    for i in range(m):
+        a, b = t2[i], t2[(i + 1) % m]
+        inp, out = out, []
+        if not inp:
+            break
+
+        def side(p):
+            return _cross(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1])
+
+        for j in range(len(inp)):
+            p, q = inp[j], inp[(j + 1) % len(inp)]
+            sp, sq = side(p), side(q)
+            if sp >= 0:
+                out.append(p)
+            if (sp >= 0) != (sq >= 0):
+                t = sp / (sp - sq)
+                out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+    if len(out) < 3:
+        return 0.0
+    return abs(_signed_area(np.array(out)))
+
+
+# ---------------------------------------------------------------------------------------------
+# the patches
+
+
+class _Patch:
+    """Common properties, all computed from :meth:`to_arrays` (exact for every shape)."""
+
+    __slots__ = ()
+
+    def to_arrays(self) -> FootprintArrays:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def _raw_arrays(self):  # (edges, circles)
+        raise NotImplementedError
+
+    @property
+    def area(self) -> float:
+        """Area |Ω| [m²]."""
+        return _moments(*self._raw_arrays())[0]
+
+    @property
+    def centroid(self) -> tuple[float, float]:
+        """Area centroid r_c in the body frame [m]."""
+        a, sx, sy, *_ = _moments(*self._raw_arrays())
+        return (sx / a, sy / a)
+
+    @property
+    def second_moment(self) -> np.ndarray:
+        """J = ∫(r − r_c)(r − r_c)ᵀ dS about the area centroid [m⁴], a 2×2 array (MODEL §10)."""
+        a, sx, sy, sxx, sxy, syy = _moments(*self._raw_arrays())
+        cx, cy = sx / a, sy / a
+        return np.array([[sxx - a * cx * cx, sxy - a * cx * cy],
+                         [sxy - a * cx * cy, syy - a * cy * cy]])
+
+    @property
+    def polar_moment(self) -> float:
+        """∫|r − r_c|² dS [m⁴]: the plate inertia of unit areal density about the centroid."""
+        j = self.second_moment
+        return float(j[0, 0] + j[1, 1])
+
+    def plate_inertia(self, mass: float) -> float:
+        """I of a uniform plate of this shape and ``mass`` [kg] about its centroid [kg m²]."""
+        m = v.positive("mass", mass, "kg")
+        return m * self.polar_moment / self.area
+
+
+def _moments(edges: np.ndarray, circles: np.ndarray):
+    """(A, ∫ξ, ∫η, ∫ξ², ∫ξη, ∫η²) over the footprint [m², m³, m⁴] (shoelace and disk formulas)."""
+    x0, y0, x1, y1 = edges.T if len(edges) else (np.zeros(0),) * 4
+    cr = x0 * y1 - x1 * y0
+    a = 0.5 * cr.sum()
+    sx = (cr * (x0 + x1)).sum() / 6.0
+    sy = (cr * (y0 + y1)).sum() / 6.0
+    sxx = (cr * (x0 * x0 + x0 * x1 + x1 * x1)).sum() / 12.0
+    syy = (cr * (y0 * y0 + y0 * y1 + y1 * y1)).sum() / 12.0
+    sxy = (cr * (x0 * y1 + 2.0 * x0 * y0 + 2.0 * x1 * y1 + x1 * y0)).sum() / 24.0
+    for ox, oy, r, sg in circles:
+        ar = sg * math.pi * r * r
+        a += ar
+        sx += ar * ox
+        sy += ar * oy
+        sxx += ar * (ox * ox + 0.25 * r * r)
+        syy += ar * (oy * oy + 0.25 * r * r)
+        sxy += ar * ox * oy
+    return float(a), float(sx), float(sy), float(sxx), float(sxy), float(syy)
+
+
+def _frame(edges: np.ndarray, circles: np.ndarray) -> np.ndarray:
+    a, sx, sy, *_ = _moments(edges, circles)
+    ox, oy = sx / a, sy / a
+    ext = 0.0
+    if len(edges):
+        ext = float(np.max(np.hypot(edges[:, 0] - ox, edges[:, 1] - oy)))
+    for cx, cy, r, sg in circles:
+        if sg > 0:
+            ext = max(ext, math.hypot(cx - ox, cy - oy) + r)
+    return np.array([ox, oy, ext])
+
+
+def _arrays(edges, circles) -> FootprintArrays:
+    e = np.ascontiguousarray(np.asarray(edges, dtype=float).reshape(-1, 4))
+    c = np.ascontiguousarray(np.asarray(circles, dtype=float).reshape(-1, 4))
+    return FootprintArrays(e, c, _frame(e, c))
+
+
+def _placement(obj) -> None:
+    object.__setattr__(obj, "centre", _point("centre", obj.centre))
+    object.__setattr__(obj, "angle", v.finite("angle", obj.angle))
+
+
+@dataclass(frozen=True, slots=True)
+class Polygon(_Patch):
+    """A simple polygon, convex or not, its vertices in either orientation.
+
+    Parameters
+    ----------
+    vertices : sequence of (float, float)
+        At least 3 vertices (ξ, η) [m] in the polygon's own frame, in order around the
+        boundary (clockwise or counter-clockwise; the closing edge is implied).
+    centre : (float, float), default (0, 0)
+        Where the polygon's own origin lies in the body frame [m].
+    angle : float, default 0
+        Rotation of the polygon about its own origin [rad], counter-clockwise.
+
+    Raises
+    ------
+    ValueError
+        Fewer than 3 vertices, a non-finite coordinate, a repeated vertex, a
+        self-intersecting boundary or zero area.
+
+    Examples
+    --------
+    >>> Polygon([(0, 0), (2, 0), (2, 1), (0, 1)]).area
+    2.0
+    """
+
+    vertices: tuple
+    centre: tuple = (0.0, 0.0)
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        try:
+            raw = [tuple(p) for p in self.vertices]
+        except TypeError:
+            raise ValueError(
+                f"vertices = {self.vertices!r} is invalid; valid values: a sequence of at "
+                "least 3 pairs (xi, eta) in m"
+            ) from None
+        if len(raw) < 3:
+            raise ValueError(
+                f"vertices has {len(raw)} point(s); valid range: at least 3 pairs (xi, eta) in m"
+            )
+        pts = tuple(_point(f"vertices[{i}]", p) for i, p in enumerate(raw))
+        object.__setattr__(self, "vertices", pts)
+        _placement(self)
+        _check_simple(np.array(pts))
+
+    @property
+    def points(self) -> np.ndarray:
+        """Vertices placed in the body frame [m], shape (n, 2), in the given order."""
+        return _place(np.array(self.vertices, dtype=float), self.centre, self.angle)
+
+    def _ccw(self) -> np.ndarray:
+        p = self.points
+        return p if _signed_area(p) > 0 else p[::-1].copy()
+
+    def _raw_arrays(self):
+        p = self._ccw()
+        q = np.roll(p, -1, axis=0)
+        return np.column_stack((p, q)), np.zeros((0, 4))
+
+    def to_arrays(self) -> FootprintArrays:
+        """Plain arrays for the kernel: the edges, counter-clockwise (module notes)."""
+        return _arrays(*self._raw_arrays())
+
+    def outline(self) -> np.ndarray:
+        """Closed outline (n + 1, 2) in the body frame [m]."""
+        p = self.points
+        return np.vstack((p, p[:1]))
+
+    def outlines(self, n: int = 181) -> list[np.ndarray]:
+        """Closed outlines in the body frame [m] (one here; ``n`` is unused)."""
+        return [self.outline()]
+
+    def triangles(self) -> np.ndarray:
+        """A triangulation of the polygon (k, 3, 2), counter-clockwise triangles [m]."""
+        return _ear_clip(self._ccw())
+
+
+@dataclass(frozen=True, slots=True)
+class Rectangle(_Patch):
+    """A rectangle ``length`` × ``width`` centred on its own origin, ``length`` along ξ.
+
+    Parameters
+    ----------
+    length, width : float
+        Side lengths [m], finite and > 0.
+    centre : (float, float), default (0, 0)
+        Position of the rectangle's centre in the body frame [m].
+    angle : float, default 0
+        Angle of the ``length`` side from the body axis ξ [rad].
+    """
+
+    length: float
+    width: float
+    centre: tuple = (0.0, 0.0)
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "length", v.positive("length", self.length, "m"))
+        object.__setattr__(self, "width", v.positive("width", self.width, "m"))
+        _placement(self)
+
+    def as_polygon(self) -> Polygon:
+        """The same rectangle as a :class:`Polygon`."""
+        a, b = 0.5 * self.length, 0.5 * self.width
+        return Polygon(((-a, -b), (a, -b), (a, b), (-a, b)), self.centre, self.angle)
+
+    def _raw_arrays(self):
+        return self.as_polygon()._raw_arrays()
+
+    def to_arrays(self) -> FootprintArrays:
+        """Plain arrays for the kernel (module notes)."""
+        return _arrays(*self._raw_arrays())
+
+    def outline(self) -> np.ndarray:
+        """Closed outline (5, 2) in the body frame [m]."""
+        return self.as_polygon().outline()
+
+    def outlines(self, n: int = 181) -> list[np.ndarray]:
+        """Closed outlines in the body frame [m]."""
+        return [self.outline()]
+
+    def triangles(self) -> np.ndarray:
+        """Two counter-clockwise triangles covering the rectangle [m]."""
+        return self.as_polygon().triangles()
+
+
+@dataclass(frozen=True, slots=True)
+class Annulus(_Patch):
+    """A ring inner_radius ≤ |r − centre| ≤ outer_radius.
+
+    Parameters
+    ----------
+    inner_radius : float
+        Radius of the hole [m], finite and ≥ 0 (0: a full disk).
+    outer_radius : float
+        Outer radius [m], finite and > ``inner_radius``.
+    centre : (float, float), default (0, 0)
+        Centre of the ring in the body frame [m].
+    angle : float, default 0
+        Accepted for a uniform placement API; a ring does not change when turned.
+
+    Notes
+    -----
+    For the kernel a ring is a disk minus a disk (``circles`` rows with signs +1 and −1).
+    """
+
+    inner_radius: float
+    outer_radius: float
+    centre: tuple = (0.0, 0.0)
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        r = v.in_range("inner_radius", self.inner_radius, 0.0, math.inf, hi_open=True)
+        big = v.positive("outer_radius", self.outer_radius, "m")
+        if not big > r:
+            raise ValueError(
+                f"outer_radius = {big!r} m is invalid; valid range: > inner_radius = {r!r} m"
+            )
+        object.__setattr__(self, "inner_radius", r)
+        object.__setattr__(self, "outer_radius", big)
+        _placement(self)
+
+    def _raw_arrays(self):
+        cx, cy = self.centre
+        rows = [(cx, cy, self.outer_radius, 1.0)]
+        if self.inner_radius > 0.0:
+            rows.append((cx, cy, self.inner_radius, -1.0))
+        return np.zeros((0, 4)), np.array(rows, dtype=float)
+
+    def to_arrays(self) -> FootprintArrays:
+        """Plain arrays for the kernel: a disk and, if any, the hole with sign −1."""
+        return _arrays(*self._raw_arrays())
+
+    def outlines(self, n: int = 181) -> list[np.ndarray]:
+        """The outer circle and (if any) the hole, closed, in the body frame [m]."""
+        t = np.linspace(0.0, 2.0 * np.pi, n)
+        cx, cy = self.centre
+        out = [np.column_stack((cx + self.outer_radius * np.cos(t),
+                                cy + self.outer_radius * np.sin(t)))]
+        if self.inner_radius > 0.0:
+            out.append(np.column_stack((cx + self.inner_radius * np.cos(t),
+                                        cy + self.inner_radius * np.sin(t))))
+        return out
+
+
+@dataclass(frozen=True, slots=True, init=False)
+class Disk(Annulus):
+    """A full disk of the given ``radius`` [m] at ``centre``: an :class:`Annulus` with no hole."""
+
+    def __init__(self, radius: float, centre=(0.0, 0.0), angle: float = 0.0) -> None:
+        object.__setattr__(self, "inner_radius", 0.0)
+        object.__setattr__(self, "outer_radius", v.positive("radius", radius, "m"))
+        object.__setattr__(self, "centre", centre)
+        object.__setattr__(self, "angle", angle)
+        _placement(self)
+
+    @property
+    def radius(self) -> float:
+        """Disk radius [m]."""
+        return self.outer_radius
+
+    def outline(self, n: int = 181) -> np.ndarray:
+        """Closed outline (n, 2) in the body frame [m]."""
+        return self.outlines(n)[0]
+
+    def __repr__(self) -> str:
+        return f"Disk(radius={self.outer_radius!r}, centre={self.centre!r})"
+
+
+_SIMPLE = (Polygon, Rectangle, Annulus)
+
+
+def _round_overlap(a: Annulus, b: Annulus) -> bool:
+    """Interiors of two rings (disks: inner radius 0) intersect."""
+    d = math.hypot(a.centre[0] - b.centre[0], a.centre[1] - b.centre[1])
+    a1, a2, b1, b2 = a.inner_radius, a.outer_radius, b.inner_radius, b.outer_radius
+    if d == 0.0:
+        return max(a1, b1) < min(a2, b2)
+    # a point at distances s from a's centre and t from b's exists iff |s − t| ≤ d ≤ s + t:
+    # the interiors meet iff that set meets the open box (a1, a2) × (b1, b2) in an open set
+    box = np.array([(a1, b1), (a2, b1), (a2, b2), (a1, b2)])
+    big = 4.0 * (a2 + b2 + d)
+    # the strip |s − t| ≤ d, s + t ≥ d as a convex polygon (large enough to cover the box)
+    strip = np.array([(d, 0.0), (big + d, big), (big, big + d), (0.0, d)])
+    return _clip_area(box, strip) > 1e-12 * (a2 - a1) * (b2 - b1)
+
+
+def _polygon_points(p) -> np.ndarray:
+    return p._ccw() if isinstance(p, Polygon) else p.as_polygon()._ccw()
+
+
+def _point_in_polygon(pt, poly: np.ndarray) -> bool:
+    """Point in or on the closed polygon (winding test; boundary counts as inside)."""
+    x, y = pt
+    n = len(poly)
+    wn = 0
+    for i in range(n):
+        ax, ay = poly[i]
+        bx, by = poly[(i + 1) % n]
+        cr = _cross(bx - ax, by - ay, x - ax, y - ay)
+        if abs(cr) <= 1e-14 * (abs(bx - ax) + abs(by - ay)) * (abs(x - ax) + abs(y - ay) + 1e-300) \
+                and min(ax, bx) <= x <= max(ax, bx) and min(ay, by) <= y <= max(ay, by):
+            return True
+        if ay <= y < by and cr > 0:
+            wn += 1
+        elif by <= y < ay and cr < 0:
+            wn -= 1
+    return wn != 0
+
+
+def _poly_round_overlap(poly: np.ndarray, ring: Annulus) -> bool:
+    """Interiors of a polygon and a ring intersect: the distances from the ring's centre to
+    the polygon's points fill an interval (d_min, d_max), which must meet (r_in, r_out)."""
+    o = np.array(ring.centre)
+    q = np.roll(poly, -1, axis=0)
+    dmax = float(np.max(np.hypot(*(poly - o).T)))
+    if _point_in_polygon(o, poly):
+        dmin = 0.0
+    else:
+        e = q - poly
+        t = np.clip(np.einsum("ij,ij->i", o - poly, e) / np.einsum("ij,ij->i", e, e), 0.0, 1.0)
+        near = poly + t[:, None] * e
+        dmin = float(np.min(np.hypot(*(near - o).T)))
+    return dmin < ring.outer_radius and dmax > ring.inner_radius
+
+
+def _poly_overlap(p: np.ndarray, q: np.ndarray) -> bool:
+    """Interiors of two simple polygons intersect (area of the intersection > 0)."""
+    lo = np.maximum(p.min(axis=0), q.min(axis=0))
+    hi = np.minimum(p.max(axis=0), q.max(axis=0))
+    if np.any(lo >= hi):
+        return False
+    ta, tb = _ear_clip(p), _ear_clip(q)
+    area = 0.0
+    for t1 in ta:
+        for t2 in tb:
+            if np.any(np.maximum(t1.min(0), t2.min(0)) >= np.minimum(t1.max(0), t2.max(0))):
+                continue
+            area += _clip_area(t1, t2)
+    scale = min(abs(_signed_area(p)), abs(_signed_area(q)))
+    return area > 1e-10 * scale
+
+
+def _overlap(a, b) -> bool:
+    ra, rb = isinstance(a, Annulus), isinstance(b, Annulus)
+    if ra and rb:
+        return _round_overlap(a, b)
+    if ra:
+        return _poly_round_overlap(_polygon_points(b), a)
+    if rb:
+        return _poly_round_overlap(_polygon_points(a), b)
+    return _poly_overlap(_polygon_points(a), _polygon_points(b))
+
+
+@dataclass(frozen=True, slots=True)
+class Pads(_Patch):
+    """A body resting on several separate patches (feet, runners, pads).
+
+    Parameters
+    ----------
+    patches : sequence of Polygon, Rectangle, Disk, Annulus or Pads
+        At least one patch, each placed in the body frame by its own ``centre``/``angle``;
+        nested ``Pads`` are flattened. Their interiors must be disjoint (touching is allowed).
+
+    Raises
+    ------
+    ValueError
+        No patch, a patch of an unknown type, or two patches that overlap.
+
+    Examples
+    --------
+    >>> runners = Pads([Rectangle(0.8, 0.02, centre=(0, -0.2)), Rectangle(0.8, 0.02, centre=(0, 0.2))])
+    >>> round(runners.area, 6)
+    0.032
+    """
+
+    patches: tuple = field(default_factory=tuple)
+
+    def __post_init__(self) -> None:
+        try:
+            items = list(self.patches)
+        except TypeError:
+            raise ValueError(
+                f"patches = {self.patches!r} is invalid; valid values: a sequence of patches"
+            ) from None
+        flat = []
+        for i, p in enumerate(items):
+            if isinstance(p, Pads):
+                flat.extend(p.patches)
+            elif isinstance(p, _SIMPLE):
+                flat.append(p)
+            else:
+                raise ValueError(
+                    f"patches[{i}] = {p!r} is invalid; valid values: Polygon, Rectangle, Disk, "
+                    "Annulus or Pads"
+                )
+        if not flat:
+            raise ValueError("patches is empty; valid range: at least one patch")
+        for i in range(len(flat)):
+            for j in range(i + 1, len(flat)):
+                if _overlap(flat[i], flat[j]):
+                    raise ValueError(
+                        f"patches: patch {i} ({flat[i]!r}) and patch {j} ({flat[j]!r}) overlap; "
+                        "valid values: disjoint patches (they may touch)"
+                    )
+        object.__setattr__(self, "patches", tuple(flat))
+
+    def _raw_arrays(self):
+        es, cs = [], []
+        for p in self.patches:
+            e, c = p._raw_arrays()
+            es.append(e)
+            cs.append(c)
+        return np.vstack(es).reshape(-1, 4), np.vstack(cs).reshape(-1, 4)
+
+    def to_arrays(self) -> FootprintArrays:
+        """Plain arrays for the kernel: every pad's edges and circles in one set."""
+        return _arrays(*self._raw_arrays())
+
+    def outlines(self, n: int = 181) -> list[np.ndarray]:
+        """Closed outlines of every pad in the body frame [m]."""
+        out = []
+        for p in self.patches:
+            out.extend(p.outlines(n))
+        return out
+
+
+Footprint = Union[Polygon, Rectangle, Disk, Annulus, Pads]
+
+
+def is_footprint(obj) -> bool:
+    """True for the footprint types of this module."""
+    return isinstance(obj, (Polygon, Rectangle, Annulus, Pads))
+
+
+def as_patches(fp) -> tuple:
+    """The simple patches (Polygon, Rectangle, Annulus) that make up ``fp``."""
+    return fp.patches if isinstance(fp, Pads) else (fp,)
+

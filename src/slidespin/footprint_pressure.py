@@ -1,0 +1,334 @@
+"""Normal pressure on any footprint (MODEL §10): uniform, linear, or a user map.
+
+Every law is normalised to the load P = m g: ∫_Ω p dS = P. The mass centre G lies above the
+pressure centroid ∫ p r dS / P (so that the body rests without tipping).
+
+==================================  ==============================================================
+law                                 p(ξ, η) on the footprint Ω
+==================================  ==============================================================
+``UniformPressure()``               P/A                              (G = area centroid r_c)
+``LinearPressure(xi_c, eta_c)``     (P/A)(1 + gᵀ(r − r_c)),  J g = A (r_G − r_c)  (G = (ξc, ηc))
+``PressureMap(function)``           P · f(ξ, η)/∫_Ω f dS              (G = its centroid)
+``PressureMap.from_grid(...)``      the same with f the bicubic spline through sampled values
+==================================  ==============================================================
+
+with A = |Ω|, r_c the area centroid and J = ∫(r − r_c)(r − r_c)ᵀ dS (:attr:`second_moment`).
+For an ellipse the linear law is the paper's eq. 10 (corrected, MODEL §7 erratum 5); for three
+small pads it gives their statically determined loads. ``UniformPressure`` and
+``LinearPressure`` are the value objects of :mod:`slidespin.pressure`; here they are applied to
+any footprint. The linear law must be ≥ 0 on Ω: it is linear, so its minimum lies at a
+polygon vertex or at the point of a disk's rim farthest down its gradient, where it is
+checked exactly. A user map is checked at its quadrature nodes (:func:`area_rule`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from . import _validate as v
+from ._footprint_kernel import NGEO
+from .footprint import Annulus, FootprintArrays, Pads, Polygon, Rectangle, as_patches
+from .pressure import LinearPressure, UniformPressure
+
+__all__ = [
+    "PressureMap",
+    "pressure_coefficients",
+    "mass_centre",
+    "kernel_geometry",
+    "density",
+    "area_rule",
+    "contains",
+    "map_scale",
+]
+
+#: Gauss–Legendre order per triangle side and per ring direction of :func:`area_rule`
+AREA_RULE_NODES = 24
+
+
+def _check_footprint(fp) -> None:
+    if not isinstance(fp, (Polygon, Rectangle, Annulus, Pads)):
+        raise ValueError(
+            f"footprint = {fp!r} is invalid; valid values: Polygon, Rectangle, Disk, Annulus or Pads"
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class PressureMap:
+    """A user pressure map p(ξ, η), normalised to the load on the footprint it is used with.
+
+    Parameters
+    ----------
+    function : callable
+        ``function(xi, eta)`` takes two float arrays of equal shape (body-frame coordinates
+        [m]) and returns the pressure at those points, any positive scale (it is normalised
+        so that ∫_Ω p dS = P). It must be smooth and ≥ 0 on the footprint; its accuracy
+        limits the wrench's (MODEL §10).
+
+    Examples
+    --------
+    >>> pm = PressureMap(lambda xi, eta: 1.0 + 0.0 * xi)      # uniform
+    >>> film = PressureMap.from_grid([0, 1, 2, 3], [0, 1, 2, 3], np.ones((4, 4)))
+    """
+
+    function: Callable
+
+    def __post_init__(self) -> None:
+        if not callable(self.function):
+            raise ValueError(
+                f"function = {self.function!r} is invalid; valid values: a callable p(xi, eta)"
+            )
+
+    @classmethod
+    def from_grid(cls, xi, eta, values) -> "PressureMap":
+        """A map from samples on a rectangular grid (pressure film, finite-element output).
+
+        Parameters
+        ----------
+        xi, eta : array_like, 1-D
+            Strictly increasing grid coordinates [m], at least 4 each; the grid must cover
+            the footprint.
+        values : array_like, shape (len(xi), len(eta))
+            Pressure samples (any positive scale), ``values[i, j]`` at (xi[i], eta[j]).
+
+        Notes
+        -----
+        The map is the interpolating bicubic spline (``scipy.interpolate.RectBivariateSpline``,
+        s = 0); outside the grid it is extrapolated, so the grid should cover the footprint.
+        """
+        from scipy.interpolate import RectBivariateSpline
+
+        x = np.asarray(xi, dtype=float)
+        y = np.asarray(eta, dtype=float)
+        z = np.asarray(values, dtype=float)
+        for name, g in (("xi", x), ("eta", y)):
+            if g.ndim != 1 or g.size < 4 or not np.all(np.isfinite(g)) or np.any(np.diff(g) <= 0):
+                raise ValueError(
+                    f"{name} = {g!r} is invalid; valid values: at least 4 finite, strictly "
+                    "increasing grid coordinates in m"
+                )
+        if z.shape != (x.size, y.size) or not np.all(np.isfinite(z)):
+            raise ValueError(
+                f"values has shape {z.shape} (or non-finite entries); valid values: finite "
+                f"samples of shape ({x.size}, {y.size})"
+            )
+        spline = RectBivariateSpline(x, y, z, kx=3, ky=3, s=0)
+
+        def f(xx, yy):
+            xx = np.asarray(xx, dtype=float)
+            return spline.ev(xx.ravel(), np.asarray(yy, dtype=float).ravel()).reshape(xx.shape)
+
+        return cls(f)
+
+    def __call__(self, xi, eta):
+        return np.asarray(self.function(xi, eta), dtype=float)
+
+
+# ---------------------------------------------------------------------------------------------
+# quadrature over the footprint (smooth integrands)
+
+
+def area_rule(footprint, n: int = AREA_RULE_NODES):
+    """Quadrature nodes and weights over the footprint, for smooth integrands.
+
+    Polygons are triangulated (ear clipping) and each triangle gets the n × n collapsed
+    Gauss–Legendre rule (exact for polynomials of degree 2n − 2); a ring r ≤ ρ ≤ R gets n
+    Gauss–Legendre points in ρ and 2n + 2 equally spaced angles (exact for trigonometric
+    degree 2n + 1).
+
+    Returns
+    -------
+    points : ndarray, shape (k, 2)
+        Body-frame nodes [m], all inside the footprint.
+    weights : ndarray, shape (k,)
+        Positive weights [m²]; they add up to the area.
+    """
+    _check_footprint(footprint)
+    x, w = np.polynomial.legendre.leggauss(n)
+    x = 0.5 * (x + 1.0)
+    w = 0.5 * w
+    pts, wts = [], []
+    for p in as_patches(footprint):
+        if isinstance(p, Annulus):
+            nt = 2 * n + 2
+            th = 2.0 * np.pi * np.arange(nt) / nt
+            r = p.inner_radius + (p.outer_radius - p.inner_radius) * x
+            wr = (p.outer_radius - p.inner_radius) * w * r * (2.0 * np.pi / nt)
+            rr, tt = np.meshgrid(r, th, indexing="ij")
+            pts.append(np.column_stack((p.centre[0] + (rr * np.cos(tt)).ravel(),
+                                        p.centre[1] + (rr * np.sin(tt)).ravel())))
+            wts.append(np.repeat(wr, nt))
+            continue
+        for a, b, c in p.triangles():
+            jac = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+            uu, vv = np.meshgrid(x, x, indexing="ij")
+            ww = np.outer(w * x, w) * jac
+            px = a[0] + uu * ((b[0] - a[0]) + vv * (c[0] - b[0]))
+            py = a[1] + uu * ((b[1] - a[1]) + vv * (c[1] - b[1]))
+            pts.append(np.column_stack((px.ravel(), py.ravel())))
+            wts.append(ww.ravel())
+    return np.vstack(pts), np.concatenate(wts)
+
+
+def contains(footprint, xi, eta) -> np.ndarray:
+    """True where (ξ, η) lies inside the footprint (boundary points may go either way)."""
+    _check_footprint(footprint)
+    xi = np.asarray(xi, dtype=float)
+    eta = np.asarray(eta, dtype=float)
+    inside = np.zeros(np.broadcast(xi, eta).shape, dtype=bool)
+    for p in as_patches(footprint):
+        if isinstance(p, Annulus):
+            r = np.hypot(xi - p.centre[0], eta - p.centre[1])
+            inside |= (r <= p.outer_radius) & (r >= p.inner_radius)
+            continue
+        poly = p.points if isinstance(p, Polygon) else p.as_polygon().points
+        q = np.roll(poly, -1, axis=0)
+        odd = np.zeros_like(inside)
+        for (ax, ay), (bx, by) in zip(poly, q):
+            crosses = (ay > eta) != (by > eta)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                xint = ax + (eta - ay) * (bx - ax) / (by - ay)
+            odd ^= crosses & (xi < xint)
+        inside |= odd
+    return inside
+
+
+# ---------------------------------------------------------------------------------------------
+# the laws
+
+
+def map_scale(footprint, pmap: PressureMap) -> tuple[float, float, float]:
+    """(∫f dS, ∫f ξ dS, ∫f η dS) of the raw map f over the footprint (:func:`area_rule`)."""
+    pts, w = area_rule(footprint)
+    f = pmap(pts[:, 0], pts[:, 1])
+    if f.shape != (len(w),) or not np.all(np.isfinite(f)):
+        raise ValueError(
+            "pressure map: function(xi, eta) must return finite values of the shape of its "
+            f"inputs; got shape {f.shape}"
+        )
+    if np.any(f < 0.0):
+        k = int(np.argmin(f))
+        raise ValueError(
+            f"pressure map: p = {f[k]!r} < 0 at (xi, eta) = ({pts[k, 0]!r}, {pts[k, 1]!r}) m; "
+            "valid range: p >= 0 on the footprint"
+        )
+    total = float(w @ f)
+    if not total > 0.0:
+        raise ValueError(f"pressure map: integral over the footprint = {total!r}; valid range: > 0")
+    return total, float(w @ (f * pts[:, 0])), float(w @ (f * pts[:, 1]))
+
+
+def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float, float, float]:
+    """Coefficients (p₀, p₁, p₂) of p = p₀ + p₁ξ + p₂η [Pa, Pa/m, Pa/m] on the footprint.
+
+    Parameters
+    ----------
+    footprint : Polygon, Rectangle, Disk, Annulus or Pads
+    pressure : UniformPressure or LinearPressure
+    load : float
+        Normal load P [N], finite and > 0.
+
+    Raises
+    ------
+    ValueError
+        For a linear law whose pressure turns negative somewhere on the footprint.
+
+    Notes
+    -----
+    Linear law (MODEL §10): p = (P/A)(1 + gᵀ(r − r_c)) with J g = A (r_G − r_c); its
+    centroid is r_G since ∫(r − r_c)(r − r_c)ᵀ dS g = J g.
+    """
+    _check_footprint(footprint)
+    load = v.positive("load", load, "N")
+    arrays = footprint.to_arrays()
+    a = footprint.area
+    if isinstance(pressure, UniformPressure):
+        return load / a, 0.0, 0.0
+    if not isinstance(pressure, LinearPressure):
+        raise ValueError(
+            f"pressure = {pressure!r} is invalid here; valid values: UniformPressure(), "
+            "LinearPressure(xi_c, eta_c) (a PressureMap is not linear)"
+        )
+    rc = np.array(footprint.centroid)
+    rg = np.array([pressure.xi_c, pressure.eta_c])
+    g = np.linalg.solve(footprint.second_moment, a * (rg - rc))
+    p0 = load / a * (1.0 - g @ rc)
+    p1, p2 = load / a * g
+    _check_nonnegative(arrays, (p0, p1, p2), pressure, load / a)
+    return float(p0), float(p1), float(p2)
+
+
+def _check_nonnegative(arrays: FootprintArrays, coef, pressure, mean: float) -> None:
+    p0, p1, p2 = coef
+    worst, where = math.inf, None
+    for x, y in arrays.edges[:, :2]:
+        val = p0 + p1 * x + p2 * y
+        if val < worst:
+            worst, where = val, (x, y)
+    gn = math.hypot(p1, p2)
+    for x, y, r, sg in arrays.circles:
+        if sg <= 0:
+            continue
+        val = p0 + p1 * x + p2 * y - gn * r
+        if val < worst:
+            px, py = (x - r * p1 / gn, y - r * p2 / gn) if gn > 0 else (x + r, y)
+            worst, where = val, (px, py)
+    if worst < -1e-12 * mean:
+        raise ValueError(
+            f"LinearPressure(xi_c={pressure.xi_c!r}, eta_c={pressure.eta_c!r}) turns negative on "
+            f"the footprint: p = {worst:.6g} Pa at (xi, eta) = ({where[0]:.6g}, {where[1]:.6g}) m; "
+            "valid range: a centroid for which p >= 0 everywhere (closer to the area centroid)"
+        )
+
+
+def mass_centre(footprint, pressure) -> tuple[float, float]:
+    """The mass centre G = the pressure centroid [m] in the body frame."""
+    _check_footprint(footprint)
+    if isinstance(pressure, UniformPressure):
+        return footprint.centroid
+    if isinstance(pressure, LinearPressure):
+        return (pressure.xi_c, pressure.eta_c)
+    if isinstance(pressure, PressureMap):
+        total, sx, sy = map_scale(footprint, pressure)
+        return (sx / total, sy / total)
+    raise ValueError(
+        f"pressure = {pressure!r} is invalid; valid values: UniformPressure(), "
+        "LinearPressure(xi_c, eta_c), PressureMap(function)"
+    )
+
+
+def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
+    """Pressure p(ξ, η) [Pa] at body-frame points (arrays allowed); 0 outside the footprint."""
+    load = v.positive("load", load, "N")
+    xi = np.asarray(xi, dtype=float)
+    eta = np.asarray(eta, dtype=float)
+    inside = contains(footprint, xi, eta)
+    if isinstance(pressure, PressureMap):
+        total, _, _ = map_scale(footprint, pressure)
+        p = pressure(xi, eta) * (load / total)
+    else:
+        p0, p1, p2 = pressure_coefficients(footprint, pressure, load)
+        p = p0 + p1 * xi + p2 * eta
+    return np.where(inside, p, 0.0)
+
+
+def kernel_geometry(footprint, pressure, arrays: FootprintArrays | None = None) -> np.ndarray:
+    """The ``geo`` vector of the compiled kernel for unit load (P = 1), lengths in metres.
+
+    Layout :data:`slidespin._footprint_kernel.GEO_FIELDS`: reference point and extent (from
+    ``arrays.frame``), pressure coefficients (p₀, p₁, p₂), mass centre G, pressure centroid,
+    load ∫p dS. Only uniform and linear laws (the kernel's exact path).
+    """
+    arrays = footprint.to_arrays() if arrays is None else arrays
+    p0, p1, p2 = pressure_coefficients(footprint, pressure, 1.0)
+    xg, yg = mass_centre(footprint, pressure)
+    geo = np.empty(NGEO)
+    geo[0:3] = arrays.frame
+    geo[3:6] = (p0, p1, p2)
+    geo[6:8] = (xg, yg)
+    geo[8:10] = (xg, yg)  # G is the pressure centroid
+    geo[10] = 1.0
+    return geo
