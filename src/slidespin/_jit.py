@@ -3,14 +3,33 @@
 Compiled functions in slidespin take plain floats and arrays only. ``jit`` is ``numba.njit``
 with on-disk caching (``cache=True``) and without fast-math (the wrench is computed to 1e-10
 and must not be reassociated). Setting ``NUMBA_DISABLE_JIT=1`` runs everything as Python.
+
+Import anywhere. numba caches compiled code next to the source (``__pycache__``) or in the
+user's cache directory (``NUMBA_CACHE_DIR``, else ``~/.cache/numba``), and refuses to build a
+cached function at all ("no locator available") when none of them is writable: a read-only
+install used by an account without a writable home. slidespin then caches in a private
+temporary directory made for this process (``tempfile.mkdtemp``: never shared, since numba's
+cache files are pickles), or compiles without a cache if even that fails, and says so once
+on stderr (a :class:`CacheWarning`). Nothing else changes: the code compiled is the same.
 """
 
 from __future__ import annotations
 
+import tempfile
+import warnings
+
 import numba
 from numba import prange
+from numba.core import config as _config
 
-__all__ = ["jit", "prange", "numba", "set_threads"]
+__all__ = ["jit", "prange", "numba", "set_threads", "CacheWarning"]
+
+
+class CacheWarning(UserWarning):
+    """numba's on-disk cache is not writable; slidespin fell back to a temporary or no cache."""
+
+
+_fallback: dict = {"dir": None, "noted": False}
 
 
 def set_threads(n: int) -> None:
@@ -18,9 +37,60 @@ def set_threads(n: int) -> None:
     numba.set_num_threads(max(1, min(int(n), numba.config.NUMBA_NUM_THREADS)))
 
 
+def _no_locator(err: Exception) -> bool:
+    return "no locator available" in str(err)
+
+
+def _note(text: str) -> None:
+    if not _fallback["noted"]:
+        _fallback["noted"] = True
+        # warn_explicit without a source line: one line on stderr, still filterable
+        warnings.warn_explicit(text, CacheWarning, filename="slidespin", lineno=0,
+                               module="slidespin._jit")
+
+
+def _njit_cached(fn, options):
+    """``numba.njit(**options)(fn)`` with ``cache=True``, falling back as the module says."""
+    try:
+        return numba.njit(**options)(fn)
+    except RuntimeError as err:
+        if not _no_locator(err):
+            raise
+    # no writable cache directory: a private temporary one for this process
+    if _fallback["dir"] is None:
+        try:
+            _fallback["dir"] = tempfile.mkdtemp(prefix="slidespin-numba-")
+        except OSError:
+            _fallback["dir"] = ""
+    if _fallback["dir"]:
+        saved = _config.CACHE_DIR
+        _config.CACHE_DIR = _fallback["dir"]
+        try:
+            out = numba.njit(**options)(fn)
+        except RuntimeError as err:
+            if not _no_locator(err):
+                raise
+        else:
+            _note(
+                "numba cannot write its cache next to the package or in the home "
+                f"directory; compiled code is cached in {_fallback['dir']} for this process only"
+            )
+            return out
+        finally:
+            _config.CACHE_DIR = saved
+    _note("numba has no writable cache directory; compiling without a disk cache")
+    return numba.njit(**{**options, "cache": False})(fn)
+
+
 def jit(fn=None, **options):
-    """``numba.njit`` with ``cache=True``; use bare (``@jit``) or with options."""
+    """``numba.njit`` with ``cache=True``; use bare (``@jit``) or with options.
+
+    If numba finds no writable cache directory, a private temporary one is used (or none);
+    see the module's docstring.
+    """
     options.setdefault("cache", True)
+    if not options["cache"]:
+        return numba.njit(**options) if fn is None else numba.njit(**options)(fn)
     if fn is None:
-        return numba.njit(**options)
-    return numba.njit(**options)(fn)
+        return lambda f: _njit_cached(f, options)
+    return _njit_cached(fn, options)

@@ -34,9 +34,10 @@ class Body:
         Normal-pressure law on the patch. The mass centre G lies above the pressure
         centroid: the patch centre, or (ξc, ηc) for the linear law.
     mass : float
-        Mass m [kg], finite and > 0.
+        Mass m [kg], in [1e-12, 1e12].
     moment_of_inertia : float or None
-        I about the vertical axis through G [kg m²], finite and > 0. ``None`` means
+        I about the vertical axis through G [kg m²], with I* = I/(m a²) in [1e-8, 1e8]
+        (docs/errors.md, "Valid ranges"). ``None`` means
         I = m (a² + b²)/4, the inertia of a uniform plate of the patch's shape about its
         centre; this is the paper's I* = (1 + κ²)/4 (eq. 7). For the linear law, whose G is
         off-centre, give I explicitly if the body is not such a plate.
@@ -65,19 +66,30 @@ class Body:
                 "LinearPressure(xi_c, eta_c), BoussinesqPressure(), HertzPressure()"
             )
         self.pressure.check_patch(self.patch)
-        m = v.positive("mass", self.mass, "kg")
+        m = v.bounded("mass", self.mass, *v.MASS, "kg")
         object.__setattr__(self, "mass", m)
+        a = self.patch.a
         if self.moment_of_inertia is None:
-            inertia = m * (self.patch.a**2 + self.patch.b**2) / 4.0
+            inertia = m * (a**2 + self.patch.b**2) / 4.0
         else:
             inertia = v.positive("moment_of_inertia", self.moment_of_inertia, "kg m^2")
+            lo, hi = v.INERTIA_RATIO
+            i_star = inertia / m / a / a
+            if not lo <= i_star <= hi:
+                raise ValueError(
+                    f"moment_of_inertia = {inertia!r} kg m^2 is invalid for mass = {m!r} kg and "
+                    f"a = {a!r} m: I/(m a^2) = {i_star:.6g}; valid range: [{lo:g}, {hi:g}] "
+                    f"m a^2 = [{lo * m * a * a:.6g}, {hi * m * a * a:.6g}] kg m^2"
+                )
         object.__setattr__(self, "moment_of_inertia", inertia)
 
     @classmethod
     def from_inertia_ratio(cls, patch, pressure, mass: float, inertia_ratio: float) -> "Body":
-        """Body with I = I* m a² for a given dimensionless inertia I* (> 0)."""
-        i_star = v.positive("inertia_ratio", inertia_ratio)
-        m = v.positive("mass", mass, "kg")
+        """Body with I = I* m a² for a given dimensionless inertia I* in [1e-8, 1e8]."""
+        i_star = v.bounded("inertia_ratio", inertia_ratio, *v.INERTIA_RATIO)
+        m = v.bounded("mass", mass, *v.MASS, "kg")
+        if not isinstance(patch, Ellipse):
+            raise ValueError(f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle")
         return cls(patch, pressure, m, i_star * m * patch.a**2)
 
     @property
@@ -122,13 +134,18 @@ class State:
     Parameters
     ----------
     x, y : float
-        Position of the mass centre G [m].
+        Position of the mass centre G [m], |x|, |y| ≤ 1e15.
     phi : float
-        Body angle φ between OX and the body axis Cξ [rad].
+        Body angle φ between OX and the body axis Cξ [rad], any finite value.
     vx, vy : float
-        Velocity of G [m/s].
+        Velocity of G [m/s], |vx|, |vy| ≤ 1e8 (non-relativistic).
     omega : float
-        Spin rate φ̇ [rad/s], counter-clockwise positive.
+        Spin rate φ̇ [rad/s], counter-clockwise positive, |ω| ≤ 1e12.
+
+    Notes
+    -----
+    The bounds keep the motion representable: the distance to the stop grows like v²/(μ g),
+    and the turns like ω²; docs/errors.md ("Valid ranges") gives the reasoning.
     """
 
     x: float = 0.0
@@ -139,19 +156,24 @@ class State:
     omega: float = 0.0
 
     def __post_init__(self) -> None:
-        for name in ("x", "y", "phi", "vx", "vy", "omega"):
-            object.__setattr__(self, name, v.finite(name, getattr(self, name)))
+        limits = (("x", v.POSITION, "m"), ("y", v.POSITION, "m"), ("phi", None, "rad"),
+                  ("vx", v.SPEED, "m/s"), ("vy", v.SPEED, "m/s"), ("omega", v.SPIN, "rad/s"))
+        for name, bound, unit in limits:
+            x = v.finite(name, getattr(self, name))
+            if bound is not None:
+                x = v.symmetric(name, x, bound, unit)
+            object.__setattr__(self, name, x)
 
     @classmethod
     def from_speed(
         cls, speed: float, omega: float, theta: float = 0.0, phi: float = 0.0,
         x: float = 0.0, y: float = 0.0,
     ) -> "State":
-        """State from the paper's variables: speed v ≥ 0 [m/s] in direction ϑ, spin ω.
+        """State from the paper's variables: speed v in [0, 1e8] m/s in direction ϑ, spin ω.
 
         ``theta`` and ``phi`` are in radians (``math.radians(45)``, not 45).
         """
-        v0 = v.in_range("speed", speed, 0.0, math.inf, hi_open=True)
+        v0 = v.bounded("speed", speed, 0.0, v.SPEED, "m/s")
         th = v.finite("theta", theta)
         return cls(x, y, phi, v0 * math.cos(th), v0 * math.sin(th), omega)
 

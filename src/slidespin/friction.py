@@ -16,7 +16,7 @@ from Cξ (body): 𝔽 → R(angle) 𝔽 R(angle)ᵀ. The skew part f·J is uncha
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import InitVar, dataclass
 
 import numpy as np
 
@@ -39,19 +39,34 @@ class FrictionTensor:
     Parameters
     ----------
     fx, fy : float
-        Friction coefficients along the tensor's principal axes (dimensionless), finite and > 0.
+        Friction coefficients along the tensor's principal axes (dimensionless), in
+        [1e-6, 5].
     f : float, default 0
-        Skew coefficient (dimensionless), any finite value.
+        Skew coefficient (dimensionless), in [-5, 5].
     frame : {"plane", "body"}, default "plane"
         Whether the tensor is fixed to the plane (as in the paper) or turns with the body.
     angle : float, default 0
         Angle [rad] of the principal axes from OX (plane frame) or from the body axis Cξ
-        (body frame).
+        (body frame), any finite value.
+    angle_deg : float, optional (keyword)
+        The same angle in degrees (the ``angle_deg`` key of case files); give ``angle`` or
+        ``angle_deg``, not both. Stored as ``angle`` [rad]; ``tensor.angle_deg`` reads it
+        back in degrees.
+
+    Notes
+    -----
+    The ranges are what the wrench quadrature honours: its error target is absolute
+    (1e-13 m g in :mod:`slidespin.terminal`), so it is met only for a tensor of bounded norm
+    (up to about 10 on the thinnest valid patch, b/a = 1e-3) (measured: docs/errors.md, "Valid ranges"); coefficients below
+    1e-6 stop a body only after 1e6 times the usual distance. Dry-friction coefficients of
+    real materials lie between about 0.001 and 5.
 
     Examples
     --------
     >>> FrictionTensor(0.42, 0.54).mu
     0.12000000000000005
+    >>> round(FrictionTensor(0.3, 0.4, angle_deg=90.0).angle, 12)
+    1.570796326795
     """
 
     fx: float
@@ -59,18 +74,36 @@ class FrictionTensor:
     f: float = 0.0
     frame: str = "plane"
     angle: float = 0.0
+    angle_deg: InitVar[float | None] = None
 
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "fx", v.positive("fx", self.fx))
-        object.__setattr__(self, "fy", v.positive("fy", self.fy))
-        object.__setattr__(self, "f", v.finite("f", self.f))
+    def __post_init__(self, angle_deg: float | None = None) -> None:
+        object.__setattr__(self, "fx", v.bounded("fx", self.fx, *v.COEFFICIENT))
+        object.__setattr__(self, "fy", v.bounded("fy", self.fy, *v.COEFFICIENT))
+        f = v.finite("f", self.f)
+        object.__setattr__(self, "f", v.symmetric("f", f, v.SKEW))
         object.__setattr__(self, "frame", v.choice("frame", self.frame, FRAMES))
-        object.__setattr__(self, "angle", v.finite("angle", self.angle))
+        angle = v.finite("angle", self.angle)
+        if angle_deg is not None:
+            deg = v.finite("angle_deg", angle_deg)
+            if angle != 0.0 and angle != math.radians(deg):
+                raise ValueError(
+                    f"FrictionTensor gives both angle = {angle!r} rad and angle_deg = {deg!r}; "
+                    "valid values: one of them"
+                )
+            angle = math.radians(deg)
+        object.__setattr__(self, "angle", angle)
+
+    @classmethod
+    def from_degrees(
+        cls, fx: float, fy: float, f: float = 0.0, frame: str = "plane", angle_deg: float = 0.0
+    ) -> "FrictionTensor":
+        """The tensor with its principal axes turned by ``angle_deg`` degrees."""
+        return cls(fx, fy, f, frame, angle_deg=angle_deg)
 
     @classmethod
     def isotropic(cls, coefficient: float) -> "FrictionTensor":
-        """Isotropic Coulomb friction with the given coefficient (> 0)."""
-        c = v.positive("coefficient", coefficient)
+        """Isotropic Coulomb friction with the given coefficient (in [1e-6, 5])."""
+        c = v.bounded("coefficient", coefficient, *v.COEFFICIENT)
         return cls(c, c)
 
     @property
@@ -99,3 +132,9 @@ class FrictionTensor:
     def norm(self) -> float:
         """Spectral norm of the tensor (largest traction per unit pressure)."""
         return float(np.linalg.norm(self.matrix, 2))
+
+
+# ``angle_deg`` is an init-only argument; on an instance it reads the angle in degrees.
+FrictionTensor.angle_deg = property(  # type: ignore[assignment]
+    lambda self: math.degrees(self.angle), doc="``angle`` in degrees (read-only)."
+)

@@ -22,6 +22,20 @@ from . import _validate as v
 
 __all__ = ["Ellipse", "Circle", "Patch"]
 
+_E_MAX = 0.999999  # b/a = 1.41e-3, just inside the thinnest valid patch (b/a = 1e-3)
+
+
+def _check_aspect(a: float, b: float) -> None:
+    k = b / a
+    lo, hi = v.ASPECT
+    if not lo <= k <= hi:
+        hint = " (for b > a, swap the axes and turn the body by 90 deg)" if k > hi else ""
+        raise ValueError(
+            f"b/a = {k:.6g} (a = {a!r} m, b = {b!r} m) is invalid; valid range: "
+            f"[{lo:g}, {hi:g}]: the wrench quadrature cannot reach its error target "
+            f"beyond it{hint}"
+        )
+
 
 @dataclass(frozen=True, slots=True)
 class Ellipse:
@@ -30,9 +44,17 @@ class Ellipse:
     Parameters
     ----------
     a : float
-        Semi-axis along ξ [m], finite and > 0.
+        Semi-axis along ξ [m], in [1e-9, 1e6].
     b : float
-        Semi-axis along η [m], finite and > 0. ``b > a`` is allowed (the long axis is then η).
+        Semi-axis along η [m], in [1e-9, 1e6], with b/a in [1e-3, 30]. ``b > a`` is allowed
+        (the long axis is then η).
+
+    Notes
+    -----
+    The compiled wrench works in units of a and meets its error target (1e-13 m g, m g a)
+    for 1e-3 ≤ b/a ≤ 30 only (measured: docs/errors.md, "Valid ranges"); outside it the
+    patch is refused. A patch with b > 30 a is the same patch with the axes swapped: give
+    ``Ellipse(b, a)`` and turn the body (and a body-fixed tensor) by 90°.
 
     Examples
     --------
@@ -44,19 +66,25 @@ class Ellipse:
     b: float
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "a", v.positive("a", self.a, "m"))
-        object.__setattr__(self, "b", v.positive("b", self.b, "m"))
+        a = v.bounded("a", self.a, *v.LENGTH, "m")
+        b = v.bounded("b", self.b, *v.LENGTH, "m")
+        _check_aspect(a, b)
+        object.__setattr__(self, "a", a)
+        object.__setattr__(self, "b", b)
 
     @classmethod
     def from_eccentricity(cls, a: float, eccentricity: float) -> "Ellipse":
-        """Ellipse with semi-major axis ``a`` [m] along ξ and eccentricity ``e`` in [0, 1).
+        """Ellipse with semi-major axis ``a`` [m] along ξ and eccentricity ``e`` in [0, e_max].
+
+        e_max = 0.999999 (b/a = 1.41e-3): the thinnest patch the wrench quadrature
+        honours has b/a = 1e-3 (see :class:`Ellipse`); for thinner ones give ``a`` and ``b``.
 
         Notes
         -----
         b = κ a with κ = √(1 − e²) (paper eq. 7).
         """
-        a = v.positive("a", a, "m")
-        e = v.in_range("eccentricity", eccentricity, 0.0, 1.0, hi_open=True)
+        a = v.bounded("a", a, *v.LENGTH, "m")
+        e = v.bounded("eccentricity", eccentricity, 0.0, _E_MAX)
         return cls(a, a * math.sqrt(1.0 - e * e))
 
     @property
@@ -94,11 +122,11 @@ class Circle(Ellipse):
     Parameters
     ----------
     radius : float
-        Patch radius [m], finite and > 0.
+        Patch radius [m], in [1e-9, 1e6].
     """
 
     def __init__(self, radius: float) -> None:
-        r = v.positive("radius", radius, "m")
+        r = v.bounded("radius", radius, *v.LENGTH, "m")
         object.__setattr__(self, "a", r)
         object.__setattr__(self, "b", r)
 

@@ -100,7 +100,7 @@ class LinearPressure(_Law):
     ----------
     xi_c, eta_c : float
         Body-frame coordinates of the pressure centroid = mass centre [m], same length units
-        as the patch. The pressure stays non-negative on the patch only if
+        as the patch, finite with magnitude at most 2.5e5 m (a quarter of the largest patch). The pressure stays non-negative on the patch only if
         (ξc/a)² + (ηc/b)² ≤ 1/16; this is checked when the law is combined with a patch
         (:class:`slidespin.Body`).
 
@@ -116,8 +116,10 @@ class LinearPressure(_Law):
     name: ClassVar[str] = "linear"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "xi_c", v.finite("xi_c", self.xi_c))
-        object.__setattr__(self, "eta_c", v.finite("eta_c", self.eta_c))
+        for name in ("xi_c", "eta_c"):
+            x = v.finite(name, getattr(self, name))
+            # the core of a valid patch lies within a/4 <= 2.5e5 m of its centre
+            object.__setattr__(self, name, v.symmetric(name, x, v.LENGTH[1] / 4.0, "m"))
 
     @property
     def centroid(self) -> tuple[float, float]:

@@ -81,6 +81,34 @@ def _check_body_friction(body, friction) -> None:
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
 
 
+def _missed(par) -> str:
+    """Message of the quadrature guard: only reached by a bug, since every input is checked."""
+    return (
+        f"terminal: the wrench quadrature missed its error target {_WRENCH_TOL:g} (b/a = "
+        f"{par[_ode.P_BN]!r}, tensor [[{par[_ode.P_T00]!r}, {par[_ode.P_T01]!r}], "
+        f"[{par[_ode.P_T10]!r}, {par[_ode.P_T11]!r}]], law {int(par[_ode.P_LAW])}); every input "
+        "is inside its valid range (docs/errors.md), so this is a bug in slidespin: please "
+        "report it"
+    )
+
+
+def _check_bracket(bracket, a: float) -> tuple[float, float]:
+    """(lo, hi) of a β bracket [m], each in [1e-9 a, 1e9 a], lo < hi."""
+    lo_r, hi_r = v.RATIO
+    if not isinstance(bracket, (tuple, list, np.ndarray)) or len(bracket) != 2:
+        raise ValueError(
+            f"bracket = {v._short(bracket)} is invalid; valid values: a pair (lo, hi) of "
+            f"terminal ratios beta [m] with {lo_r:g} a <= lo < hi <= {hi_r:g} a (a = {a!r} m)"
+        )
+    lo = v.bounded("bracket[0]", bracket[0], lo_r * a, hi_r * a, "m")
+    hi = v.bounded("bracket[1]", bracket[1], lo_r * a, hi_r * a, "m")
+    if not lo < hi:
+        raise ValueError(
+            f"bracket = ({lo!r}, {hi!r}) m is invalid; valid values: lo < hi"
+        )
+    return lo, hi
+
+
 def _wrench_nat(par, phi, vx, vy, omega):
     """(Fx, Fy, M) per unit load, a = 1, for a velocity of G (vx, vy) and spin ω."""
     fx, fy, m, st = wrench_world(
@@ -88,8 +116,8 @@ def _wrench_nat(par, phi, vx, vy, omega):
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
         par[_ode.P_BODY] != 0.0, phi, vx, vy, omega, _WRENCH_TOL,
     )
-    if st != STATUS_OK:  # pragma: no cover - guard
-        raise RuntimeError("terminal: the wrench quadrature missed its error target")
+    if st != STATUS_OK or not (math.isfinite(fx) and math.isfinite(fy) and math.isfinite(m)):
+        raise RuntimeError(_missed(par))  # pragma: no cover - guard
     return fx, fy, m
 
 
@@ -111,8 +139,8 @@ def _acc_array(par, phi, u1, u2, u3):
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
         par[_ode.P_BODY] != 0.0, ph, u1, u2, u3 / k, _WRENCH_TOL,
     )
-    if (st != STATUS_OK).any():  # pragma: no cover - guard
-        raise RuntimeError("terminal: the wrench quadrature missed its error target")
+    if (st != STATUS_OK).any() or not np.all(np.isfinite(fx + fy + m)):
+        raise RuntimeError(_missed(par))  # pragma: no cover - guard
     return fx.reshape(shape), fy.reshape(shape), (m / k).reshape(shape)
 
 
@@ -162,7 +190,8 @@ def terminal_ratio(
     theta : float, default 0
         Imposed direction ϑ of the velocity of G [rad].
     bracket : (float, float), optional
-        Interval (lo, hi) of β [m], 0 < lo < hi, known to contain exactly one root; skips the
+        Interval (lo, hi) of β [m], 1e-9 a ≤ lo < hi ≤ 1e9 a, known to contain exactly one
+        root; skips the
         scan of β over 1e-5 a … 1e5 a (for repeated solves, e.g. fitting fx to Table 1).
 
     Returns
@@ -196,8 +225,8 @@ def terminal_ratio(
     h = _eq16_residual(par, body.inertia_ratio, phi, theta)
     a = body.patch.a
     if bracket is not None:
-        lo, hi = (v.positive("bracket", x, "m") / a for x in bracket)
-        if not lo < hi or h(lo) * h(hi) > 0.0:
+        lo, hi = (x / a for x in _check_bracket(bracket, a))
+        if h(lo) * h(hi) > 0.0:
             raise ValueError(
                 f"bracket = {tuple(bracket)!r} m is invalid; valid values: lo < hi with one "
                 "root of eq. 16 between them"
@@ -641,8 +670,8 @@ def _j_values(par, beta):
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
         par[_ode.P_BODY] != 0.0, np.zeros(n), beta, np.zeros(n), np.ones(n), _WRENCH_TOL,
     )
-    if (st != STATUS_OK).any():  # pragma: no cover - guard
-        raise RuntimeError("terminal: the wrench quadrature missed its error target")
+    if (st != STATUS_OK).any() or not np.all(np.isfinite(fx + fy + m)):
+        raise RuntimeError(_missed(par))  # pragma: no cover - guard
     return beta * (-m) / (-fx)
 
 
@@ -657,7 +686,7 @@ def inertia_for_ratio(pressure, friction: FrictionTensor, ratio):
         Orthotropic tensor (f = 0, angle 0) with fx ≤ fy; the terminal velocity is along the
         low-friction axis OX (ϑ* = 0).
     ratio : float or array_like
-        β/a = v/(a ω) > 0.
+        β/a = v/(a ω), in [1e-9, 1e9].
 
     Returns
     -------
@@ -665,10 +694,7 @@ def inertia_for_ratio(pressure, friction: FrictionTensor, ratio):
         J(β) = β M_Cζ(β)/F_τ(β) at ϑ = 0 (eq. 15–16 solved for I*).
     """
     _check_table2(pressure, friction)
-    arr = np.asarray(ratio, dtype=float)
-    if not np.all(np.isfinite(arr) & (arr > 0.0)):
-        bad = arr[~(np.isfinite(arr) & (arr > 0.0))].flat[0]
-        raise ValueError(f"ratio = {bad!r} is invalid; valid range: finite and > 0")
+    arr = v.real_array("ratio", ratio, *v.RATIO)
     out = _j_values(_circle_params(pressure, friction), arr).reshape(arr.shape)
     return float(out) if out.ndim == 0 else out
 
@@ -752,7 +778,8 @@ def circle_terminal_ratio(pressure, friction: FrictionTensor, inertia_ratio: flo
     """Terminal ratio k = v/(a ω) of a circular patch with inertia ratio I* (J⁻¹, MODEL §6).
 
     Returns ``inf`` for I* ≤ I₁ (pure sliding) and ``0.0`` for I* ≥ I₃ (pure spinning);
-    otherwise the root of J(k) = I*, along the low-friction axis (ϑ* = 0).
+    otherwise the root of J(k) = I*, along the low-friction axis (ϑ* = 0). ``inertia_ratio``
+    must lie in [1e-8, 1e8], the range of :class:`slidespin.Body`.
 
     Examples
     --------
@@ -761,7 +788,7 @@ def circle_terminal_ratio(pressure, friction: FrictionTensor, inertia_ratio: flo
     0.653
     """
     _check_table2(pressure, friction)
-    i_star = v.positive("inertia_ratio", inertia_ratio)
+    i_star = v.bounded("inertia_ratio", inertia_ratio, *v.INERTIA_RATIO)
     par = _circle_params(pressure, friction)
 
     def g(log_beta):
@@ -864,11 +891,11 @@ def phase_portrait(
     n : int, default 13
         Number of trajectories (1 to 200).
     speed : float, default 1
-        s = √(v₀² + k² ω₀²) [m/s], the same for every trajectory.
+        s = √(v₀² + k² ω₀²) [m/s] in [1e-12, 1e8], the same for every trajectory.
     phi, theta : float, default 0
         Initial body angle φ₀ and direction ϑ₀ of the velocity [rad].
     g : float, default 9.81
-        Gravitational acceleration [m/s²].
+        Gravitational acceleration [m/s²] in [1e-6, 1e6].
     points : int, default 300
         Points per curve (10 to 100000).
 
@@ -884,10 +911,10 @@ def phase_portrait(
     if (isinstance(points, bool) or not isinstance(points, (int, np.integer))
             or not 10 <= points <= 100_000):
         raise ValueError(f"points = {points!r} is invalid; valid range: integer in [10, 100000]")
-    s0 = v.positive("speed", speed, "m/s")
+    s0 = v.bounded("speed", speed, 1e-12, v.SPEED, "m/s")
     phi = v.finite("phi", phi)
     theta = v.finite("theta", theta)
-    g = v.positive("g", g, "m/s^2")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     k = body.radius_of_gyration
     a = body.patch.a
     par = body.kernel_params(friction)

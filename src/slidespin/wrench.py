@@ -62,16 +62,28 @@ class Wrench:
 
 
 def _check_array(name, value):
-    arr = None if isinstance(value, bool) else np.asarray(value)
-    if arr is None or arr.dtype.kind not in "fiu":
-        raise ValueError(f"{name} must be a real number or array of them, got {value!r}")
-    arr = arr.astype(float)
-    bad = ~np.isfinite(arr)
-    if bad.any():
-        raise ValueError(
-            f"{name} = {float(arr[bad].flat[0])!r} is not finite; valid range: any finite real number"
-        )
-    return arr
+    return v.real_array(name, value)
+
+
+def _direction(vx, vy, omega, a):
+    """(vx/a, vy/a, ω) scaled by their largest magnitude, per element (MODEL §2).
+
+    The wrench is homogeneous of degree 0 in (v, ω), so only this direction matters; scaling
+    first keeps every component in [−1, 1] whatever the magnitudes (1e±300 included), so
+    that nothing overflows or underflows in the kernel. Components below 1e-200 of the
+    largest one are set to 0: the wrench is Lipschitz in the direction, so this changes it
+    by far less than any quadrature target.
+    """
+    big = np.maximum(np.maximum(np.abs(vx), np.abs(vy)), np.abs(omega))
+    big = np.where(big > 0.0, big, 1.0)
+    ux, uy, uw = vx / big, vy / big, omega / big  # all in [-1, 1]
+    ux, uy = ux / a, uy / a  # a in [1e-9, 1e6]: |ux|, |uy| <= 1e9
+    big = np.maximum(np.maximum(np.abs(ux), np.abs(uy)), np.abs(uw))
+    big = np.where(big > 0.0, big, 1.0)
+    out = []
+    for x in (ux / big, uy / big, uw / big):
+        out.append(np.where(np.abs(x) < 1e-200, 0.0, x))
+    return out
 
 
 def friction_wrench(
@@ -94,15 +106,16 @@ def friction_wrench(
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).
     vx, vy : float or array_like
-        Velocity of the mass centre G in the fixed frame [m/s].
+        Velocity of the mass centre G in the fixed frame [m/s], any finite values.
     omega : float or array_like
-        Spin rate [rad/s], counter-clockwise positive.
+        Spin rate [rad/s], counter-clockwise positive, any finite values.
     phi : float or array_like, default 0
-        Body angle [rad].
+        Body angle [rad], any finite values.
     g : float, default 9.81
-        Gravitational acceleration [m/s²]; the normal load is P = m g.
+        Gravitational acceleration [m/s²] in [1e-6, 1e6]; the normal load is P = m g.
     tol : float, default 1e-12
-        Absolute error target of the quadrature, in units of m g (force) and m g a (moment).
+        Absolute error target of the quadrature, in units of m g (force) and m g a (moment),
+        in [1e-13, 1e-2] (below 1e-13 round-off defeats it on the thinnest valid patches).
 
     Returns
     -------
@@ -112,7 +125,8 @@ def friction_wrench(
     Notes
     -----
     The wrench depends only on the direction of (vx, vy, a ω): it is homogeneous of degree 0
-    (MODEL §2). At rest (v = ω = 0) static friction is undetermined and a zero wrench is
+    (MODEL §2). That direction is formed after scaling by the largest magnitude, so states
+    of any finite size (1e-300 … 1e300) give the same wrench as their unit-size copies. At rest (v = ω = 0) static friction is undetermined and a zero wrench is
     returned. Paper eq. 3–4, corrected per MODEL §7 (errata 1, 4, 7).
 
     Examples
@@ -127,8 +141,8 @@ def friction_wrench(
         raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
     if not isinstance(friction, FrictionTensor):
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
-    g = v.positive("g", g, "m/s^2")
-    tol = v.positive("tol", tol)
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    tol = v.bounded("tol", tol, *v.WRENCH_TOL)
     arrays = [_check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
     scalar = all(a.ndim == 0 for a in arrays)
     try:
@@ -145,15 +159,20 @@ def friction_wrench(
     par = body.kernel_params(friction, tol)
     from . import _ode
 
+    ux, uy, uw = (np.ascontiguousarray(x) for x in _direction(vxa, vya, oma, a))
     fx, fy, mm, st = wrench_array(
         par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0, pha, vxa / a, vya / a, oma, tol,
+        par[_ode.P_BODY] != 0.0, pha, ux, uy, uw, tol,
     )
-    if (st != STATUS_OK).any():  # pragma: no cover - not seen in tests; kept as a guard
+    bad = (st != STATUS_OK) | ~np.isfinite(fx) | ~np.isfinite(fy) | ~np.isfinite(mm)
+    if bad.any():  # pragma: no cover - not reached for valid inputs (docs/errors.md)
+        i = int(np.flatnonzero(bad)[0])
         raise RuntimeError(
-            "friction_wrench: the quadrature did not reach its error target for "
-            f"{int((st != STATUS_OK).sum())} state(s); please report this case"
+            f"friction_wrench: the quadrature missed tol = {tol:g} for {int(bad.sum())} "
+            f"state(s), the first vx = {vxa[i]!r}, vy = {vya[i]!r}, omega = {oma[i]!r}, "
+            f"phi = {pha[i]!r} (b/a = {par[_ode.P_BN]!r}, {friction!r}); every input is "
+            "inside its valid range, so this is a bug in slidespin: please report it"
         )
     load = body.mass * g
     fx = fx * load
