@@ -6,25 +6,44 @@ Timings are never asserted (they depend on the machine); only that every row is 
 from __future__ import annotations
 
 import json
+import os
 
 from slidespin.cli import main
 
+TINY = ["bench", "--quick", "--no-compile", "--naive-seconds", "1", "--batch", "20",
+        "--memory-cases", "20", "--sweep-local", "40", "--sweep-dask", "0"]
+
 
 def test_bench_smoke(tmp_path, capsys):
-    out = tmp_path / "bench.json"
-    code = main(["bench", "--quick", "--no-compile", "--naive-seconds", "1", "--batch", "20",
-                 "--memory-cases", "20", "--sweep-local", "40", "--sweep-dask", "0",
-                 "--json", str(out)])
+    code = main(TINY + ["--out", str(tmp_path / "b")])
     assert code == 0
     text = capsys.readouterr().out
     for row in ("wrench, uniform, ICR inside", "trajectory to the converged stop",
                 "speed-up vs naive", "speed-up vs semi-analytic", "sweep, all local cores"):
         assert row in text
-    data = json.loads(out.read_text())
+    data = json.loads((tmp_path / "b" / "bench.json").read_text())
     assert data["accuracy"]["wrench"]["max_abs_error"] < 1e-10
     assert data["naive"]["s_per_rhs"] > 0 and data["sweep"]["local_cases"] == 40
 
 
+def test_bench_json_is_a_flag_and_nothing_lands_in_the_working_directory(
+        tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert main(TINY + ["--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)  # stdout is JSON only
+    assert printed["sweep"]["local_cases"] == 40
+    assert os.listdir(tmp_path) == ["slidespin-out"]
+    saved = json.loads((tmp_path / "slidespin-out" / "bench.json").read_text())
+    assert saved["batch"] == printed["batch"]
+
+
 def test_bench_rejects_bad_sizes(capsys):
-    assert main(["bench", "--batch", "3", "--no-json"]) == 2
+    assert main(["bench", "--batch", "3", "--no-save"]) == 2
     assert "--batch = 3 is invalid" in capsys.readouterr().err
+
+
+def test_bench_out_must_be_a_directory(tmp_path, capsys):
+    f = tmp_path / "file"
+    f.write_text("x")
+    assert main(["bench", "--out", str(f)]) == 2
+    assert "--out" in capsys.readouterr().err and f.read_text() == "x"

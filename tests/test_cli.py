@@ -27,8 +27,9 @@ def test_demo_writes_figure_and_prints_the_stop(tmp_path):
     assert r.returncode == 0, r.stderr
     for word in ("stop time", "distance", "beta_stop", "theta_stop", "ending"):
         assert word in r.stdout
-    png = tmp_path / "slidespin-demo.png"
+    png = tmp_path / "slidespin-out" / "demo.png"  # never straight into the working directory
     assert png.stat().st_size > 20_000
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["slidespin-out"]
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 

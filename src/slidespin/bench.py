@@ -1,7 +1,8 @@
 """``slidespin bench``: how fast the compiled engine is, against the routes it replaces.
 
-Everything is measured in one run on this machine and printed as a table (and written as
-JSON with ``--json``):
+Everything is measured in one run on this machine and printed as a table (or as JSON with
+``--json``) and written to ``DIR/bench.json`` (``--out DIR``, default ``./slidespin-out``;
+``--no-save`` writes nothing):
 
 * the friction wrench from compiled code, per pressure law, ICR inside and outside the patch
   (the engine's inner call: constants and workspace reused), with its node counts;
@@ -85,9 +86,12 @@ def configure(parser) -> None:
                              "(default 100000, quick 10000; 0 to skip)")
     parser.add_argument("--no-compile", action="store_true",
                         help="skip the cold/cached compile-time subprocesses")
-    parser.add_argument("--json", metavar="OUT.json", default=None,
-                        help="where to write all figures as JSON (default slidespin-bench.json)")
-    parser.add_argument("--no-json", action="store_true", help="do not write the JSON file")
+    parser.add_argument("--json", action="store_true",
+                        help="print all figures as JSON instead of the table")
+    parser.add_argument("--out", metavar="DIR", default=None,
+                        help="directory for bench.json (default ./slidespin-out, created if "
+                        "missing)")
+    parser.add_argument("--no-save", action="store_true", help="write no file")
 
 
 def _defaults(args):
@@ -101,10 +105,16 @@ def _defaults(args):
         if val < 10:
             raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 10")
     out = None
-    if not args.no_json:
-        from .cli import check_output_path
+    if not args.no_save:
+        from .cli import DEFAULT_OUT_DIR, check_output_path
 
-        out = check_output_path(args.json or "slidespin-bench.json", "--json")
+        folder = args.out if args.out is not None else DEFAULT_OUT_DIR
+        if os.path.exists(folder) and not os.path.isdir(folder):
+            raise ValueError(f"--out = {folder!r} is a file; valid values: a directory")
+        out = check_output_path(os.path.join(folder, "bench.json"), "--out",
+                                create_parent=True)
+    elif args.out is not None:
+        raise ValueError("--out and --no-save exclude each other; give one")
     return quick, naive, batch, mem, out
 
 
@@ -841,17 +851,23 @@ def run(args) -> int:
     r["bench_seconds"] = time.perf_counter() - t0
     table = format_table(r)
     m = r["machine"]
-    print(f"slidespin bench on {m['cpu']} ({m['logical_cpus']} logical CPUs, {m['numba_threads']} "
-          f"numba threads, {m['threading_layer']} layer), Python {m['python']}, numba "
-          f"{m['numba']}, NumPy {m['numpy']}, SciPy {m['scipy']}"
-          f"{' [quick]' if quick else ''}; {r['bench_seconds']:.0f} s")
-    print(table)
+    head = (f"slidespin bench on {m['cpu']} ({m['logical_cpus']} logical CPUs, "
+            f"{m['numba_threads']} numba threads, {m['threading_layer']} layer), Python "
+            f"{m['python']}, numba {m['numba']}, NumPy {m['numpy']}, SciPy {m['scipy']}"
+            f"{' [quick]' if quick else ''}; {r['bench_seconds']:.0f} s")
     r["table"] = table
+    text = json.dumps(r, indent=2, default=float)
     if out_path:
-        with open(out_path, "w", encoding="utf-8") as fh:
-            json.dump(r, fh, indent=2, default=float)
-            fh.write("\n")
-        print(f"JSON: {out_path}")
+        from .cli import write_outputs
+
+        write_outputs([(out_path, (text + "\n").encode("utf-8"))])
+    if args.json:
+        print(text)
+    else:
+        print(head)
+        print(table)
+        if out_path:
+            print(f"JSON: {out_path}")
     return 0
 
 

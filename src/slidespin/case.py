@@ -9,6 +9,8 @@ never silently ignored. Angles are in radians unless the key ends in ``_deg``.
 from __future__ import annotations
 
 import math
+import os
+import stat
 import sys
 from dataclasses import dataclass
 
@@ -23,7 +25,18 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
-__all__ = ["Case", "load_case", "case_from_dict", "read_toml"]
+__all__ = ["Case", "load_case", "case_from_dict", "read_toml", "MAX_FILE_BYTES",
+           "MAX_NAME_CHARS", "MAX_DEPTH", "MAX_STEPS_LIMIT"]
+
+#: largest case file or sweep specification read [bytes] (real ones are about 1 kB)
+MAX_FILE_BYTES = 1_000_000
+#: longest ``name`` of a case or sweep [characters] (it is printed and drawn as a title)
+MAX_NAME_CHARS = 200
+#: deepest nesting of tables, inline tables and arrays in a case file or sweep spec
+MAX_DEPTH = 6
+#: largest ``[solver] max_steps`` (the step counter is a 64-bit integer; 10⁹ steps are hours)
+MAX_STEPS_LIMIT = 1_000_000_000
+_INT64 = 2**63 - 1
 
 _TABLES = {
     "patch": {"shape", "a", "b", "eccentricity", "radius"},
@@ -160,27 +173,106 @@ def case_from_dict(data: dict) -> Case:
     g = v.positive("[solver] g", so.get("g", 9.81), "m/s^2")
     rtol = v.in_range("[solver] rtol", so.get("rtol", 1e-10), 0.0, 1e-3, lo_open=True)
     max_steps = so.get("max_steps", 200_000)
-    if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
-        raise ValueError(f"[solver] max_steps = {max_steps!r} is invalid; valid range: integer >= 1")
-    name = data.get("name", "")
-    if not isinstance(name, str):
-        raise ValueError(f"name = {name!r} must be a string")
+    if (isinstance(max_steps, bool) or not isinstance(max_steps, int)
+            or not 1 <= max_steps <= MAX_STEPS_LIMIT):
+        raise ValueError(f"[solver] max_steps = {max_steps!r} is invalid; valid range: "
+                         f"integer >= 1 and <= {MAX_STEPS_LIMIT}")
+    name = check_name(data.get("name", ""))
     return Case(body, friction, state, g, rtol, max_steps, name)
 
 
-def read_toml(path, what: str) -> dict:
-    """Parse a TOML file; unreadable or malformed files raise a one-line ``ValueError``."""
+def check_name(name, key: str = "name") -> str:
+    """The ``name`` of a case or sweep: a string of at most :data:`MAX_NAME_CHARS` characters."""
+    if not isinstance(name, str):
+        raise ValueError(f"{key} = {_short(name)} must be a string")
+    if len(name) > MAX_NAME_CHARS:
+        raise ValueError(f"{key} is {len(name)} characters long; valid: a string of at most "
+                         f"{MAX_NAME_CHARS} characters")
+    return name
+
+
+def _short(value, n: int = 60) -> str:
+    """``repr(value)`` cut to about ``n`` characters, for messages."""
+    text = repr(value)
+    return text if len(text) <= n else text[: n - 1] + "…"
+
+
+def check_document(data, where: str = "", depth: int = 0) -> None:
+    """Refuse what no valid case file or sweep spec contains, naming the key: nesting deeper
+    than :data:`MAX_DEPTH`, and integers outside the 64-bit range (e.g. ``2**64``)."""
+    if depth > MAX_DEPTH:
+        raise ValueError(f"{where or 'the document'} is nested {depth} levels deep; valid: at "
+                         f"most {MAX_DEPTH} levels of tables and arrays")
+    if isinstance(data, dict):
+        items = ((f"{where}.{k}" if where else str(k), val) for k, val in data.items())
+    elif isinstance(data, list):
+        items = ((f"{where}[{i}]", val) for i, val in enumerate(data))
+    else:
+        if isinstance(data, int) and not isinstance(data, bool) and abs(data) > _INT64:
+            raise ValueError(f"{where} = {_short(data, 40)} does not fit a 64-bit integer; "
+                             f"valid range: [-{_INT64}, {_INT64}] (and the key's own range)")
+        return
+    for key, val in items:
+        check_document(val, key, depth + 1)
+
+
+def read_toml(path, what: str, max_bytes: int = MAX_FILE_BYTES) -> dict:
+    """Parse a TOML file; unreadable, oversized or malformed files raise a one-line
+    ``ValueError`` naming the file.
+
+    Only regular files are read (a FIFO, a device such as ``/dev/zero`` or a directory is
+    refused without reading), and at most ``max_bytes`` bytes (default
+    :data:`MAX_FILE_BYTES`): a larger file is refused. The text must be UTF-8. Nesting deeper
+    than :data:`MAX_DEPTH` and integers beyond 64 bits are refused naming the key.
+    """
+    name = str(path)
     try:
-        with open(path, "rb") as fh:
-            return tomllib.load(fh)
+        # O_NONBLOCK: opening a FIFO must not wait for a writer
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except FileNotFoundError:
-        raise ValueError(f"{what} {str(path)!r} does not exist") from None
+        raise ValueError(f"{what} {name!r} does not exist") from None
     except IsADirectoryError:
-        raise ValueError(f"{what} {str(path)!r} is a directory, not a TOML file") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ValueError(f"{what} {str(path)!r} is not valid TOML: {exc}") from None
+        raise ValueError(f"{what} {name!r} is a directory, not a TOML file") from None
     except OSError as exc:
-        raise ValueError(f"{what} {str(path)!r} cannot be read: {exc.strerror}") from None
+        raise ValueError(f"{what} {name!r} cannot be read: {exc.strerror}") from None
+    try:
+        st = os.fstat(fd)
+        if stat.S_ISDIR(st.st_mode):
+            raise ValueError(f"{what} {name!r} is a directory, not a TOML file")
+        if not stat.S_ISREG(st.st_mode):
+            raise ValueError(f"{what} {name!r} is not a regular file (a pipe, socket or "
+                             "device); valid: a TOML file")
+        if st.st_size > max_bytes:
+            raise ValueError(f"{what} {name!r} is {st.st_size} bytes; valid: at most "
+                             f"{max_bytes} bytes")
+        with os.fdopen(fd, "rb") as fh:
+            fd = None
+            raw = fh.read(max_bytes + 1)
+    except OSError as exc:
+        raise ValueError(f"{what} {name!r} cannot be read: {exc.strerror}") from None
+    finally:
+        if fd is not None:
+            os.close(fd)
+    if len(raw) > max_bytes:  # grew while being read
+        raise ValueError(f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most "
+                         f"{max_bytes} bytes")
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ValueError(f"{what} {name!r} is not UTF-8 text (byte {raw[exc.start]:#04x} at "
+                         f"offset {exc.start}); valid: a UTF-8 TOML file") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{what} {name!r} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise ValueError(f"{what} {name!r} is nested too deeply; valid: at most {MAX_DEPTH} "
+                         "levels of tables and arrays") from None
+    try:
+        check_document(data)
+    except ValueError as exc:
+        raise ValueError(f"{what} {name!r}: {exc}") from None
+    return data
 
 
 def load_case(path) -> Case:

@@ -1,15 +1,25 @@
 """Command-line interface: ``slidespin demo | simulate | sweep | sweep-read | sweep-plot |
 reproduce | bench``.
 
-Errors in the input (bad values, unknown keys, unreadable files, unwritable outputs) print one
-line naming the parameter, its value and the valid range, and exit with status 2 before any
-work starts and without writing anything. Unexpected internal errors print a short message
-asking for a report; ``--debug`` shows the traceback.
+Errors in the input (bad values, unknown keys, unreadable files, unwritable outputs, an
+unknown figure format) print one line naming the file, the parameter, its value and the valid
+range, and exit with status 2 before any work starts and without writing anything. A write
+that fails after the work (disk full, permission denied) also exits with status 2 and says
+which file; outputs are written whole or not at all. Unexpected internal errors print a short
+message asking for a report and exit with status 3; ``--debug`` shows the traceback.
+
+Exit status: 0 success; 1 the command ran but a result did not converge (a case whose status
+is ``max_steps``, ``step_too_small`` or ``non_finite``; see :mod:`slidespin.outcomes`);
+2 bad input or a failed write; 3 internal error.
+
+Files written without an explicit path go to ``./slidespin-out/`` (:data:`DEFAULT_OUT_DIR`),
+never straight into the working directory.
 """
 
 from __future__ import annotations
 
 import argparse
+import errno
 import importlib
 import json
 import math
@@ -18,7 +28,16 @@ import sys
 
 import numpy as np
 
-__all__ = ["main", "demo_case", "check_output_path"]
+__all__ = ["main", "demo_case", "check_output_path", "check_figure_path", "write_outputs",
+           "DEFAULT_OUT_DIR", "FIGURE_FORMATS"]
+
+#: where files go when the command line gives no path (created when first needed)
+DEFAULT_OUT_DIR = "slidespin-out"
+#: figure formats accepted by ``--plot`` and ``sweep-plot --out`` (the file's extension)
+FIGURE_FORMATS = ("png", "pdf", "svg", "eps", "jpg", "jpeg", "tif", "tiff")
+#: largest step in the regularised time τ of ``simulate``/``demo``: about 1000 recorded
+#: points, the same whether or not --plot or --csv is given
+CLI_MAX_STEP = 0.05
 
 # Subcommands living in other modules: each exposes ``configure(parser)`` and ``run(args)``.
 _PLUGINS = (
@@ -47,90 +66,212 @@ def demo_case():
     )
 
 
-def check_output_path(path: str, what: str) -> str:
-    """Raise ``ValueError`` unless ``path`` can be written (checked before any work)."""
+def check_output_path(path: str, what: str, *, create_parent: bool = False) -> str:
+    """Raise ``ValueError`` unless ``path`` can be written (checked before any work).
+
+    With ``create_parent``, a missing parent directory is allowed if it can be created (its
+    nearest existing ancestor is writable); it is created only when the file is written.
+    """
     path = os.fspath(path)
+    if not path:
+        raise ValueError(f"{what} = '' is invalid; valid values: a file path")
     parent = os.path.dirname(os.path.abspath(path)) or "."
     if os.path.isdir(path):
         raise ValueError(f"{what} = {path!r} is a directory; valid values: a file path")
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise ValueError(f"{what} = {path!r} exists and is not a regular file")
+    probe_dir = parent
     if not os.path.isdir(parent):
-        raise ValueError(f"{what} = {path!r}: the directory {parent!r} does not exist")
+        if not create_parent:
+            raise ValueError(f"{what} = {path!r}: the directory {parent!r} does not exist")
+        while not os.path.isdir(probe_dir):
+            up = os.path.dirname(probe_dir)
+            if up == probe_dir or (os.path.exists(probe_dir) and not os.path.isdir(probe_dir)):
+                raise ValueError(f"{what} = {path!r}: the directory {parent!r} cannot be "
+                                 "created")
+            probe_dir = up
     try:  # a real probe: permissions, read-only file systems, quotas
         import tempfile
 
-        with tempfile.NamedTemporaryFile(dir=parent, prefix=".slidespin-probe-"):
+        with tempfile.NamedTemporaryFile(dir=probe_dir, prefix=".slidespin-probe-"):
             pass
     except OSError as exc:
         raise ValueError(
-            f"{what} = {path!r}: the directory {parent!r} is not writable ({exc.strerror})"
+            f"{what} = {path!r}: the directory {probe_dir!r} is not writable ({exc.strerror})"
         ) from None
+    if os.path.exists(path) and not os.access(path, os.W_OK):
+        raise ValueError(f"{what} = {path!r} exists and is not writable")
     return path
 
 
+def check_figure_path(path: str, what: str, *, create_parent: bool = False) -> str:
+    """:func:`check_output_path` plus a known figure format, taken from the extension."""
+    path = check_output_path(path, what, create_parent=create_parent)
+    ext = os.path.splitext(path)[1].lower().lstrip(".")
+    if ext not in FIGURE_FORMATS:
+        raise ValueError(f"{what} = {path!r}: unknown figure format {ext or '(no extension)'!r}; "
+                         f"valid extensions: {', '.join('.' + f for f in FIGURE_FORMATS)}")
+    return path
+
+
+def _distinct(*pairs) -> None:
+    """Refuse two outputs that are the same file."""
+    seen = {}
+    for path, what in pairs:
+        if path:
+            key = os.path.realpath(path)
+            if key in seen:
+                raise ValueError(f"{what} = {path!r} is the same file as {seen[key]}; give "
+                                 "different paths")
+            seen[key] = what
+
+
+def _render_figure(fig, path: str) -> bytes:
+    import io
+
+    buf = io.BytesIO()
+    fmt = os.path.splitext(path)[1].lower().lstrip(".")
+    fig.savefig(buf, format=fmt, dpi=150)
+    return buf.getvalue()
+
+
+def write_outputs(files) -> None:
+    """Write ``[(path, bytes), ...]`` whole or not at all.
+
+    Each file goes to a temporary name in its directory and is renamed into place; if any
+    write fails (disk full, permission denied), the files of this call already in place are
+    removed and a one-line ``ValueError`` names the file and the reason.
+    """
+    written = []
+    try:
+        for path, data in files:
+            parent = os.path.dirname(os.path.abspath(path))
+            os.makedirs(parent, exist_ok=True)
+            tmp = os.path.join(parent, f".{os.path.basename(path)}.tmp-{os.getpid()}")
+            try:
+                with open(tmp, "wb") as fh:
+                    fh.write(data)
+                os.replace(tmp, path)
+            except BaseException:
+                try:
+                    os.unlink(tmp)
+                except OSError:
+                    pass
+                raise
+            written.append(path)
+    except OSError as exc:
+        for p in written:
+            try:
+                os.unlink(p)
+            except OSError:
+                pass
+        raise ValueError(_write_failure(exc, path)) from None
+
+
+def _write_failure(exc: OSError, path) -> str:
+    what = {
+        errno.ENOSPC: "disk full",
+        getattr(errno, "EDQUOT", -1): "disk quota exceeded",
+        errno.EACCES: "permission denied",
+        errno.EPERM: "permission denied",
+        errno.EROFS: "read-only file system",
+    }.get(exc.errno, "cannot write")
+    return f"{what} while writing {str(path)!r} ({exc.strerror}); nothing was written"
+
+
 def _print_summary(case, traj, out) -> None:
+    from .outcomes import status_message
+
     s = traj.summary()
     a = case.body.patch.a
+
+    def deg(x):
+        return f"{math.degrees(x):.6g} deg" if math.isfinite(x) else "undefined"
+
     lines = [
         f"case        : {case.name or '(unnamed)'}",
         f"status      : {s['status']}  ({traj.n_steps} steps)",
+    ]
+    if s["status"] not in ("stopped", "at_rest"):
+        try:
+            lines.append(f"              {status_message(s['status'])}")
+        except ValueError:
+            pass
+    lines += [
         f"stop time   : {traj.t_stop:.10g} s",
         f"distance    : {traj.distance:.10g} m  (G ends at x = {traj.stop_state.x:.6g} m, "
         f"y = {traj.stop_state.y:.6g} m)",
         f"rotation    : {traj.stop_state.phi - case.initial_state.phi:.10g} rad",
         f"beta_stop   : {traj.beta_stop:.10g} m  (beta/a = {traj.beta_stop / a:.10g})",
-        f"theta_stop  : {traj.theta_stop:.10g} rad  ({math.degrees(traj.theta_stop):.6g} deg)",
+        f"theta_stop  : {traj.theta_stop:.10g} rad  ({deg(traj.theta_stop)})",
         f"ending      : {traj.ending}",
     ]
     print("\n".join(lines), file=out)
 
 
+def _exit_status(status: str) -> int:
+    """0 for a converged or flagged (analytic-limit) stop, 1 for an unconverged one."""
+    from .outcomes import UNCONVERGED
+
+    return 1 if status in UNCONVERGED else 0
+
+
 def _run_case(case, args) -> int:
     from .simulate import simulate
 
-    outputs = [(args.plot, "--plot"), (args.csv, "--csv")]
-    for path, flag in outputs:
-        if path:
-            check_output_path(path, flag)
+    # every output path and format first: nothing is computed or written if one is bad
+    if args.plot:
+        check_figure_path(args.plot, "--plot", create_parent=args.plot_is_default)
+    if args.csv:
+        check_output_path(args.csv, "--csv")
+    _distinct((args.plot, "--plot"), (args.csv, "--csv"))
+    # the same recorded points whatever the outputs asked for (CSV rows never depend on --plot)
     traj = simulate(
         case.body, case.friction, case.initial_state, g=case.g, rtol=case.rtol,
-        max_steps=case.max_steps, max_step=0.05 if args.plot else None,
+        max_steps=case.max_steps, max_step=CLI_MAX_STEP,
     )
-    if args.json:
-        print(json.dumps(traj.summary(), indent=2))
-    else:
-        _print_summary(case, traj, sys.stdout)
+    files = []
     if args.csv:
-        traj.to_csv(args.csv)
-        if not args.json:
-            print(f"trajectory  : {args.csv}")
+        files.append((args.csv, traj.to_csv().encode("utf-8")))
     if args.plot:
         from .plotting import plot_trajectory
 
         fig = plot_trajectory(traj, title=case.name or None)
-        fig.savefig(args.plot, dpi=150)
-        if not args.json:
+        files.append((args.plot, _render_figure(fig, args.plot)))
+    write_outputs(files)
+    if args.json:
+        print(json.dumps(traj.summary(), indent=2))
+    else:
+        _print_summary(case, traj, sys.stdout)
+        if args.csv:
+            print(f"trajectory  : {args.csv}  ({traj.t.size} rows)")
+        if args.plot:
             print(f"figure      : {args.plot}")
-    return 0 if traj.status in ("stopped", "at_rest") else 1
+    return _exit_status(traj.status)
 
 
 def _cmd_demo(args) -> int:
+    args.plot_is_default = args.plot is None
     if args.plot is None:
-        args.plot = "slidespin-demo.png"
+        args.plot = os.path.join(DEFAULT_OUT_DIR, "demo.png")
     return _run_case(demo_case(), args)
 
 
 def _cmd_simulate(args) -> int:
     from .case import load_case
 
+    args.plot_is_default = False
     return _run_case(load_case(args.case), args)
 
 
 def _cmd_sweep(args) -> int:
-    from .sweep import connect_dask, load_spec, sweep
+    from .sweep import _check_out, connect_dask, load_spec, sweep
+    from pathlib import Path
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"--workers = {args.workers} is invalid; valid range: integer >= 1")
     spec = load_spec(args.spec)
+    _check_out(Path(args.out))
     client = None
     if args.scheduler or args.workers:
         client = connect_dask(args.scheduler, args.workers)
@@ -147,27 +288,62 @@ def _cmd_sweep(args) -> int:
         print(f"sweep       : {spec.name or args.spec}")
         print(f"cases       : {res.n_cases} in {res.n_chunks} chunks "
               f"({res.chunks_computed} computed now)")
+        if res.chunks_repaired:
+            print(f"repaired    : {res.chunks_repaired} damaged chunk files computed again")
         if res.cases_computed:
             print(f"time        : {res.seconds:.3g} s  ({res.cases_per_second:.0f} cases/s)")
+        print(f"statuses    : {_counts_text(res.status_counts)}")
+        print(f"endings     : {_counts_text(res.ending_counts)}")
         print(f"results     : {res.out}")
+    if res.n_unconverged:
+        print(f"slidespin: warning: {res.n_unconverged} of {res.n_cases} cases did not converge "
+              f"({_unconverged_text(res.status_counts)}); sweep-read and sweep-plot leave them "
+              "out unless --include-unconverged", file=sys.stderr)
+        return 1
     return 0
 
 
+def _counts_text(counts: dict) -> str:
+    return ", ".join(f"{k} {v}" for k, v in counts.items()) or "none"
+
+
+def _unconverged_text(counts: dict) -> str:
+    from .outcomes import UNCONVERGED
+
+    return _counts_text({k: v for k, v in counts.items() if k in UNCONVERGED})
+
+
+def _read_table(args):
+    """The sweep table for sweep-read/sweep-plot, and a note on the cases left out."""
+    from .sweep import read_sweep, split_unconverged
+
+    table = read_sweep(args.dir, include_unconverged=True)
+    if not table:
+        raise ValueError(f"{args.dir!r} holds no finished chunk yet")
+    if args.include_unconverged:
+        return table, {}
+    return split_unconverged(table)
+
+
 def _cmd_sweep_read(args) -> int:
-    from .sweep import read_sweep
+    import csv
+    import io
 
     check_output_path(args.csv, "--csv")
-    table = read_sweep(args.dir)
-    import csv
-
+    table, left = _read_table(args)
     names = list(table)
-    with open(args.csv, "w", newline="", encoding="utf-8") as fh:
-        w = csv.writer(fh)
-        w.writerow(names)
-        n = len(table[names[0]]) if names else 0
-        for i in range(n):
-            w.writerow([_cell(table[k][i]) for k in names])
-    print(f"{n} cases -> {args.csv}")
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(names)
+    n = len(table[names[0]]) if names else 0
+    for i in range(n):
+        w.writerow([_cell(table[k][i]) for k in names])
+    write_outputs([(args.csv, buf.getvalue().encode("utf-8"))])
+    note = ""
+    if left:
+        note = (f"; {sum(left.values())} unconverged cases left out ({_counts_text(left)}): "
+                "--include-unconverged keeps them")
+    print(f"{n} cases -> {args.csv}{note}")
     return 0
 
 
@@ -180,24 +356,48 @@ def _cell(x):
 
 
 def _cmd_sweep_plot(args) -> int:
-    from .plotting import plot_sweep
-    from .sweep import read_sweep
+    from pathlib import Path
 
-    out = check_output_path(args.out, "--out")
-    table = read_sweep(args.dir)
+    from .plotting import plot_sweep
+    from .sweep import _read_manifest
+
+    default = args.out is None
+    out = args.out or os.path.join(DEFAULT_OUT_DIR, "sweep.png")
+    out = check_figure_path(out, "--out", create_parent=default)
+    from .sweep import read_sweep, split_unconverged
+
+    table = read_sweep(args.dir, include_unconverged=True)
     if not table:
         raise ValueError(f"{args.dir!r} holds no finished chunk yet")
-    fig = plot_sweep(table, args.x, args.value, args.y)
-    fig.savefig(out, dpi=150)
+    left = {} if args.include_unconverged else split_unconverged(table)[1]
+    man = _read_manifest(Path(args.dir)) or {}
+    spec = man.get("spec", {}) if isinstance(man.get("spec"), dict) else {}
+    varied = list(spec.get("vary", {})) if isinstance(spec.get("vary", {}), dict) else None
+    fig = plot_sweep(table, args.x, args.value, args.y, varied=varied,
+                     include_unconverged=args.include_unconverged,
+                     kind=spec.get("kind", "grid"))
+    write_outputs([(out, _render_figure(fig, out))])
     print(f"figure      : {out}")
+    if left:
+        print(f"left out    : {sum(left.values())} unconverged cases ({_counts_text(left)}); "
+              "--include-unconverged keeps them")
     return 0
 
 
 def _add_outputs(p, default_plot=None) -> None:
     p.add_argument("--json", action="store_true", help="print the stop summary as JSON")
     p.add_argument("--plot", metavar="OUT.png", default=default_plot,
-                   help="write a figure of the motion")
-    p.add_argument("--csv", metavar="OUT.csv", help="write the trajectory as CSV")
+                   help="write a figure of the motion (format from the extension: "
+                   + ", ".join(FIGURE_FORMATS) + ")")
+    p.add_argument("--csv", metavar="OUT.csv",
+                   help="write the trajectory as CSV (about 1000 rows; the same with or "
+                   "without --plot)")
+
+
+def _add_include(p) -> None:
+    p.add_argument("--include-unconverged", action="store_true",
+                   help="keep the cases that did not converge (status max_steps, "
+                   "step_too_small, non_finite: values as reached); left out by default")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -225,7 +425,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("demo", help="simulate the demo case, print the stop, draw a figure")
     _add_outputs(p)
     p.set_defaults(func=_cmd_demo)
-    p.epilog = "The figure goes to slidespin-demo.png unless --plot says otherwise."
+    p.epilog = (f"The figure goes to {DEFAULT_OUT_DIR}/demo.png unless --plot says otherwise. "
+                "Exit status: 0 stopped, 1 not converged, 2 bad input, 3 internal error.")
 
     p = sub.add_parser("simulate", help="simulate a case described in a TOML file")
     p.add_argument("case", metavar="CASE.toml", help="case file (see examples/)")
@@ -242,19 +443,28 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--resume", action="store_true", help="finish an interrupted sweep")
     p.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p.set_defaults(func=_cmd_sweep)
+    p.epilog = ("The summary counts the cases per status and per ending (also in "
+                "DIR/manifest.json). Exit status 1 if some cases did not converge "
+                "(max_steps, step_too_small, non_finite), 2 on bad input, a busy directory "
+                "(DIR/.lock) or a failed write (the sweep can then be finished with --resume).")
 
     p = sub.add_parser("sweep-read", help="gather a sweep's results into one CSV table")
     p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--csv", required=True, metavar="OUT.csv")
+    _add_include(p)
     p.set_defaults(func=_cmd_sweep_read)
 
     p = sub.add_parser("sweep-plot", help="heat map or line plot of a sweep result")
     p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--x", required=True, help="input column for the x axis, e.g. fx")
     p.add_argument("--y", help="input column for the y axis (heat map), e.g. I_star")
-    p.add_argument("--value", default="beta_stop", help="result column shown (default beta_stop)")
-    p.add_argument("--out", default="sweep.png", metavar="OUT.png",
-                   help="figure file (default sweep.png in the current directory)")
+    p.add_argument("--value", default="beta_stop",
+                   help="result column shown (default beta_stop); ending and status are drawn "
+                   "as categories")
+    p.add_argument("--out", default=None, metavar="OUT.png",
+                   help=f"figure file (default {DEFAULT_OUT_DIR}/sweep.png; format from the "
+                   "extension)")
+    _add_include(p)
     p.set_defaults(func=_cmd_sweep_plot)
 
     for name, module, help_text in _PLUGINS:
@@ -284,7 +494,13 @@ def main(argv=None) -> int:
     except ValueError as exc:
         if debug:
             raise
-        print(f"slidespin: error: {exc}", file=sys.stderr)
+        print(f"slidespin: error: {_one_line(str(exc))}", file=sys.stderr)
+        return 2
+    except OSError as exc:  # a file operation outside the checked paths (disk full, ...)
+        if debug:
+            raise
+        where = f" ({str(exc.filename)!r})" if exc.filename else ""
+        print(f"slidespin: error: {exc.strerror or exc}{where}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:  # pragma: no cover
         print("slidespin: interrupted", file=sys.stderr)
@@ -299,6 +515,11 @@ def main(argv=None) -> int:
             file=sys.stderr,
         )
         return 3
+
+
+def _one_line(text: str) -> str:
+    """Messages are one line (a TOML parser may quote a line break)."""
+    return " ".join(text.split("\n"))
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -10,7 +10,14 @@ import math
 
 import numpy as np
 
-__all__ = ["plot_trajectory", "outline_world", "draw_path"]
+__all__ = ["plot_trajectory", "outline_world", "draw_path", "draw_beta", "draw_angle",
+           "plot_sweep", "axis_label", "BETA_LIMIT", "ANGLE_NOISE"]
+
+#: |β/a| beyond which β/a is not drawn (the centre of rotation is more than 10 semi-axes
+#: away: the motion is nearly pure sliding, and β/a → ±∞ where ω changes sign)
+BETA_LIMIT = 10.0
+#: a direction that varies by less than this [rad] is drawn as constant (round-off, 1e-15)
+ANGLE_NOISE = 1e-9
 
 
 def _plt():
@@ -100,19 +107,11 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
 
     t = traj.t
     a = traj.body.patch.a
-    beta = np.clip(traj.beta / a, -1e3, 1e3)
-    ax_beta.plot(t, beta, color="C0")
-    if math.isfinite(traj.beta_stop):
-        ax_beta.axhline(traj.beta_stop / a, color="0.5", lw=0.8, ls="--",
-                        label=f"β*/a = {traj.beta_stop / a:.4f}")
-        ax_beta.legend(fontsize=8, frameon=False)
+    draw_beta(ax_beta, t, traj.beta / a, traj.beta_stop / a)
     ax_beta.set_ylabel("β/a = v/(aω)")
     ax_beta.set_title("distance to the centre of rotation", fontsize=10)
 
-    ax_theta.plot(t, traj.theta, color="C1")
-    ax_theta.axhline(traj.theta_stop, color="0.5", lw=0.8, ls="--",
-                     label=f"ϑ* = {traj.theta_stop:.4f} rad")
-    ax_theta.legend(fontsize=8, frameon=False)
+    draw_angle(ax_theta, t, traj.theta, traj.theta_stop, "ϑ*")
     ax_theta.set_ylabel("ϑ [rad]")
     ax_theta.set_title("direction of the velocity of G", fontsize=10)
 
@@ -132,77 +131,354 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     return fig
 
 
+def draw_beta(ax, t, ratio, ratio_stop, limit: float = BETA_LIMIT):
+    """β/a against t, without the excursions to ±∞ where ω changes sign.
+
+    Points with |β/a| > ``limit`` are not drawn (the line is broken there, not joined
+    across ±∞); the axis spans the points drawn and the terminal value, and a note says
+    that parts are off the scale.
+    """
+    ratio = np.asarray(ratio, dtype=float)
+    shown = np.where(np.isfinite(ratio) & (np.abs(ratio) <= limit), ratio, np.nan)
+    ax.plot(t, shown, color="C0")
+    span = [v for v in (np.nanmin(shown) if np.isfinite(shown).any() else np.nan,
+                        np.nanmax(shown) if np.isfinite(shown).any() else np.nan)
+            if math.isfinite(v)]
+    if math.isfinite(ratio_stop):
+        ax.axhline(ratio_stop, color="0.5", lw=0.8, ls="--", label=f"β*/a = {ratio_stop:.4f}")
+        if abs(ratio_stop) <= limit:
+            span.append(ratio_stop)
+    elif ratio_stop == math.inf:
+        ax.plot([], [], " ", label="β* = ∞ (pure sliding)")
+    if span:
+        lo, hi = min(span), max(span)
+        pad = max(0.05 * (hi - lo), 0.02 * max(abs(lo), abs(hi)), 0.05)
+        ax.set_ylim(lo - pad, hi + pad)
+    with np.errstate(invalid="ignore"):
+        off = ~np.isnan(ratio) & ~(np.abs(ratio) <= limit)
+    if off.any():
+        ax.text(0.98, 0.02, f"|β/a| > {limit:g} off the scale", transform=ax.transAxes,
+                ha="right", va="bottom", fontsize=7, color="0.4")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8, frameon=False)
+    return ax
+
+
+def draw_angle(ax, t, angle, angle_stop, symbol: str = "ϑ*", noise: float = ANGLE_NOISE):
+    """An angle against t, unwrapped (no jumps of 2π); a constant one is drawn as such.
+
+    If the angle varies by less than ``noise`` [rad] (round-off of a direction that does not
+    change, ~1e-15), the axis is centred on it with a ±0.1 rad span instead of magnifying the
+    noise, and the legend says it is constant.
+    """
+    angle = np.asarray(angle, dtype=float)
+    ok = np.isfinite(angle)
+    unwrapped = angle.copy()
+    if ok.any():
+        unwrapped[ok] = np.unwrap(angle[ok])
+    ax.plot(t, unwrapped, color="C1")
+    stop = angle_stop
+    if math.isfinite(angle_stop) and ok.any():
+        last = unwrapped[ok][-1]  # the same direction, on the unwrapped branch
+        stop = angle_stop + 2 * math.pi * round((last - angle_stop) / (2 * math.pi))
+    vals = unwrapped[ok]
+    if vals.size and np.ptp(vals) < noise:
+        centre = float(np.mean(vals)) + 0.0
+        ax.set_ylim(centre - 0.1, centre + 0.1)
+        ax.plot([], [], " ", label=f"constant: {centre:.4f} rad")
+    if math.isfinite(stop):
+        ax.axhline(stop, color="0.5", lw=0.8, ls="--", label=f"{symbol} = {angle_stop:.4f} rad")
+    elif ok.any():
+        ax.plot([], [], " ", label=f"{symbol} undefined (no limiting direction)")
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8, frameon=False)
+    return ax
+
+
 _LABELS = {
-    "a": "a [m]", "b": "b [m]", "fx": "f_x", "fy": "f_y", "f": "f (skew)", "mu": "μ = f_y − f_x",
-    "I_star": "I* = I/(m a²)", "moment_of_inertia": "I [kg m²]", "mass": "m [kg]",
-    "angle": "tensor angle [rad]", "v0": "v₀ [m/s]", "omega0": "ω₀ [rad/s]",
-    "theta0": "ϑ₀ [rad]", "phi0": "φ₀ [rad]", "t_stop": "stop time [s]",
-    "beta_stop": "β* [m]", "theta_stop": "ϑ* [rad]", "phi_stop": "φ at the stop [rad]",
-    "x_stop": "x at the stop [m]", "aspect": "b/a", "e": "eccentricity", "y_stop": "y at the stop [m]",
-    "path_length": "distance travelled [m]", "n_steps": "integrator steps", "g": "g [m/s²]",
+    "a": "$a$ [m]", "b": "$b$ [m]", "fx": "$f_x$", "fy": "$f_y$", "f": "$f$ (skew)",
+    "mu": r"$\mu = f_y - f_x$", "I_star": r"$I^* = I/(m a^2)$",
+    "moment_of_inertia": "$I$ [kg m²]", "mass": "$m$ [kg]", "angle": "tensor angle [rad]",
+    "v0": "$v_0$ [m/s]", "omega0": r"$\omega_0$ [rad/s]", "theta0": r"$\vartheta_0$ [rad]",
+    "phi0": r"$\varphi_0$ [rad]", "x0": "$x_0$ [m]", "y0": "$y_0$ [m]",
+    "vx0": "$v_{x0}$ [m/s]", "vy0": "$v_{y0}$ [m/s]", "xi_c": r"$\xi_c$ [m]",
+    "eta_c": r"$\eta_c$ [m]", "t_stop": "stop time [s]", "beta_stop": r"$\beta^*$ [m]",
+    "theta_stop": r"$\vartheta^*$ [rad]", "phi_stop": r"$\varphi$ at the stop [rad]",
+    "x_stop": "$x$ at the stop [m]", "y_stop": "$y$ at the stop [m]", "aspect": "$b/a$",
+    "e": "eccentricity", "path_length": "distance travelled [m]",
+    "n_steps": "integrator steps", "g": "$g$ [m/s²]", "case_id": "case number",
+    "law": "pressure law", "frame": "tensor frame", "ending": "ending", "status": "status",
+}
+#: categorical result columns, drawn with one colour per name
+_CATEGORIES = {
+    "ending": ("mixed", "pure_sliding", "pure_spinning", "spiral", "at_rest"),
+    "status": ("stopped", "at_rest", "marginal", "saddle", "max_steps", "step_too_small",
+               "non_finite"),
 }
 
 
 def axis_label(name: str) -> str:
-    """Readable axis label with units for a sweep column."""
-    return _LABELS.get(name, name)
+    """Readable axis label with units for a sweep column (no raw underscores)."""
+    return _LABELS.get(name, name.replace("_", " "))
 
 
-def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str | None = None):
-    """Heat map of ``value`` over (``x``, ``y``), or a line plot of ``value`` against ``x``.
+def _categorical(values) -> bool:
+    return np.asarray(values).dtype.kind in "USO"
+
+
+def _codes(name, values):
+    """Category codes of a string column and the category names (known order first)."""
+    vals = np.asarray(values).astype(str)
+    known = _CATEGORIES.get(name, ())
+    names = [c for c in known if c in set(vals.tolist())]
+    names += sorted(set(vals.tolist()) - set(names))
+    lookup = {c: i for i, c in enumerate(names)}
+    return np.array([lookup[c] for c in vals], dtype=float), names
+
+
+def _numeric(table, name):
+    """A column as floats (codes for strings) and its category names (None if numeric)."""
+    col = np.asarray(table[name])
+    if _categorical(col):
+        return _codes(name, col)
+    if col.dtype.kind not in "fiub":
+        raise ValueError(f"column {name!r} has values of type {col.dtype}; valid: numbers or "
+                         "names")
+    return col.astype(float), None
+
+
+def _fmt(x) -> str:
+    return f"{x:.6g}" if isinstance(x, (float, np.floating)) else str(x)
+
+
+def _constant_value(table, name):
+    col = np.asarray(table[name])
+    u = np.unique(col.astype(str) if _categorical(col) else col)
+    return u[0] if u.size == 1 else None
+
+
+def _independent_axes(table, x, varied):
+    """Varied parameters besides ``x`` that ``x`` does not determine (other sweep axes)."""
+    names = varied if varied is not None else []
+    out = []
+    xs = np.asarray(table[x]).astype(str)
+    for k in names:
+        if k == x or k not in table:
+            continue
+        ks = np.asarray(table[k]).astype(str)
+        if np.unique(ks).size < 2:
+            continue
+        pairs = np.unique(np.char.add(np.char.add(xs, "|"), ks))
+        if pairs.size > np.unique(xs).size:
+            out.append(k)
+    return out
+
+
+def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str | None = None,
+               *, include_unconverged: bool = False, varied=None, kind: str | None = None,
+               left_out=None):
+    """Heat map of ``value`` over (``x``, ``y``), or ``value`` against ``x``.
 
     Parameters
     ----------
     table : dict
-        Column name → array, as returned by :func:`slidespin.sweep.read_sweep`.
+        Column name → array, as returned by :func:`slidespin.sweep.read_sweep` (with
+        ``include_unconverged=True``: this function leaves those cases out itself, and marks
+        where they were).
     x, y : str
-        Input columns for the axes (``y`` optional).
+        Columns for the axes (``y`` optional). Both must vary in the sweep: a fixed parameter
+        is refused with a message naming its value.
     value : str
-        Result column shown (colour or ordinate). Infinite values (pure-sliding β*) are
-        left blank.
+        Column shown (colour or ordinate). Name columns (``ending``, ``status``, ``law``) are
+        drawn as categories, one colour per name (the most frequent name per heat-map cell).
+        Non-finite values (β* = ∞ of pure sliding, undefined ϑ*) are left blank.
+    include_unconverged : bool, default False
+        Keep the cases whose status is in :data:`slidespin.outcomes.UNCONVERGED`; by default
+        they are left out and their cells (or positions on the x axis) are marked ✕.
+        Cells or points with a flagged status (marginal, saddle) are marked ○.
+    varied : list of str, optional
+        The sweep's varied parameters (from its manifest). Without ``y``, a grid sweep with
+        one other axis draws one line per value of that axis (at most 12); with more axes
+        it is refused (give ``y``). A random sweep is drawn as points, never joined.
+    kind : {"grid", "random"}, optional
+        The sweep's kind (from its manifest); by default guessed from the data.
+    left_out : ignored
+        Kept for callers of an earlier version.
 
     Returns
     -------
     matplotlib.figure.Figure
     """
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    from .outcomes import FLAGGED, UNCONVERGED
+
     plt = _plt()
     for name in (x, value) + ((y,) if y else ()):
         if name not in table:
             raise ValueError(f"column {name!r} is not in the sweep; valid: {', '.join(table)}")
-    xs = np.asarray(table[x], dtype=float)
-    vs = np.asarray(table[value], dtype=float)
-    fig, ax = plt.subplots(figsize=(6.4, 4.8), layout="constrained")
+    if not table or np.asarray(table[x]).size == 0:
+        raise ValueError("the sweep table is empty")
+    varied = list(varied) if varied is not None else None
+    for flag, name in (("--x", x), ("--y", y)):
+        if name is None:
+            continue
+        const = _constant_value(table, name)
+        if const is not None:
+            hint = f"; varied: {', '.join(varied)}" if varied else ""
+            raise ValueError(f"{flag} {name} is fixed at {_fmt(const)} in this sweep: nothing "
+                             f"to plot against{hint}")
+    if y is not None and y == x:
+        raise ValueError(f"--x and --y are both {x!r}; give two different columns")
+
+    status = np.asarray(table["status"]).astype(str) if "status" in table else None
+    n_all = np.asarray(table[x]).size
+    bad = np.zeros(n_all, bool) if status is None or include_unconverged else np.isin(
+        status, sorted(UNCONVERGED))
+    flagged = np.zeros(n_all, bool) if status is None else np.isin(status, sorted(FLAGGED))
+    keep = ~bad
+
+    xs_all, xcats = _numeric(table, x)
+    vs_all, vcats = _numeric(table, value)
+    xs, vs = xs_all[keep], vs_all[keep]
     finite = np.isfinite(vs)
+    fig, ax = plt.subplots(figsize=(6.4, 4.8), layout="constrained")
+    cmap_cat = None
+    if vcats is not None:
+        from matplotlib.colors import BoundaryNorm, ListedColormap
+
+        base = plt.get_cmap("tab10")
+        cmap_cat = ListedColormap([base(i % 10) for i in range(len(vcats))])
+        norm_cat = BoundaryNorm(np.arange(len(vcats) + 1) - 0.5, len(vcats))
+    handles = []
+
     if y is None:
-        order = np.argsort(xs, kind="stable")
-        ax.plot(xs[order][finite[order]], vs[order][finite[order]], "o-", ms=3, lw=1.2)
+        if kind is None:
+            kind = "grid"
+        others = _independent_axes(table, x, varied) if varied is not None else []
+        if kind == "random":
+            ax.plot(xs[finite], vs[finite], "o", ms=2.5, alpha=0.6, lw=0)
+            others_txt = ", ".join(axis_label(k) for k in (varied or []) if k != x)
+            if not title:
+                title = ("each dot one case" + (f"; also varied: {others_txt}" if others_txt
+                                                else ""))
+        elif len(others) > 1 or (others and np.unique(
+                np.asarray(table[others[0]]).astype(str)).size > 12):
+            raise ValueError(
+                f"the sweep varies {', '.join([x] + others)}: a line against --x {x} alone "
+                f"would join cases of different {', '.join(others)}; give --y {others[0]} "
+                "for a heat map"
+            )
+        elif others:
+            k = others[0]
+            kcol = np.asarray(table[k])[keep]
+            kvals = np.unique(kcol)
+            colors = plt.get_cmap("viridis")(np.linspace(0.0, 0.9, kvals.size))
+            for c, kv in zip(colors, kvals):
+                sel = (kcol == kv) & finite
+                order = np.argsort(xs[sel], kind="stable")
+                style = "o" if vcats is not None else "o-"
+                ax.plot(xs[sel][order], vs[sel][order], style, ms=3, lw=1.2, color=c,
+                        label=f"{axis_label(k)} = {_fmt(kv)}")
+            ax.legend(fontsize=7, frameon=False, loc="best")
+        else:
+            order = np.argsort(xs, kind="stable")
+            style = "o" if vcats is not None else "o-"
+            ax.plot(xs[order][finite[order]], vs[order][finite[order]], style, ms=3, lw=1.2)
+        if flagged[keep].any():
+            fl = flagged[keep] & finite
+            ax.plot(xs[fl], vs[fl], "o", ms=8, mfc="none", mec="C3", mew=0.9)
+        if bad.any():
+            ax.plot(xs_all[bad], np.full(bad.sum(), 0.02), "x", color="C3", ms=6,
+                    transform=ax.get_xaxis_transform(), clip_on=False)
+        if vcats is not None:
+            ax.set_yticks(range(len(vcats)), [c.replace("_", " ") for c in vcats])
+            ax.set_ylim(-0.5, len(vcats) - 0.5)
         ax.set_ylabel(axis_label(value))
         ax.grid(alpha=0.3)
     else:
-        ys = np.asarray(table[y], dtype=float)
-        ux, uy = np.unique(xs), np.unique(ys)
-        if ux.size > 1 and uy.size > 1 and ux.size * uy.size <= xs.size:
-            # a grid: average the finite values falling in each (x, y) cell
+        ys_all, ycats = _numeric(table, y)
+        ys = ys_all[keep]
+        ux, uy = np.unique(xs_all), np.unique(ys_all)
+        if ux.size > 1 and uy.size > 1 and ux.size * uy.size <= n_all:
+            # a grid: average the finite values falling in each (x, y) cell (for names: the
+            # most frequent one)
             ix, iy = np.searchsorted(ux, xs), np.searchsorted(uy, ys)
-            total = np.zeros((uy.size, ux.size))
-            count = np.zeros((uy.size, ux.size))
-            np.add.at(total, (iy[finite], ix[finite]), vs[finite])
-            np.add.at(count, (iy[finite], ix[finite]), 1.0)
-            with np.errstate(invalid="ignore"):
-                grid = total / count
-            mesh = ax.pcolormesh(ux, uy, grid, shading="nearest", cmap="viridis")
-            per_cell = xs.size // (ux.size * uy.size)
+            if vcats is None:
+                total = np.zeros((uy.size, ux.size))
+                count = np.zeros((uy.size, ux.size))
+                np.add.at(total, (iy[finite], ix[finite]), vs[finite])
+                np.add.at(count, (iy[finite], ix[finite]), 1.0)
+                with np.errstate(invalid="ignore"):
+                    grid = total / count
+                mesh = ax.pcolormesh(ux, uy, grid, shading="nearest", cmap="viridis")
+            else:
+                votes = np.zeros((uy.size, ux.size, len(vcats)))
+                np.add.at(votes, (iy, ix, vs.astype(int)), 1.0)
+                grid = np.where(votes.sum(axis=2) > 0, votes.argmax(axis=2), np.nan)
+                mesh = ax.pcolormesh(ux, uy, grid, shading="nearest", cmap=cmap_cat,
+                                     norm=norm_cat)
+            per_cell = n_all // (ux.size * uy.size)
             if per_cell > 1 and not title:
-                title = f"{axis_label(value)}: mean of {per_cell} cases per cell"
+                what = "most frequent" if vcats is not None else "mean"
+                title = f"{axis_label(value)}: {what} of {per_cell} cases per cell"
+            cell_bad = np.zeros((uy.size, ux.size), bool)
+            cell_bad[np.searchsorted(uy, ys_all[bad]), np.searchsorted(ux, xs_all[bad])] = True
+            cell_flag = np.zeros((uy.size, ux.size), bool)
+            fl = flagged & keep
+            cell_flag[np.searchsorted(uy, ys_all[fl]), np.searchsorted(ux, xs_all[fl])] = True
+            by, bx = np.nonzero(cell_bad)
+            fy_, fx_ = np.nonzero(cell_flag & ~cell_bad)
+            blank = ~np.isfinite(grid) & ~cell_bad
         else:
-            mesh = ax.scatter(xs[finite], ys[finite], c=vs[finite], s=12, cmap="viridis")
-        fig.colorbar(mesh, ax=ax, label=axis_label(value))
+            if vcats is None:
+                mesh = ax.scatter(xs[finite], ys[finite], c=vs[finite], s=12, cmap="viridis")
+            else:
+                mesh = ax.scatter(xs, ys, c=vs, s=12, cmap=cmap_cat, norm=norm_cat)
+            bx, by = xs_all[bad], ys_all[bad]
+            fl = flagged & keep
+            fx_, fy_ = xs_all[fl], ys_all[fl]
+            ux = uy = None
+            blank = np.array([not finite.all()])
+        if ux is not None:
+            bx, by = ux[bx], uy[by]
+            fx_, fy_ = ux[fx_], uy[fy_]
+        if len(bx):
+            ax.plot(bx, by, "x", color="k", ms=5, mew=1.0, lw=0)
+        if len(fx_):
+            ax.plot(fx_, fy_, "o", ms=5, mfc="none", mec="w", mew=1.0, lw=0)
+        if vcats is None:
+            fig.colorbar(mesh, ax=ax, label=axis_label(value))
+        else:
+            cb = fig.colorbar(mesh, ax=ax, label=axis_label(value),
+                              ticks=np.arange(len(vcats)))
+            cb.ax.set_yticklabels([c.replace("_", " ") for c in vcats])
+        if ycats is not None:
+            ax.set_yticks(range(len(ycats)), ycats)
         ax.set_ylabel(axis_label(y))
-        if not finite.all():
-            fig.text(0.01, 0.005, f"blank cells: {axis_label(value)} not finite "
-                     "(β* = ∞: pure sliding; NaN: no terminal direction, a spiral stop)",
-                     fontsize=7, color="0.3", va="bottom")
+        if blank.any():
+            handles.append(Patch(facecolor="white", edgecolor="0.6",
+                                 label=f"blank: {axis_label(value)} not finite (β* = ∞: pure "
+                                 "sliding; no ϑ*: spiral or pure spinning)"))
+    if xcats is not None:
+        ax.set_xticks(range(len(xcats)), xcats)
+    if bad.any():
+        counts = {k: int(c) for k, c in zip(*np.unique(status[bad], return_counts=True))}
+        handles.append(Line2D([], [], ls="none", marker="x", color="k" if y else "C3",
+                              label=f"left out: {int(bad.sum())} unconverged cases ("
+                              + ", ".join(f"{k} {c}" for k, c in counts.items())
+                              + "); --include-unconverged keeps them"))
+    if flagged[keep].any():
+        counts = {k: int(c) for k, c in zip(*np.unique(status[flagged & keep],
+                                                        return_counts=True))}
+        handles.append(Line2D([], [], ls="none", marker="o", mfc="none",
+                              mec="0.3" if y else "C3",
+                              label="flagged (analytic limit reported): "
+                              + ", ".join(f"{k} {c}" for k, c in counts.items())))
     ax.set_xlabel(axis_label(x))
+    if handles:  # below the axes, outside them: the layout makes room (no overlap)
+        fig.legend(handles=handles, loc="outside lower left", fontsize=7, frameon=False)
     if title:
         ax.set_title(title, fontsize=10)
     return fig

@@ -48,11 +48,13 @@ import numpy as np
 
 from . import _validate as v
 from ._cases import validated_columns
+from .case import check_document, check_name
 from .batch import simulate_cases
 from .pressure import LAW_NAMES
 
-__all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "compute_chunk", "compute_chunks",
-           "connect_dask", "PARAMETERS", "SweepError", "SweepResult"]
+__all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "split_unconverged",
+           "count_outcomes", "compute_chunk", "compute_chunks", "connect_dask", "PARAMETERS",
+           "SweepError", "SweepResult", "MAX_CASES", "MAX_AXIS", "MAX_CHUNK"]
 
 PARAMETERS = {
     "a": None, "b": None, "e": None, "aspect": None, "law": "uniform", "xi_c": 0.0,
@@ -70,6 +72,12 @@ RESULT_COLUMNS = (
 MANIFEST = "manifest.json"
 #: smallest number of cases per task sent to an executor (Dask or concurrent.futures)
 MIN_TASK_CASES = 1000
+#: most cases in one sweep (they are all validated before work starts: about 1 µs each)
+MAX_CASES = 10_000_000
+#: most values on one grid axis (``num`` or a list) or in one list to pick from
+MAX_AXIS = 1_000_000
+#: largest ``chunk_size`` (one chunk is held in memory and written as one file)
+MAX_CHUNK = 1_000_000
 
 
 class SweepError(ValueError):
@@ -129,53 +137,92 @@ class SweepSpec:
                     cols[k] = np.asarray(ax)[s]
         else:
             rnd = self.data["random"]
-            # one independent stream per parameter, drawn for all cases: reproducible for any
-            # chunk, whatever the order chunks are computed in
+            # one independent stream per parameter: case i gets the i-th draw of its stream,
+            # whatever the chunking and the order chunks are computed in. A uniform draw takes
+            # exactly one 64-bit word, so the stream is advanced to ``start``; picks from a
+            # list may take more, so their stream is drawn from its beginning (cheap).
             for j, (k, spec) in enumerate(vary.items()):
                 rng = np.random.default_rng([int(rnd.get("seed", 0)), j])
-                allv = _random_values(k, spec, rng, self.n_cases)
-                cols[k] = allv[start:stop]
+                if isinstance(spec, list):
+                    cols[k] = _random_values(k, spec, rng, stop)[start:stop]
+                else:
+                    rng.bit_generator.advance(start)
+                    cols[k] = _random_values(k, spec, rng, stop - start)
         for k, val in fixed.items():
             cols[k] = np.full(idx.size, val, dtype=object if isinstance(val, str) else float)
         cols["case_id"] = idx
         return cols
 
 
+def _flag(where, spec):
+    log = spec.get("log", False)
+    if not isinstance(log, bool):
+        raise SweepError(f"{where}.log = {log!r} is invalid; valid values: true, false")
+    return log
+
+
+def _value_list(where, name, spec):
+    if not spec:
+        raise SweepError(f"{where} is an empty list; valid: 1 to {MAX_AXIS} values")
+    if len(spec) > MAX_AXIS:
+        raise SweepError(f"{where} has {len(spec)} values; valid: 1 to {MAX_AXIS} values")
+    vals = [_check_value(f"{where}[{i}]", x, name) for i, x in enumerate(spec)]
+    if len({type(x) for x in vals}) > 1:
+        raise SweepError(f"{where} mixes strings and numbers; valid: values of one kind")
+    return vals
+
+
 def _grid_values(name, spec):
+    where = f"[vary] {name}"
     if isinstance(spec, list):
-        if not spec:
-            raise SweepError(f"[vary] {name} is an empty list")
-        return [_check_value(name, x) for x in spec]
+        return _value_list(where, name, spec)
     if isinstance(spec, dict):
-        _only(spec, {"start", "stop", "num", "log"}, f"[vary] {name}")
+        _only(spec, {"start", "stop", "num", "log"}, where)
         num = spec.get("num")
-        if isinstance(num, bool) or not isinstance(num, int) or num < 1:
-            raise SweepError(f"[vary] {name}.num = {num!r} is invalid; valid range: integer >= 1")
-        lo = v.finite(f"[vary] {name}.start", spec.get("start"))
-        hi = v.finite(f"[vary] {name}.stop", spec.get("stop"))
-        if spec.get("log", False):
+        if isinstance(num, bool) or not isinstance(num, int) or not 1 <= num <= MAX_AXIS:
+            raise SweepError(f"{where}.num = {num!r} is invalid; valid range: integer >= 1 "
+                             f"and <= {MAX_AXIS}")
+        lo = v.finite(f"{where}.start", spec.get("start"))
+        hi = v.finite(f"{where}.stop", spec.get("stop"))
+        if _flag(where, spec):
             if lo <= 0 or hi <= 0:
-                raise SweepError(f"[vary] {name}: log spacing needs start, stop > 0")
+                raise SweepError(f"{where}: log spacing needs start > 0 and stop > 0, got "
+                                 f"start = {lo!r}, stop = {hi!r}")
             vals = np.geomspace(lo, hi, num)
         else:
-            vals = np.linspace(lo, hi, num)
+            with np.errstate(over="ignore", invalid="ignore"):
+                vals = np.linspace(lo, hi, num)
+            if not np.isfinite(vals).all():
+                raise SweepError(f"{where}: stop - start = {hi!r} - {lo!r} overflows; valid: "
+                                 "a finite difference")
         return [_check_value(name, float(x)) for x in vals]
-    raise SweepError(f"[vary] {name} = {spec!r}: give a list of values or "
+    raise SweepError(f"{where} = {spec!r}: give a list of values or "
                      "{start, stop, num[, log]}")
 
 
 def _random_values(name, spec, rng, n):
+    where = f"[vary] {name}"
     if isinstance(spec, list):
-        vals = [_check_value(name, x) for x in spec]
+        vals = _value_list(where, name, spec)
         pick = rng.integers(0, len(vals), size=n)
         arr = np.empty(n, dtype=object if isinstance(vals[0], str) else float)
         arr[:] = [vals[i] for i in pick]
         return arr
-    _only(spec, {"low", "high", "log"}, f"[vary] {name}")
-    lo = v.finite(f"[vary] {name}.low", spec.get("low"))
-    hi = v.finite(f"[vary] {name}.high", spec.get("high"))
-    if spec.get("log", False):
+    if not isinstance(spec, dict):
+        raise SweepError(f"{where} = {spec!r}: give a list of values to pick from or "
+                         "{low, high[, log]}")
+    _only(spec, {"low", "high", "log"}, where)
+    lo = v.finite(f"{where}.low", spec.get("low"))
+    hi = v.finite(f"{where}.high", spec.get("high"))
+    if not lo <= hi:
+        raise SweepError(f"{where}: low = {lo!r} > high = {hi!r}; valid: low <= high")
+    if _flag(where, spec):
+        if lo <= 0:
+            raise SweepError(f"{where}: log sampling needs low > 0, got low = {lo!r}")
         return np.exp(rng.uniform(math.log(lo), math.log(hi), size=n))
+    if not math.isfinite(hi - lo):
+        raise SweepError(f"{where}: high - low = {hi!r} - {lo!r} overflows; valid: a finite "
+                         "difference")
     return rng.uniform(lo, hi, size=n)
 
 
@@ -187,14 +234,17 @@ def _only(table, allowed, where):
             raise SweepError(f"unknown key {k!r} in {where}; valid keys: {', '.join(sorted(allowed))}")
 
 
-def _check_value(name, value):
-    if name in _STRING_PARAMS:
-        return v.choice(name, value, _STRING_PARAMS[name])
+def _check_value(name, value, param=None):
+    """``value`` checked as a value of parameter ``param`` (default ``name``), named ``name``."""
+    param = name if param is None else param
+    if param in _STRING_PARAMS:
+        return v.choice(name, value, _STRING_PARAMS[param])
     return v.finite(name, value)
 
 
 def _validate_spec(data: dict) -> SweepSpec:
     _only(data, _TOP_KEYS, "the sweep spec")
+    check_document(data)
     kind = v.choice("kind", data.get("kind", "grid"), ("grid", "random"))
     fixed = data.get("fixed", {})
     vary = data.get("vary", {})
@@ -213,29 +263,35 @@ def _validate_spec(data: dict) -> SweepSpec:
     if not given & {"fy", "mu"}:
         raise SweepError("the sweep spec must fix or vary 'fy' or 'mu'")
     for k, val in fixed.items():
-        _check_value(f"[fixed] {k}", val) if k not in _STRING_PARAMS else _check_value(k, val)
+        _check_value(f"[fixed] {k}", val, k)
+    check_name(data.get("name", ""))
     chunk = data.get("chunk_size", 1000)
-    if isinstance(chunk, bool) or not isinstance(chunk, int) or chunk < 1:
-        raise SweepError(f"chunk_size = {chunk!r} is invalid; valid range: integer >= 1")
+    if isinstance(chunk, bool) or not isinstance(chunk, int) or not 1 <= chunk <= MAX_CHUNK:
+        raise SweepError(f"chunk_size = {chunk!r} is invalid; valid range: integer >= 1 "
+                         f"and <= {MAX_CHUNK}")
     if "rtol" in data:
         v.in_range("rtol", data["rtol"], 0.0, 1e-3, lo_open=True)
     if kind == "grid":
         if "random" in data:
             raise SweepError("[random] is only for kind = 'random'")
-        n = 1
-        for k, spec in vary.items():
-            n *= len(_grid_values(k, spec))
+        sizes = [len(_grid_values(k, spec)) for k, spec in vary.items()]
+        n = math.prod(sizes)
+        if n > MAX_CASES:
+            raise SweepError(f"the grid [vary] has {' x '.join(map(str, sizes))} = {n} cases; "
+                             f"valid: at most {MAX_CASES} cases in one sweep")
     else:
         rnd = data.get("random")
         if rnd is None:
             raise SweepError("kind = 'random' needs a [random] table with 'samples'")
         _only(rnd, {"samples", "seed"}, "[random]")
         n = rnd.get("samples")
-        if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-            raise SweepError(f"[random] samples = {n!r} is invalid; valid range: integer >= 1")
+        if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_CASES:
+            raise SweepError(f"[random] samples = {n!r} is invalid; valid range: integer >= 1 "
+                             f"and <= {MAX_CASES}")
         seed = rnd.get("seed", 0)
-        if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-            raise SweepError(f"[random] seed = {seed!r} is invalid; valid range: integer >= 0")
+        if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**63:
+            raise SweepError(f"[random] seed = {seed!r} is invalid; valid range: integer in "
+                             "[0, 2^63 - 1]")
         for k, spec in vary.items():
             _random_values(k, spec, np.random.default_rng(0), 1)
     canonical = copy.deepcopy(data)
@@ -379,25 +435,68 @@ def _require_pyarrow():
         raise SweepError("sweeps write Parquet files and need pyarrow: pip install pyarrow") from None
 
 
+#: the columns of every chunk file, in order (inputs, derived inputs, results)
+CHUNK_COLUMNS = (
+    "case_id", "a", "b", "law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
+    "moment_of_inertia", "g", "x0", "y0", "phi0", "vx0", "vy0", "omega0", "I_star", "mu",
+    "aspect", "v0", "theta0",
+) + RESULT_COLUMNS
+LOCK = ".lock"
+
+
+def _os_error(exc: OSError, path, resumable: bool = True) -> SweepError:
+    """A one-line :class:`SweepError` saying what went wrong while writing ``path``."""
+    import errno
+
+    what = {
+        errno.ENOSPC: "disk full",
+        getattr(errno, "EDQUOT", -1): "disk quota exceeded",
+        errno.EACCES: "permission denied",
+        errno.EPERM: "permission denied",
+        errno.EROFS: "read-only file system",
+    }.get(exc.errno, exc.strerror or type(exc).__name__)
+    tail = ("; the finished chunks are kept: free the problem and rerun with --resume "
+            "(resume=True) to finish the sweep") if resumable else ""
+    return SweepError(f"{what} while writing {str(path)!r} ({exc.strerror}){tail}")
+
+
 def _atomic_write_bytes(path: Path, data: bytes) -> None:
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
-    with open(tmp, "wb") as fh:
-        fh.write(data)
-        fh.flush()
-        os.fsync(fh.fileno())
-    os.replace(tmp, path)
+    try:
+        with open(tmp, "wb") as fh:
+            fh.write(data)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        raise _os_error(exc, path) from None
+
+
+def _chunk_path(out: Path, index: int) -> Path:
+    return out / "chunks" / f"chunk-{index:06d}.parquet"
+
+
+def _parquet_write(table, path) -> None:
+    """Write a pyarrow table (a seam for tests that simulate a full disk)."""
+    import pyarrow.parquet as pq
+
+    pq.write_table(table, path)
 
 
 def _write_chunk(out: Path, index: int, table: dict) -> None:
     import pyarrow as pa
-    import pyarrow.parquet as pq
 
-    path = out / "chunks" / f"chunk-{index:06d}.parquet"
+    path = _chunk_path(out, index)
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
-    pq.write_table(pa.table({k: np.asarray(val) for k, val in table.items()}), tmp)
-    with open(tmp, "rb") as fh:
-        os.fsync(fh.fileno())
-    os.replace(tmp, path)
+    try:
+        _parquet_write(pa.table({k: np.asarray(table[k]) for k in CHUNK_COLUMNS}), tmp)
+        with open(tmp, "rb") as fh:
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        raise _os_error(exc, path) from None
 
 
 def _chunks_done(out: Path) -> set[int]:
@@ -412,9 +511,75 @@ def _chunks_done(out: Path) -> set[int]:
     return done
 
 
-def _write_manifest(out: Path, spec: SweepSpec, done: set[int]) -> None:
-    from . import __version__
+def _read_chunk(path: Path):
+    """A chunk file as a pyarrow table; ``SweepError`` naming the file if unreadable."""
+    import pyarrow.parquet as pq
 
+    try:
+        return pq.read_table(path)
+    except Exception as exc:  # noqa: BLE001 - pyarrow raises several types for bad files
+        raise SweepError(f"{str(path)!r} is not a readable Parquet file ({type(exc).__name__}: "
+                         f"{str(exc).splitlines()[0] if str(exc) else ''}); rerun "
+                         "slidespin sweep SPEC --out DIR --resume to recompute it") from None
+
+
+def _verify_chunk(out: Path, spec: "SweepSpec", index: int):
+    """The status and ending columns of chunk ``index`` if its file is sound (readable,
+    the right columns, rows and case numbers, known statuses), else ``None``."""
+    from .outcomes import ENDINGS, STATUSES
+
+    start = index * spec.chunk_size
+    n = min(spec.chunk_size, spec.n_cases - start)
+    try:
+        table = _read_chunk(_chunk_path(out, index))
+    except SweepError:
+        return None
+    if tuple(table.column_names) != CHUNK_COLUMNS or table.num_rows != n:
+        return None
+    try:
+        ids = table.column("case_id").to_numpy()
+        status = table.column("status").to_numpy(zero_copy_only=False).astype(str)
+        ending = table.column("ending").to_numpy(zero_copy_only=False).astype(str)
+    except Exception:  # noqa: BLE001 - wrong types in a foreign or damaged file
+        return None
+    if not np.array_equal(ids, np.arange(start, start + n)):
+        return None
+    if not (np.isin(status, STATUSES).all() and np.isin(ending, ENDINGS).all()):
+        return None
+    return status, ending
+
+
+def count_outcomes(status, ending=None) -> dict:
+    """Cases per status (and per ending): ``{"status": {name: n}, "ending": {...},
+    "unconverged": n}``, names in the order of :mod:`slidespin.outcomes`, zeros left out."""
+    from .outcomes import ENDINGS, STATUSES, UNCONVERGED
+
+    def tally(values, names):
+        values = np.asarray(values).astype(str)
+        names = list(names) + sorted(set(values.tolist()) - set(names))
+        counts = {nm: int(np.count_nonzero(values == nm)) for nm in names}
+        return {k: c for k, c in counts.items() if c}
+
+    out = {"status": tally(status, STATUSES)}
+    if ending is not None:
+        out["ending"] = tally(ending, ENDINGS)
+    out["unconverged"] = sum(c for k, c in out["status"].items() if k in UNCONVERGED)
+    return out
+
+
+def _add_counts(total: dict, status, ending) -> None:
+    new = count_outcomes(status, ending)
+    for key in ("status", "ending"):
+        for k, c in new[key].items():
+            total[key][k] = total[key].get(k, 0) + c
+
+
+def _write_manifest(out: Path, spec: SweepSpec, done: set[int], counts: dict | None = None
+                    ) -> None:
+    from . import __version__
+    from .outcomes import UNCONVERGED
+
+    counts = counts or {"status": {}, "ending": {}}
     doc = {
         "slidespin_version": __version__,
         "spec_sha256": spec.digest,
@@ -424,6 +589,10 @@ def _write_manifest(out: Path, spec: SweepSpec, done: set[int]) -> None:
         "n_chunks": spec.n_chunks,
         "chunks_done": sorted(done),
         "complete": len(done) == spec.n_chunks,
+        # over the chunks done (all cases once complete)
+        "status_counts": dict(counts["status"]),
+        "ending_counts": dict(counts["ending"]),
+        "unconverged": sum(c for k, c in counts["status"].items() if k in UNCONVERGED),
     }
     _atomic_write_bytes(out / MANIFEST, (json.dumps(doc, indent=1) + "\n").encode())
 
@@ -433,27 +602,40 @@ def _read_manifest(out: Path) -> dict | None:
     if not p.exists():
         return None
     try:
-        return json.loads(p.read_text())
-    except (OSError, json.JSONDecodeError) as exc:
-        raise SweepError(f"{p} is unreadable ({exc}); it is not a slidespin sweep directory") from None
+        doc = json.loads(p.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise SweepError(f"{str(p)!r} is unreadable ({exc}); it is not a slidespin sweep "
+                         "directory") from None
+    if not isinstance(doc, dict):
+        raise SweepError(f"{str(p)!r} is not a slidespin sweep manifest")
+    return doc
 
 
-def _prepare(out: Path, spec: SweepSpec, resume: bool) -> set[int]:
+def _check_out(out: Path) -> dict | None:
+    """Refuse a file or a foreign non-empty directory; return the manifest if any."""
     if out.exists() and not out.is_dir():
         raise SweepError(f"out = {str(out)!r} exists and is not a directory")
     man = _read_manifest(out) if out.is_dir() else None
+    if man is None and out.is_dir() and any(p.name != LOCK for p in out.iterdir()):
+        raise SweepError(f"out = {str(out)!r} is a non-empty directory without a sweep "
+                         "manifest; choose a new or empty directory")
+    return man
+
+
+def _prepare(out: Path, spec: SweepSpec, resume: bool):
+    """Set up ``out`` (called holding the lock). Returns the sound chunks done, the number
+    of damaged chunk files removed for recomputation, and the counts of the sound chunks."""
+    man = _check_out(out)
+    counts = {"status": {}, "ending": {}}
     if man is None:
-        if out.is_dir() and any(out.iterdir()):
-            raise SweepError(f"out = {str(out)!r} is a non-empty directory without a sweep "
-                             "manifest; choose a new or empty directory")
         try:
             (out / "chunks").mkdir(parents=True, exist_ok=True)
         except OSError as exc:
             raise SweepError(f"out = {str(out)!r} cannot be created: {exc.strerror}") from None
         if not os.access(out, os.W_OK):
             raise SweepError(f"out = {str(out)!r} is not writable")
-        _write_manifest(out, spec, set())
-        return set()
+        _write_manifest(out, spec, set(), counts)
+        return set(), 0, counts
     if man.get("spec_sha256") != spec.digest:
         raise SweepError(
             f"{str(out)!r} holds a different sweep (spec hash {str(man.get('spec_sha256'))[:12]}…, "
@@ -467,10 +649,88 @@ def _prepare(out: Path, spec: SweepSpec, resume: bool) -> set[int]:
         )
     if not os.access(out, os.W_OK):
         raise SweepError(f"out = {str(out)!r} is not writable")
+    (out / "chunks").mkdir(exist_ok=True)
     # leftovers of a killed run: temporary files are never valid results
     for p in (out / "chunks").glob(".chunk-*.tmp-*"):
         p.unlink(missing_ok=True)
-    return done
+    # every chunk file is checked (readable, columns, rows, case numbers); bad ones go
+    sound, repaired = set(), 0
+    for i in sorted(done):
+        ok = _verify_chunk(out, spec, i) if i < spec.n_chunks else None
+        if ok is None:
+            _chunk_path(out, i).unlink(missing_ok=True)
+            repaired += 1
+        else:
+            sound.add(i)
+            _add_counts(counts, *ok)
+    return sound, repaired, counts
+
+
+class _Lock:
+    """``DIR/.lock`` created with O_EXCL, holding ``pid host``: one sweep per directory.
+
+    A lock left by a process that no longer exists on this host is stale and taken over.
+    """
+
+    def __init__(self, out: Path):
+        self.path = out / LOCK
+        self.held = False
+
+    def __enter__(self):
+        import socket
+
+        me = f"{os.getpid()} {socket.gethostname()}\n"
+        for _ in range(2):
+            try:
+                fd = os.open(self.path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
+            except FileExistsError:
+                pid, host = _lock_owner(self.path)
+                if pid is not None and host == socket.gethostname() and not _pid_alive(pid):
+                    self.path.unlink(missing_ok=True)  # stale: its process is gone
+                    continue
+                who = f"pid {pid} on {host}" if pid is not None else "another process"
+                raise SweepError(
+                    f"{str(self.path.parent)!r} is in use by another slidespin sweep ({who}; "
+                    f"lock file {str(self.path)!r}); wait for it to finish, or delete the lock "
+                    "file if that process no longer runs"
+                ) from None
+            except OSError as exc:
+                raise _os_error(exc, self.path, resumable=False) from None
+            try:
+                os.write(fd, me.encode())
+            finally:
+                os.close(fd)
+            self.held = True
+            return self
+        raise SweepError(f"cannot take the lock {str(self.path)!r}")  # pragma: no cover
+
+    def __exit__(self, *exc):
+        if self.held:
+            self.path.unlink(missing_ok=True)
+            self.held = False
+        return False
+
+
+def _lock_owner(path: Path):
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")[:200].split()
+        return int(text[0]), (text[1] if len(text) > 1 else "")
+    except (OSError, ValueError, IndexError):
+        return None, ""
+
+
+def _pid_alive(pid: int) -> bool:
+    if pid <= 0:
+        return False
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # exists, owned by someone else
+        return True
+    except OSError:
+        return True
+    return True
 
 
 # --------------------------------------------------------------------------- progress
@@ -502,7 +762,14 @@ class _Progress:
 # --------------------------------------------------------------------------- driver
 @dataclass(frozen=True)
 class SweepResult:
-    """Outcome of :func:`sweep`: where it is, how many chunks were computed now, how long."""
+    """Outcome of :func:`sweep`: where it is, how many chunks were computed now, how long,
+    and how the cases ended.
+
+    ``status_counts`` and ``ending_counts`` count the cases of the whole sweep (every chunk
+    done, also those of earlier runs) per status and per ending (:mod:`slidespin.outcomes`);
+    ``chunks_repaired`` is the number of damaged chunk files found by ``resume`` and computed
+    again.
+    """
 
     out: Path
     n_cases: int
@@ -510,11 +777,28 @@ class SweepResult:
     chunks_computed: int
     cases_computed: int
     seconds: float
+    status_counts: dict = field(default_factory=dict)
+    ending_counts: dict = field(default_factory=dict)
+    chunks_repaired: int = 0
 
     @property
     def cases_per_second(self) -> float:
         """Throughput of this run (0 if nothing was left to compute)."""
         return self.cases_computed / self.seconds if self.cases_computed else 0.0
+
+    @property
+    def n_unconverged(self) -> int:
+        """Cases whose status is in :data:`slidespin.outcomes.UNCONVERGED`."""
+        from .outcomes import UNCONVERGED
+
+        return sum(c for k, c in self.status_counts.items() if k in UNCONVERGED)
+
+    @property
+    def n_flagged(self) -> int:
+        """Cases whose status is in :data:`slidespin.outcomes.FLAGGED` (marginal, saddle)."""
+        from .outcomes import FLAGGED
+
+        return sum(c for k, c in self.status_counts.items() if k in FLAGGED)
 
 
 def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | None = None,
@@ -526,12 +810,16 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
     spec : str, Path, dict or SweepSpec
         Sweep specification (a TOML path or its parsed dict).
     out : str or Path
-        Result directory: ``manifest.json`` and ``chunks/chunk-NNNNNN.parquet``.
+        Result directory: ``manifest.json`` and ``chunks/chunk-NNNNNN.parquet``. While a
+        sweep runs, ``out/.lock`` (holding its process id and host) makes any other sweep on
+        the same directory refuse to start; a lock whose process is gone is taken over.
     executor : None, dask.distributed.Client or concurrent.futures.Executor
         ``None`` runs on all local cores; otherwise one chunk is submitted per task.
     resume : bool
-        Finish a sweep that was interrupted: only missing chunks are computed. Without it an
-        existing sweep directory is refused, and a directory of a different spec always is.
+        Finish a sweep that was interrupted: only missing chunks are computed. Every chunk
+        file already there is checked first (readable Parquet, its columns, row count and
+        case numbers); damaged ones are computed again. Without ``resume`` an existing sweep
+        directory is refused, and a directory of a different spec always is.
     progress : bool or None
         Progress bar on stderr; ``None`` means only when stderr is a terminal.
     task_cases : int, default 1000
@@ -540,26 +828,46 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
     Returns
     -------
     SweepResult
+
+    Raises
+    ------
+    SweepError
+        A bad spec, a foreign or busy directory, or a write that failed (disk full,
+        permission denied): the message says which file; the chunks finished so far are kept
+        and ``resume=True`` completes the sweep.
     """
     _require_pyarrow()
     if isinstance(task_cases, bool) or not isinstance(task_cases, int) or task_cases < 1:
         raise SweepError(f"task_cases = {task_cases!r} is invalid; valid range: integer >= 1")
     spec = load_spec(spec)
     out = Path(out)
-    done = _prepare(out, spec, resume)
+    _check_out(out)  # before creating anything
+    if not out.is_dir():
+        try:
+            out.mkdir(parents=True)
+        except FileExistsError:
+            pass
+        except OSError as exc:
+            raise SweepError(f"out = {str(out)!r} cannot be created: {exc.strerror}") from None
+    with _Lock(out):
+        return _run_sweep(spec, out, executor, resume, progress, task_cases)
+
+
+def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult:
+    done, repaired, counts = _prepare(out, spec, resume)
+    if repaired:
+        _write_manifest(out, spec, done, counts)
     todo = [i for i in range(spec.n_chunks) if i not in done]
     show = sys.stderr.isatty() if progress is None else bool(progress)
-    bar = _Progress(spec.n_cases, min(len(done) * spec.chunk_size, spec.n_cases), show)
+    bar = _Progress(spec.n_cases, sum(_chunk_len(spec, i) for i in done), show)
     t0 = time.perf_counter()
-
-    def chunk_len(i):
-        return min(spec.chunk_size, spec.n_cases - i * spec.chunk_size)
 
     def finish(i, table):
         _write_chunk(out, i, table)
         done.add(i)
-        _write_manifest(out, spec, done)
-        bar.update(chunk_len(i))
+        _add_counts(counts, table["status"], table["ending"])
+        _write_manifest(out, spec, done, counts)
+        bar.update(_chunk_len(spec, i))
 
     try:
         if executor is None:
@@ -586,8 +894,19 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
                     finish(i, table)
     finally:
         bar.close()
+    from .outcomes import ENDINGS, STATUSES
+
+    def ordered(d, names):
+        return {k: d[k] for k in list(names) + sorted(set(d) - set(names)) if d.get(k)}
+
     return SweepResult(out, spec.n_cases, spec.n_chunks, len(todo),
-                       sum(chunk_len(i) for i in todo), time.perf_counter() - t0)
+                       sum(_chunk_len(spec, i) for i in todo), time.perf_counter() - t0,
+                       ordered(counts["status"], STATUSES), ordered(counts["ending"], ENDINGS),
+                       repaired)
+
+
+def _chunk_len(spec, i):
+    return min(spec.chunk_size, spec.n_cases - i * spec.chunk_size)
 
 
 def _is_dask_client(obj) -> bool:
@@ -612,29 +931,57 @@ def connect_dask(address: str | None = None, workers: int | None = None):
     return Client(cluster)
 
 
-def read_sweep(out) -> dict:
-    """All results of a sweep directory as one table: column name → array, sorted by case.
+def read_sweep(out, *, include_unconverged: bool = False) -> dict:
+    """The results of a sweep directory as one table: column name → array, sorted by case.
+
+    Parameters
+    ----------
+    out : str or Path
+        Sweep directory.
+    include_unconverged : bool, default False
+        Keep the cases whose status is in :data:`slidespin.outcomes.UNCONVERGED`
+        (``max_steps``, ``step_too_small``, ``non_finite``: values as reached, not a stop).
+        By default they are left out; :func:`split_unconverged` counts them.
 
     Raises
     ------
     ValueError
-        If ``out`` is not a sweep directory. An unfinished sweep is read as far as it got
-        (the manifest says which chunks are done).
+        If ``out`` is not a sweep directory or a chunk file is unreadable (the message names
+        it). An unfinished sweep is read as far as it got.
     """
     _require_pyarrow()
     import pyarrow as pa
-    import pyarrow.parquet as pq
 
     out = Path(out)
-    if _read_manifest(out) is None:
+    if not out.is_dir() or _read_manifest(out) is None:
         raise SweepError(f"{str(out)!r} is not a sweep directory (no {MANIFEST})")
     files = sorted((out / "chunks").glob("chunk-*.parquet"))
     if not files:
         return {}
-    table = pa.concat_tables([pq.read_table(f) for f in files])
+    try:
+        table = pa.concat_tables([_read_chunk(f) for f in files])
+    except pa.ArrowInvalid as exc:
+        raise SweepError(f"the chunk files of {str(out)!r} do not fit together ({exc}); rerun "
+                         "slidespin sweep SPEC --out DIR --resume to check them") from None
     cols = {name: table.column(name).to_numpy(zero_copy_only=False) for name in table.column_names}
     order = np.argsort(cols["case_id"], kind="stable")
-    return {k: val[order] for k, val in cols.items()}
+    cols = {k: val[order] for k, val in cols.items()}
+    return cols if include_unconverged else split_unconverged(cols)[0]
+
+
+def split_unconverged(table: dict):
+    """``(kept, left_out)``: the table without the unconverged cases, and the number left out
+    per status (``{}`` if none). A table without a ``status`` column is kept whole."""
+    from .outcomes import UNCONVERGED
+
+    if not table or "status" not in table:
+        return table, {}
+    status = np.asarray(table["status"]).astype(str)
+    bad = np.isin(status, sorted(UNCONVERGED))
+    if not bad.any():
+        return table, {}
+    left = {k: int(c) for k, c in zip(*np.unique(status[bad], return_counts=True))}
+    return {k: np.asarray(val)[~bad] for k, val in table.items()}, left
 
 
 def benchmark(n_local: int = 1_000_000, n_dask: int = 100_000, workers: int = 2,

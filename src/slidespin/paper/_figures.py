@@ -171,7 +171,7 @@ def main_figure(name, compute, plot, out, as_json, fmt, stream, **kw):
     import sys
 
     stream = stream or sys.stdout
-    out = "." if out is None else out
+    out = sh.DEFAULT_OUT if out is None else out
     sh.prepare_out(out)
     if fmt not in sh.FORMATS:
         raise ValueError(f"--format = {fmt!r} is invalid; valid values: {', '.join(sh.FORMATS)}")

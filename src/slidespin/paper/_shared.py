@@ -20,6 +20,8 @@ ECCENTRICITY = 0.866
 A = 1.0  # semi-axis a [m]
 MASS = 1.0  # [kg]
 G = 9.81  # [m/s²]
+#: where figures and ``all`` go without --out (the same folder as every slidespin command)
+DEFAULT_OUT = "slidespin-out"
 PHI0 = (math.pi / 4, math.pi / 3, math.pi / 2)
 PHI_LABELS = ("π/4", "π/3", "π/2")
 THETA0 = math.pi / 4

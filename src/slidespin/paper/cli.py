@@ -10,8 +10,9 @@ Usage::
     slidespin reproduce all     [--out DIR] [--mu MU] [--format ...] [--json]
 
 Tables and errata print to the terminal and, with ``--out``, also write JSON/text (and a
-figure for the tables). Figures go to ``--out`` (default: the current directory); ``all``
-writes everything with an ``index.html`` into ``--out`` (default: ``slidespin-paper``).
+figure for the tables). Figures go to ``--out``; ``all``
+writes everything with an ``index.html``. Without ``--out``, figures and ``all`` go to
+``./slidespin-out`` (never straight into the working directory); tables only print.
 This module follows the plugin contract of :mod:`slidespin.cli`: ``configure(parser)`` and
 ``run(args) -> int``.
 """
@@ -61,8 +62,8 @@ def configure(parser) -> None:
     parser.add_argument("target", choices=TARGETS, metavar="TARGET",
                         help="one of " + ", ".join(TARGETS))
     parser.add_argument("--out", metavar="DIR", default=None,
-                        help="output directory (created if missing); figures default to the "
-                        "current directory, 'all' to ./slidespin-paper")
+                        help="output directory (created if missing); figures and 'all' "
+                        "default to ./slidespin-out, tables only print without it")
     parser.add_argument("--json", action="store_true", help="print the results as JSON")
     parser.add_argument("--fx", type=float, default=None, metavar="FX",
                         help="friction coefficient along OX (> 0); default: inferred from "

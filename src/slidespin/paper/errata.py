@@ -60,7 +60,7 @@ class ErrataResult:
         ]}
 
     def to_text(self) -> str:
-        lines = ["Errata of the printed paper (MODEL.md section 7), shown numerically", ""]
+        lines = ["Errata of the printed paper (docs/model.md section 7), shown numerically", ""]
         for e in self.errata:
             lines += [
                 f"{e.number}. {e.where}",

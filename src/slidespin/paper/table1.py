@@ -56,6 +56,8 @@ MU = np.round(0.03 * np.arange(9), 2)
 PHI = sh.PHI0
 PHI_LABELS = sh.PHI_LABELS
 HALF_UNIT = 0.0005  # half a unit of the printed last digit
+#: the round value of fx shown beside the least-squares one
+ROUND_FX = 0.42
 _BRACKET = (0.05, 5.0)  # contains the single root of eq. 16 near the paper's cells (units of a)
 
 
@@ -202,6 +204,42 @@ class Table1Result:
     fx_intervals: np.ndarray | None  # (3, 8, 2): fx range consistent with each printed cell
     best_count: int | None  # most cells consistent with one fx
     best_interval: tuple | None  # the fx interval achieving it
+    round_cells: tuple | None = None  # the cells at ROUND_FX (with a least-squares fx)
+
+    @property
+    def matching(self) -> int:
+        """Cells (of 27) whose value rounds to the printed one at ``fx``."""
+        return len(self.cells) - len(self.mismatches)
+
+    @property
+    def round_mismatches(self) -> tuple:
+        """Cells that do not round to the printed value at fx = ROUND_FX."""
+        return tuple(c for c in (self.round_cells or ()) if not c.matches)
+
+    @property
+    def round_matching(self) -> int | None:
+        """Cells (of 27) that round to the printed value at fx = ROUND_FX."""
+        if self.round_cells is None:
+            return None
+        return len(self.round_cells) - len(self.round_mismatches)
+
+    def likely_fx(self) -> str:
+        """Which fx the authors most likely used, from the measured counts (one sentence)."""
+        if self.round_cells is None:
+            return ""
+        lo, hi = self.best_interval if self.best_interval else (math.nan, math.nan)
+        in_best = lo <= ROUND_FX <= hi
+        if self.round_matching > self.matching:
+            why = (f"it is a round value, it makes {self.round_matching} of 27 cells round to "
+                   f"the print against {self.matching} for the least-squares fx = "
+                   f"{self.fx:.5f}")
+            if in_best:
+                why += (f", and it lies in the interval [{lo:.5f}, {hi:.5f}] that makes the "
+                        "most fx-dependent cells round right")
+            return f"the authors most likely used fx = {ROUND_FX:g}: {why}."
+        return (f"the least-squares fx = {self.fx:.5f} makes {self.matching} of 27 cells round "
+                f"right, fx = {ROUND_FX:g} makes {self.round_matching}: the printed digits do "
+                "not single out a round value.")
 
     def grid(self, name: str) -> np.ndarray:
         """A 3 × 9 array of one cell attribute (``beta``, ``paper``, ``true_beta``, ...)."""
@@ -237,6 +275,16 @@ class Table1Result:
         }
         if self.fit is not None:
             d["fit"] = {"rms": self.fit.rms, "max_abs": self.fit.max_abs}
+        if self.round_cells is not None:
+            d["round_fx"] = {
+                "fx": ROUND_FX, "matching": self.round_matching, "of": 27,
+                "mismatches": [
+                    {"phi_label": c.phi_label, "mu": c.mu, "beta": c.beta, "paper": c.paper,
+                     "diff": c.diff} for c in self.round_mismatches
+                ],
+                "least_squares_matching": self.matching,
+                "likely": self.likely_fx(),
+            }
         if self.best_count is not None:
             d["fx_consistency"] = {
                 "best_count": self.best_count, "of": 24,
@@ -283,6 +331,14 @@ class Table1Result:
                 f"round right: the best, fx in [{lo:.5f}, {hi:.5f}] (e.g. 0.42), makes "
                 f"{self.best_count} of the 24 fx-dependent cells round to the print"
             )
+        if self.round_cells is not None:
+            off = ", ".join(f"phi = {c.phi_label}, mu = {c.mu:.2f}: {c.diff * 1e3:+.2f}e-3"
+                            for c in self.round_mismatches) or "none"
+            lines.append(
+                f"round value fx = {ROUND_FX:g}: {self.round_matching} of 27 cells round to the "
+                f"printed value (least squares: {self.matching} of 27); off: {off}"
+            )
+            lines.append(self.likely_fx())
         lines.append(
             "true beta*, th* [rad]: the attracting terminal motion at that phi "
             "(F_n = 0, theta not imposed)"
@@ -323,7 +379,15 @@ def compute(fx: float | None = None, *, consistency: bool = True) -> Table1Resul
     if consistency:
         intervals = consistent_fx()
         best, span = _best_overlap(intervals)
-    return Table1Result(fx_val, source, fit, tuple(cells), intervals, best, span)
+    round_cells = None
+    if fit is not None:  # beside the least-squares fx, the round value
+        round_cells = tuple(
+            Table1Cell(phi=phi, phi_label=PHI_LABELS[i], mu=float(mu),
+                       beta=paper_ratio(ROUND_FX, mu, phi), paper=float(PRINTED[i, j]),
+                       true_beta=math.nan, true_theta=math.nan, true_ending="")
+            for i, phi in enumerate(PHI) for j, mu in enumerate(MU)
+        )
+    return Table1Result(fx_val, source, fit, tuple(cells), intervals, best, span, round_cells)
 
 
 def plot(result: Table1Result):
