@@ -86,6 +86,21 @@ def test_table1_round_fx_reproduces_all_but_one_cell():
     assert res.mismatches[0].diff == pytest.approx(-0.86e-3, abs=0.02e-3)
 
 
+def test_table1_shows_the_round_fx_beside_the_least_squares_one(paper_table1):
+    res = paper_table1
+    assert res.fx_source == "least squares" and res.matching == 27 - len(KNOWN_OFF)
+    # the same cells as an independent compute(fx=0.42) (test above): only π/3, μ = 0.21 off
+    assert [(c.phi_label, round(c.mu, 2)) for c in res.round_mismatches] == [("π/3", 0.21)]
+    assert res.round_matching == 26
+    text = res.to_text()
+    assert "round value fx = 0.42: 26 of 27 cells round to the printed value" in text
+    assert "(least squares: 24 of 27)" in text
+    assert "the authors most likely used fx = 0.42" in text
+    d = json.loads(json.dumps(res.as_dict()))
+    assert d["round_fx"]["matching"] == 26 and d["round_fx"]["least_squares_matching"] == 24
+    assert d["round_fx"]["mismatches"][0]["diff"] == pytest.approx(-0.86e-3, abs=0.02e-3)
+
+
 def test_table1_no_single_fx_fits_every_cell(paper_table1):
     assert paper_table1.best_count == 23
     lo, hi = paper_table1.best_interval
@@ -203,6 +218,14 @@ def test_figure_smoke(module, tmp_path, capsys):
     assert any(ax.get_legend() is not None for ax in axes)
 
 
+def test_figures_default_to_slidespin_out(tmp_path, monkeypatch, capsys):
+    monkeypatch.chdir(tmp_path)
+    assert cli_main(["reproduce", "fig2"]) == 0
+    assert os.listdir(tmp_path) == ["slidespin-out"]  # nothing in the working directory
+    assert sorted(os.listdir(tmp_path / "slidespin-out")) == ["fig2.json", "fig2.png"]
+    assert "slidespin-out/fig2.png" in capsys.readouterr().out
+
+
 def test_table_figures_smoke(paper_table1, paper_table2, tmp_path):
     for plot, res in ((table1.plot, paper_table1), (table2.plot, paper_table2)):
         fig = plot(res)
@@ -256,6 +279,7 @@ def test_errata_numbers():
     assert max(abs(x) for x in e[11]["ellipse_theta"]) > 0.3
     text = res.to_text()
     assert text.count("printed  :") == 11
+    assert "MODEL.md" not in text and "docs/model.md" in text
 
 
 # ------------------------------------------------------------------------------------------
@@ -273,6 +297,8 @@ def test_report_writes_a_self_contained_folder(tmp_path, capsys):
     for name in re.findall(r'<a href="([^"#]+)"', page):
         assert (folder / name).exists(), name
     assert "0.41986" in page and "Errata" in page
+    assert "MODEL.md" not in page and "docs/model.md" in page
+    assert "<b>26 of 27</b>" in page and "most likely used fx = 0.42" in page
     assert "open" in capsys.readouterr().out
 
 

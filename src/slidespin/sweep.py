@@ -442,6 +442,9 @@ CHUNK_COLUMNS = (
     "aspect", "v0", "theta0",
 ) + RESULT_COLUMNS
 LOCK = ".lock"
+#: statuses in the order of the summaries: converged, flagged, unconverged
+STATUS_ORDER = ("stopped", "at_rest", "marginal", "saddle", "max_steps", "step_too_small",
+                "non_finite")
 
 
 def _os_error(exc: OSError, path, resumable: bool = True) -> SweepError:
@@ -552,7 +555,7 @@ def _verify_chunk(out: Path, spec: "SweepSpec", index: int):
 def count_outcomes(status, ending=None) -> dict:
     """Cases per status (and per ending): ``{"status": {name: n}, "ending": {...},
     "unconverged": n}``, names in the order of :mod:`slidespin.outcomes`, zeros left out."""
-    from .outcomes import ENDINGS, STATUSES, UNCONVERGED
+    from .outcomes import ENDINGS, UNCONVERGED
 
     def tally(values, names):
         values = np.asarray(values).astype(str)
@@ -560,7 +563,7 @@ def count_outcomes(status, ending=None) -> dict:
         counts = {nm: int(np.count_nonzero(values == nm)) for nm in names}
         return {k: c for k, c in counts.items() if c}
 
-    out = {"status": tally(status, STATUSES)}
+    out = {"status": tally(status, STATUS_ORDER)}
     if ending is not None:
         out["ending"] = tally(ending, ENDINGS)
     out["unconverged"] = sum(c for k, c in out["status"].items() if k in UNCONVERGED)
@@ -894,14 +897,15 @@ def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult
                     finish(i, table)
     finally:
         bar.close()
-    from .outcomes import ENDINGS, STATUSES
+    from .outcomes import ENDINGS
 
     def ordered(d, names):
         return {k: d[k] for k in list(names) + sorted(set(d) - set(names)) if d.get(k)}
 
     return SweepResult(out, spec.n_cases, spec.n_chunks, len(todo),
                        sum(_chunk_len(spec, i) for i in todo), time.perf_counter() - t0,
-                       ordered(counts["status"], STATUSES), ordered(counts["ending"], ENDINGS),
+                       ordered(counts["status"], STATUS_ORDER),
+                       ordered(counts["ending"], ENDINGS),
                        repaired)
 
 
