@@ -231,24 +231,34 @@ class _Patch:
     def _raw_arrays(self):  # (edges, circles)
         raise NotImplementedError
 
+    def _central(self):
+        """(A, r_c, J): moments taken about a point of the footprint, so that a footprint far
+        from the body origin loses no digits to cancellation."""
+        e, c = self._raw_arrays()
+        pts = np.vstack((e[:, :2], c[:, :2]))
+        sx, sy = pts.mean(axis=0)
+        a, mx, my, sxx, sxy, syy = _moments(e - np.array([sx, sy, sx, sy]),
+                                            c - np.array([sx, sy, 0.0, 0.0]))
+        cx, cy = mx / a, my / a
+        j = np.array([[sxx - a * cx * cx, sxy - a * cx * cy],
+                      [sxy - a * cx * cy, syy - a * cy * cy]])
+        return a, (cx + sx, cy + sy), j
+
     @property
     def area(self) -> float:
         """Area |Ω| [m²]."""
-        return _moments(*self._raw_arrays())[0]
+        return self._central()[0]
 
     @property
     def centroid(self) -> tuple[float, float]:
         """Area centroid r_c in the body frame [m]."""
-        a, sx, sy, *_ = _moments(*self._raw_arrays())
-        return (sx / a, sy / a)
+        cx, cy = self._central()[1]
+        return (float(cx), float(cy))
 
     @property
     def second_moment(self) -> np.ndarray:
         """J = ∫(r − r_c)(r − r_c)ᵀ dS about the area centroid [m⁴], a 2×2 array (MODEL §10)."""
-        a, sx, sy, sxx, sxy, syy = _moments(*self._raw_arrays())
-        cx, cy = sx / a, sy / a
-        return np.array([[sxx - a * cx * cx, sxy - a * cx * cy],
-                         [sxy - a * cx * cy, syy - a * cy * cy]])
+        return self._central()[2]
 
     @property
     def polar_moment(self) -> float:
@@ -284,8 +294,10 @@ def _moments(edges: np.ndarray, circles: np.ndarray):
 
 
 def _frame(edges: np.ndarray, circles: np.ndarray) -> np.ndarray:
-    a, sx, sy, *_ = _moments(edges, circles)
-    ox, oy = sx / a, sy / a
+    pts = np.vstack((edges[:, :2], circles[:, :2]))
+    px, py = pts.mean(axis=0)
+    a, sx, sy, *_ = _moments(edges - np.array([px, py, px, py]), circles - np.array([px, py, 0, 0]))
+    ox, oy = px + sx / a, py + sy / a
     ext = 0.0
     if len(edges):
         ext = float(np.max(np.hypot(edges[:, 0] - ox, edges[:, 1] - oy)))
