@@ -30,7 +30,7 @@ import math
 import numpy as np
 from scipy.integrate import quad_vec
 
-__all__ = ["regions_of", "reference_pressure", "reference_wrench", "reference_power"]
+__all__ = ["reference_power", "reference_pressure", "reference_wrench", "regions_of"]
 
 FAR = 30.0
 _GLX, _GLW = np.polynomial.legendre.leggauss(12)
@@ -170,7 +170,7 @@ def _ray_intervals(regions, c, e):
             m = oc @ e
             dd = oc @ oc - m * m
 
-            def chord(r):
+            def chord(r, m=m, dd=dd):
                 h2 = r * r - dd
                 if h2 <= 0:
                     return None
@@ -262,7 +262,7 @@ def reference_wrench(footprint, law, tensor, vx, vy, omega, phi=0.0, frame="plan
         br = np.sort(np.mod(_breaks(regions, c), 2 * np.pi))
         start = br[0] if len(br) else 0.0
         pts_ = [b for b in br if start < b < start + 2 * np.pi]
-        res, err = quad_vec(integrand, start, start + 2 * np.pi, points=pts_, epsabs=tol * load,
+        res, _ = quad_vec(integrand, start, start + 2 * np.pi, points=pts_, epsabs=tol * load,
                             epsrel=1e-13, norm="max", limit=20000)
         fb = res[:2]
         m = float(res[2])

@@ -132,8 +132,7 @@ def elliptic_ke(m):
     """Complete elliptic integrals K(m), E(m) of parameter m = k² in [0, 1) (AGM)."""
     a = 1.0
     b = math.sqrt(1.0 - m)
-    c = math.sqrt(m)
-    s = 0.5 * m
+    s = 0.5 * m  # 2⁻¹ c₀², c₀ = √m
     pw = 0.5
     for _ in range(40):
         cn = 0.5 * (a - b)

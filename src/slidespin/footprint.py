@@ -36,20 +36,20 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import NamedTuple, Union
+from typing import NamedTuple
 
 import numpy as np
 
 from . import _validate as v
 
 __all__ = [
-    "Polygon",
-    "Rectangle",
-    "Disk",
     "Annulus",
-    "Pads",
+    "Disk",
     "Footprint",
     "FootprintArrays",
+    "Pads",
+    "Polygon",
+    "Rectangle",
 ]
 
 
@@ -69,7 +69,9 @@ def _point(name: str, value) -> tuple[float, float]:
     try:
         seq = tuple(value)
     except TypeError:
-        raise ValueError(f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m") from None
+        raise ValueError(
+            f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m"
+        ) from None
     if len(seq) != 2:
         raise ValueError(f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m")
     return (v.finite(f"{name}[0]", seq[0]), v.finite(f"{name}[1]", seq[1]))
@@ -200,12 +202,11 @@ def _clip_area(t1: np.ndarray, t2: np.ndarray) -> float:
         if not inp:
             break
 
-        def side(p):
-            return _cross(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1])
-
+        ex, ey = b[0] - a[0], b[1] - a[1]
         for j in range(len(inp)):
             p, q = inp[j], inp[(j + 1) % len(inp)]
-            sp, sq = side(p), side(q)
+            sp = _cross(ex, ey, p[0] - a[0], p[1] - a[1])
+            sq = _cross(ex, ey, q[0] - a[0], q[1] - a[1])
             if sp >= 0:
                 out.append(p)
             if (sp >= 0) != (sq >= 0):
@@ -631,7 +632,8 @@ class Pads(_Patch):
 
     Examples
     --------
-    >>> runners = Pads([Rectangle(0.8, 0.02, centre=(0, -0.2)), Rectangle(0.8, 0.02, centre=(0, 0.2))])
+    >>> runners = Pads([Rectangle(0.8, 0.02, centre=(0, -0.2)),
+    ...                 Rectangle(0.8, 0.02, centre=(0, 0.2))])
     >>> round(runners.area, 6)
     0.032
     """
@@ -687,7 +689,7 @@ class Pads(_Patch):
         return out
 
 
-Footprint = Union[Polygon, Rectangle, Disk, Annulus, Pads]
+Footprint = Polygon | Rectangle | Disk | Annulus | Pads
 
 
 def is_footprint(obj) -> bool:

@@ -24,8 +24,8 @@ checked exactly. A user map is checked at its quadrature nodes (:func:`area_rule
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -36,13 +36,13 @@ from .pressure import LinearPressure, UniformPressure
 
 __all__ = [
     "PressureMap",
-    "pressure_coefficients",
-    "mass_centre",
-    "kernel_geometry",
-    "density",
     "area_rule",
     "contains",
+    "density",
+    "kernel_geometry",
     "map_scale",
+    "mass_centre",
+    "pressure_coefficients",
 ]
 
 #: Gauss–Legendre order per triangle side and per ring direction of :func:`area_rule`
@@ -52,7 +52,8 @@ AREA_RULE_NODES = 24
 def _check_footprint(fp) -> None:
     if not isinstance(fp, (Polygon, Rectangle, Annulus, Pads)):
         raise ValueError(
-            f"footprint = {fp!r} is invalid; valid values: Polygon, Rectangle, Disk, Annulus or Pads"
+            f"footprint = {fp!r} is invalid; valid values: Polygon, Rectangle, Disk, Annulus "
+            "or Pads"
         )
 
 
@@ -83,7 +84,7 @@ class PressureMap:
             )
 
     @classmethod
-    def from_grid(cls, xi, eta, values) -> "PressureMap":
+    def from_grid(cls, xi, eta, values) -> PressureMap:
         """A map from samples on a rectangular grid (pressure film, finite-element output).
 
         Parameters

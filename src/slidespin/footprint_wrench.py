@@ -41,7 +41,7 @@ from .friction import FrictionTensor
 from .pressure import LinearPressure, UniformPressure
 from .wrench import Wrench, _check_array
 
-__all__ = ["footprint_wrench", "MAP_TOL"]
+__all__ = ["MAP_TOL", "footprint_wrench"]
 
 #: default target of the user-map quadrature (units of P and P × extent)
 MAP_TOL = 1e-9
