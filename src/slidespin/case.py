@@ -116,7 +116,8 @@ def case_from_dict(data: dict) -> Case:
         extra = sorted(set(p) - {"shape", "radius"})
         if extra:
             raise ValueError(f"[patch] shape 'circle' takes only 'radius', not {extra[0]!r}")
-        patch = Circle(v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
+        patch = _in("patch", Circle,
+                    v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
     else:
         if "radius" in p:
             raise ValueError("[patch] 'radius' is for shape = 'circle'; an ellipse takes a and b or eccentricity")
@@ -124,10 +125,10 @@ def case_from_dict(data: dict) -> Case:
         if ("b" in p) == ("eccentricity" in p):
             raise ValueError("[patch] give exactly one of 'b' and 'eccentricity' for an ellipse")
         if "b" in p:
-            patch = Ellipse(a, v.positive("[patch] b", p["b"], "m"))
+            patch = _in("patch", Ellipse, a, v.positive("[patch] b", p["b"], "m"))
         else:
             e = v.in_range("[patch] eccentricity", p["eccentricity"], 0.0, 1.0, hi_open=True)
-            patch = Ellipse.from_eccentricity(a, e)
+            patch = _in("patch", Ellipse.from_eccentricity, a, e)
 
     pr = dict(data["pressure"])
     law_name = _need(pr, "pressure", "law")
@@ -149,9 +150,9 @@ def case_from_dict(data: dict) -> Case:
     if "moment_of_inertia" in bd and "inertia_ratio" in bd:
         raise ValueError("[body] give at most one of 'moment_of_inertia' and 'inertia_ratio'")
     if "inertia_ratio" in bd:
-        body = Body.from_inertia_ratio(patch, law, mass, bd["inertia_ratio"])
+        body = _in("body", Body.from_inertia_ratio, patch, law, mass, bd["inertia_ratio"])
     else:
-        body = Body(patch, law, mass, bd.get("moment_of_inertia"))
+        body = _in("body", Body, patch, law, mass, bd.get("moment_of_inertia"))
 
     ini = data["initial"]
     has_speed = "speed" in ini or "theta" in ini or "theta_deg" in ini
@@ -165,9 +166,11 @@ def case_from_dict(data: dict) -> Case:
     if has_speed:
         speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf,
                            hi_open=True)
-        state = State.from_speed(speed, omega, _angle(ini, "initial", "theta"), phi, x0, y0)
+        state = _in("initial", State.from_speed, speed, omega,
+                    _angle(ini, "initial", "theta"), phi, x0, y0)
     else:
-        state = State(x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0), omega)
+        state = _in("initial", State, x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0),
+                    omega)
 
     so = data.get("solver", {})
     g = v.positive("[solver] g", so.get("g", 9.81), "m/s^2")

@@ -444,10 +444,14 @@ def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str
         if ux is not None:
             bx, by = ux[bx], uy[by]
             fx_, fy_ = ux[fx_], uy[fy_]
+        import matplotlib.patheffects as pe
+
+        halo = [pe.withStroke(linewidth=2.6, foreground="w")]  # visible on any colour
         if len(bx):
-            ax.plot(bx, by, "x", color="k", ms=5, mew=1.0, lw=0)
+            ax.plot(bx, by, "x", color="k", ms=5, mew=1.1, lw=0, path_effects=halo)
         if len(fx_):
-            ax.plot(fx_, fy_, "o", ms=5, mfc="none", mec="w", mew=1.0, lw=0)
+            ax.plot(fx_, fy_, "o", ms=5, mfc="none", mec="C3", mew=1.1, lw=0,
+                    path_effects=halo)
         if vcats is None:
             fig.colorbar(mesh, ax=ax, label=axis_label(value))
         else:
@@ -473,7 +477,7 @@ def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str
         counts = {k: int(c) for k, c in zip(*np.unique(status[flagged & keep],
                                                         return_counts=True))}
         handles.append(Line2D([], [], ls="none", marker="o", mfc="none",
-                              mec="0.3" if y else "C3",
+                              mec="C3",
                               label="flagged (analytic limit reported): "
                               + ", ".join(f"{k} {c}" for k, c in counts.items())))
     ax.set_xlabel(axis_label(x))
