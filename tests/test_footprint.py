@@ -560,3 +560,22 @@ def test_kernel_geometry_layout():
     assert geo.shape == (K.NGEO,)
     assert tuple(geo[K.GEO_XG:K.GEO_YG + 1]) == (0.03, -0.02)
     assert geo[K.GEO_LOAD] == 1.0
+
+
+def test_kernel_in_scaled_units():
+    """The kernel reads any length unit: natural units (lengths in ℓ) give F and M/ℓ."""
+    from slidespin.footprint_pressure import scaled_arrays
+
+    fp = FOOTPRINTS["pads"]
+    law, _ = _law(fp, "linear")
+    t = TENSORS["skew"].matrix
+    a = fp.to_arrays()
+    geo = kernel_geometry(fp, law, a)
+    ell = 0.37
+    a2 = scaled_arrays(a, ell)
+    geo2 = kernel_geometry(fp, law, a, length=ell)
+    for vx, vy, om in [(0.1, -0.05, 1.0), (0.0, 0.0, 2.0), (1.0, 0.2, 0.0), (30.0, 5.0, 1.0)]:
+        f1 = K.wrench_world(a.edges, a.circles, geo, *t.ravel(), False, 0.3, vx, vy, om)
+        f2 = K.wrench_world(a2.edges, a2.circles, geo2, *t.ravel(), False, 0.3, vx / ell,
+                            vy / ell, om)
+        assert np.allclose(f2, (f1[0], f1[1], f1[2] / ell), rtol=0, atol=1e-14)

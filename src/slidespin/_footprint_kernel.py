@@ -244,7 +244,7 @@ def fan_tensors(edges, circles, cx, cy):
         nx = ty
         ny = -tx
         d = (px * qy - py * qx) / ln  # signed distance of the edge's line from c
-        if d == 0.0:
+        if d * d == 0.0:  # the edge's line passes through c: no area (the ICR on an edge)
             continue
         sp = tx * px + ty * py
         sq = tx * qx + ty * qy

@@ -268,7 +268,9 @@ class _Patch:
         return float(j[0, 0] + j[1, 1])
 
     def plate_inertia(self, mass: float) -> float:
-        """I of a uniform plate of this shape and ``mass`` [kg] about its centroid [kg m²]."""
+        """I of a uniform plate of this shape and ``mass`` [kg] about its area centroid
+        [kg m²]: m ∫|r − r_c|² dS / A. For pads this is a plate covering the pads only (no
+        mass between them); for a linear law, whose G is off the centroid, give I explicitly."""
         m = v.positive("mass", mass, "kg")
         return m * self.polar_moment / self.area
 

@@ -40,6 +40,7 @@ __all__ = [
     "contains",
     "density",
     "kernel_geometry",
+    "scaled_arrays",
     "map_scale",
     "mass_centre",
     "pressure_coefficients",
@@ -316,20 +317,39 @@ def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
     return np.where(inside, p, 0.0)
 
 
-def kernel_geometry(footprint, pressure, arrays: FootprintArrays | None = None) -> np.ndarray:
-    """The ``geo`` vector of the compiled kernel for unit load (P = 1), lengths in metres.
+def kernel_geometry(footprint, pressure, arrays: FootprintArrays | None = None,
+                    length: float = 1.0) -> np.ndarray:
+    """The ``geo`` vector of the compiled kernel for unit load (P = 1).
 
     Layout :data:`slidespin._footprint_kernel.GEO_FIELDS`: reference point and extent (from
     ``arrays.frame``), pressure coefficients (p₀, p₁, p₂), mass centre G, pressure centroid,
     load ∫p dS. Only uniform and linear laws (the kernel's exact path).
+
+    Parameters
+    ----------
+    length : float, default 1
+        Length unit [m] of the kernel's input: pass the same ``length`` to
+        :func:`scaled_arrays` (e.g. a characteristic size, for natural units). ``arrays``, if
+        given, must be in metres.
     """
+    length = v.positive("length", length, "m")
     arrays = footprint.to_arrays() if arrays is None else arrays
     p0, p1, p2 = pressure_coefficients(footprint, pressure, 1.0)
     xg, yg = mass_centre(footprint, pressure)
     geo = np.empty(NGEO)
-    geo[0:3] = arrays.frame
-    geo[3:6] = (p0, p1, p2)
-    geo[6:8] = (xg, yg)
-    geo[8:10] = (xg, yg)  # G is the pressure centroid
+    geo[0:3] = arrays.frame / length
+    geo[3] = p0 * length**2  # pressure per unit load and unit area (area in length²)
+    geo[4:6] = (p1 * length**3, p2 * length**3)
+    geo[6:8] = (xg / length, yg / length)
+    geo[8:10] = geo[6:8]  # G is the pressure centroid
     geo[10] = 1.0
     return geo
+
+
+def scaled_arrays(arrays: FootprintArrays, length: float) -> FootprintArrays:
+    """The footprint arrays with lengths in units of ``length`` [m] (signs unchanged)."""
+    length = v.positive("length", length, "m")
+    circles = arrays.circles.copy()
+    circles[:, :3] /= length
+    return FootprintArrays(np.ascontiguousarray(arrays.edges / length), circles,
+                           arrays.frame / length)
