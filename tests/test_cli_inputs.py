@@ -69,6 +69,10 @@ CASE_EDITS = [
      ("nested",)),
     ("very deep nesting", "x = " + "[" * 5000 + "]" * 5000 + "\n", ("nested too deeply",)),
     ("not UTF-8", DEMO.replace("demo:", "d\udcffmo:"), ("not UTF-8 text", "offset")),
+    # values the physics cannot honour: refused up front (not a hang), naming table and key
+    ("speed 1e300", DEMO.replace("speed = 1.0 ", "speed = 1e300 "), ("[initial] speed",)),
+    ("mass 5e-324", DEMO.replace("mass = 1.0 ", "mass = 5e-324 "), ("[body] mass",)),
+    ("a 1e-200", DEMO.replace("a = 0.1 ", "a = 1e-200 "), ("[patch] a",)),
 ]
 
 
