@@ -579,3 +579,83 @@ def test_kernel_in_scaled_units():
         f2 = K.wrench_world(a2.edges, a2.circles, geo2, *t.ravel(), False, 0.3, vx / ell,
                             vy / ell, om)
         assert np.allclose(f2, (f1[0], f1[1], f1[2] / ell), rtol=0, atol=1e-14)
+
+
+def _star(rng, n):
+    """A random star-shaped (generally non-convex) simple polygon around the origin."""
+    t = (np.arange(n) + rng.uniform(0.0, 0.4, n)) * 2.0 * np.pi / n  # gaps < π: simple
+    r = rng.uniform(0.3, 1.0, n) * 0.1
+    return Polygon(np.column_stack((r * np.cos(t), r * np.sin(t))),
+                   centre=tuple(rng.normal(size=2) * 0.02))
+
+
+def test_random_polygons_against_reference():
+    """Random star polygons (mostly non-convex), random tensors and laws, the ICR at random
+    points, at vertices (reflex ones included) and on edges."""
+    rng = np.random.default_rng(2026)
+    for k in range(8):
+        fp = _star(rng, int(rng.integers(3, 9)))
+        a = fp.to_arrays()
+        ext = a.frame[2]
+        fr = ss.FrictionTensor(*rng.uniform(0.2, 0.8, 2), f=rng.normal() * 0.1,
+                               angle=rng.uniform(0, 3), frame=("plane", "body")[k % 2])
+        kind = ("uniform", "linear")[k % 2]
+        law, ref_law = _law(fp, kind)
+        i = int(rng.integers(len(a.edges)))
+        x0, y0, x1, y1 = a.edges[i]
+        t = rng.uniform()
+        icrs = [(x0, y0), (x0 + t * (x1 - x0), y0 + t * (y1 - y0)),
+                tuple(a.frame[:2] + rng.normal(size=2) * ext),
+                tuple(a.frame[:2] + rng.normal(size=2) * 8 * ext)]
+        for icr in icrs:
+            phi = rng.uniform(0, 6)
+            om = rng.choice([-1.0, 1.0]) * rng.uniform(0.5, 3.0)
+            vx, vy = _velocity(fp, law, icr, phi, om)
+            w = footprint_wrench(fp, law, fr, vx, vy, om, phi)
+            ref = reference_wrench(fp, ref_law, fr.matrix, vx, vy, om, phi=phi, frame=fr.frame)
+            got = np.array([w.force_x, w.force_y, w.moment / ext])
+            want = np.array([ref[0], ref[1], ref[2] / ext])
+            assert np.abs(got - want).max() <= TOL, (k, icr, got, want)
+
+
+def test_reflex_vertex_icr():
+    fp = FOOTPRINTS["L-shape"]
+    reflex = (0.1 - 0.1, 0.1 - 0.1)  # vertex (0.1, 0.1) of L_SHAPE, placed at centre (−0.1, −0.1)
+    for kind in ("uniform", "linear"):
+        law, ref_law = _law(fp, kind)
+        fr = TENSORS["skew"]
+        vx, vy = _velocity(fp, law, reflex, 0.2, 1.3)
+        w = footprint_wrench(fp, law, fr, vx, vy, 1.3, 0.2)
+        ref = reference_wrench(fp, ref_law, fr.matrix, vx, vy, 1.3, phi=0.2)
+        assert abs(w.force_x - ref[0]) <= TOL and abs(w.force_y - ref[1]) <= TOL
+        assert abs(w.moment - ref[2]) <= TOL * 0.3
+
+
+def test_kernel_runs_as_python():
+    """The kernel as plain Python (NUMBA_DISABLE_JIT=1) gives the compiled results."""
+    import os
+    import subprocess
+    import sys
+
+    code = (
+        "import numpy as np\n"
+        "from slidespin import _footprint_kernel as K\n"
+        "from slidespin.footprint import Annulus, Pads, Polygon, Rectangle\n"
+        "from slidespin.footprint_pressure import kernel_geometry\n"
+        "from slidespin.pressure import LinearPressure\n"
+        "fp = Pads([Polygon([(0, 0), (0.3, 0), (0.3, 0.1), (0.1, 0.1), (0.1, 0.25), (0, 0.25)]),"
+        " Annulus(0.03, 0.06, centre=(0.4, 0.1)), Rectangle(0.1, 0.05, centre=(-0.2, 0))])\n"
+        "a = fp.to_arrays()\n"
+        "g = kernel_geometry(fp, LinearPressure(0.1, 0.08), a)\n"
+        "out = [K.wrench_world(a.edges, a.circles, g, 0.3, 0.1, -0.1, 0.5, False, 0.4, vx, vy, om)"
+        " for vx, vy, om in [(0.1, 0.0, 1.0), (0.0, 0.0, -1.0), (0.3, -0.1, 1.0),"
+        " (1.0, 0.1, 0.0), (0.02, -0.1, 1.0), (40.0, 2.0, 1.0)]]\n"
+        "print(repr(np.array(out).tolist()))\n"
+    )
+    res = {}
+    for jit in ("0", "1"):
+        env = dict(os.environ, NUMBA_DISABLE_JIT=jit)
+        out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                             text=True, check=True)
+        res[jit] = np.array(eval(out.stdout))  # noqa: S307 - our own output
+    assert np.allclose(res["0"], res["1"], rtol=0, atol=1e-15)

@@ -334,28 +334,24 @@ def fan_tensors(edges, circles, cx, cy):
 
 
 @jit(error_model="numpy", inline="always")
-def _far_point(x, y, w, cx, cy, xg, yg, p0, p1, p2, acc):
+def _far_point(x, y, w, cx, cy, p0, p1, p2):
+    """p ê w at the point (x, y): its (x, y) components."""
     ex = x - cx
     ey = y - cy
-    r = math.sqrt(ex * ex + ey * ey)
-    pw = w * (p0 + p1 * x + p2 * y) / r
-    ex *= pw
-    ey *= pw
-    ax = x - xg
-    ay = y - yg
-    acc[0] += ex
-    acc[1] += ey
-    acc[2] += ax * ex
-    acc[3] += ax * ey
-    acc[4] += ay * ex
-    acc[5] += ay * ey
+    pw = w * (p0 + p1 * x + p2 * y) / math.sqrt(ex * ex + ey * ey)
+    return ex * pw, ey * pw
 
 
 @jit(error_model="numpy")
 def far_sums(edges, circles, ox, oy, cx, cy, xg, yg, p0, p1, p2):
     """V (x, y) and N (xx, xy, yx, yy) by Gauss rules over signed triangles (o, P, Q) and
     disks, for an ICR c far from the footprint (module notes)."""
-    acc = np.zeros(6)
+    vx = 0.0
+    vy = 0.0
+    nxx = 0.0
+    nxy = 0.0
+    nyx = 0.0
+    nyy = 0.0
     for i in range(edges.shape[0]):
         ax = edges[i, 0] - ox
         ay = edges[i, 1] - oy
@@ -369,20 +365,34 @@ def far_sums(edges, circles, ox, oy, cx, cy, xg, yg, p0, p1, p2):
             wu = _GL_W[a] * u * jac
             for b in range(FAR_NODES):
                 v = _GL_X[b]
-                _far_point(ox + u * (ax + v * bx), oy + u * (ay + v * by), wu * _GL_W[b],
-                           cx, cy, xg, yg, p0, p1, p2, acc)
+                x = ox + u * (ax + v * bx)
+                y = oy + u * (ay + v * by)
+                qx, qy = _far_point(x, y, wu * _GL_W[b], cx, cy, p0, p1, p2)
+                vx += qx
+                vy += qy
+                nxx += (x - xg) * qx
+                nxy += (x - xg) * qy
+                nyx += (y - yg) * qx
+                nyy += (y - yg) * qy
     for i in range(circles.shape[0]):
-        qx = circles[i, 0]
-        qy = circles[i, 1]
+        ccx = circles[i, 0]
+        ccy = circles[i, 1]
         rr = circles[i, 2]
         wc = circles[i, 3] * rr * rr * 2.0 * math.pi / FAR_ANGULAR
         for a in range(FAR_RADIAL):
             rho = rr * _GR_X[a]
             wr = wc * _GR_W[a] * _GR_X[a]
             for b in range(FAR_ANGULAR):
-                _far_point(qx + rho * _TH_C[b], qy + rho * _TH_S[b], wr, cx, cy, xg, yg,
-                           p0, p1, p2, acc)
-    return acc[0], acc[1], acc[2], acc[3], acc[4], acc[5]
+                x = ccx + rho * _TH_C[b]
+                y = ccy + rho * _TH_S[b]
+                qx, qy = _far_point(x, y, wr, cx, cy, p0, p1, p2)
+                vx += qx
+                vy += qy
+                nxx += (x - xg) * qx
+                nxy += (x - xg) * qy
+                nyx += (y - yg) * qx
+                nyy += (y - yg) * qy
+    return vx, vy, nxx, nxy, nyx, nyy
 
 
 # ---------------------------------------------------------------------------------------------

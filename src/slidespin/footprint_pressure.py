@@ -40,10 +40,10 @@ __all__ = [
     "contains",
     "density",
     "kernel_geometry",
-    "scaled_arrays",
     "map_scale",
     "mass_centre",
     "pressure_coefficients",
+    "scaled_arrays",
 ]
 
 #: Gauss–Legendre order per triangle side and per ring direction of :func:`area_rule`
