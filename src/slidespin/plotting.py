@@ -359,7 +359,7 @@ def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str
         others = _independent_axes(table, x, varied) if varied is not None else []
         if kind == "random":
             ax.plot(xs[finite], vs[finite], "o", ms=2.5, alpha=0.6, lw=0)
-            others_txt = ", ".join(axis_label(k) for k in (varied or []) if k != x)
+            others_txt = ", ".join(k.replace("_", " ") for k in (varied or []) if k != x)
             if not title:
                 title = ("each dot one case" + (f"; also varied: {others_txt}" if others_txt
                                                 else ""))
@@ -395,6 +395,11 @@ def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str
         if vcats is not None:
             ax.set_yticks(range(len(vcats)), [c.replace("_", " ") for c in vcats])
             ax.set_ylim(-0.5, len(vcats) - 0.5)
+        elif not finite.all():
+            handles.append(Patch(facecolor="white", edgecolor="0.6",
+                                 label=f"not drawn: {int((~finite).sum())} cases with "
+                                 f"{axis_label(value)} not finite (β* = ∞: pure sliding; "
+                                 "no ϑ*: spiral or pure spinning)"))
         ax.set_ylabel(axis_label(value))
         ax.grid(alpha=0.3)
     else:
@@ -484,5 +489,7 @@ def plot_sweep(table: dict, x: str, value: str, y: str | None = None, title: str
     if handles:  # below the axes, outside them: the layout makes room (no overlap)
         fig.legend(handles=handles, loc="outside lower left", fontsize=7, frameon=False)
     if title:
-        ax.set_title(title, fontsize=10)
+        import textwrap
+
+        ax.set_title(textwrap.fill(title, 72), fontsize=9)
     return fig
