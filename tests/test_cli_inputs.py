@@ -58,11 +58,11 @@ def with_key(text: str, table: str, line: str) -> str:
 CASE_EDITS = [
     # (name, file text, fragments that must appear in the message)
     ("max_steps 2**64", with_key(DEMO, "solver", "max_steps = 18446744073709551616"),
-     ("max_steps", "64-bit")),
+     ("[solver] max_steps = 18446744073709551616", "64-bit")),
     ("max_steps too large", DEMO + "max_steps = 10000000000\n",
      ("[solver] max_steps = 10000000000", "<= 1000000000")),
     ("huge integer mass", DEMO.replace("mass = 1.0", "mass = 100000000000000000000000"),
-     ("body.mass", "64-bit")),
+     ("[body] mass = 100000000000000000000000", "64-bit")),
     ("long name", DEMO.replace('name = "demo:', 'name = "' + "x" * 10_000 + ' demo:'),
      ("name is 10", "at most 200 characters")),
     ("deep nesting", DEMO + "[patch.deep]\nv = " + "[" * 50 + "]" * 50 + "\n",
@@ -144,7 +144,7 @@ SPEC_EDITS = [
                                       "x0 = {low = -1e308, high = 1e308}"),
      ("[vary] x0", "overflows")),
     ("seed 2**64", SWEEP.replace("seed = 1", "seed = 18446744073709551616"),
-     ("random.seed", "64-bit")),
+     ("[random] seed = 18446744073709551616", "64-bit")),
     ("chunk_size too large", SWEEP.replace("chunk_size = 10", "chunk_size = 100000000"),
      ("chunk_size = 100000000", "<= 1000000")),
     ("long name", SWEEP.replace('name = "small"', 'name = "' + "y" * 5000 + '"'),

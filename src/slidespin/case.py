@@ -200,23 +200,34 @@ def _short(value, n: int = 60) -> str:
     return text if len(text) <= n else text[: n - 1] + "…"
 
 
-def check_document(data, where: str = "", depth: int = 0) -> None:
+def check_document(data, where: tuple = (), depth: int = 0) -> None:
     """Refuse what no valid case file or sweep spec contains, naming the key: nesting deeper
     than :data:`MAX_DEPTH`, and integers outside the 64-bit range (e.g. ``2**64``)."""
     if depth > MAX_DEPTH:
-        raise ValueError(f"{where or 'the document'} is nested {depth} levels deep; valid: at "
-                         f"most {MAX_DEPTH} levels of tables and arrays")
+        raise ValueError(f"{_key(where)} is nested {depth} levels deep; valid: at most "
+                         f"{MAX_DEPTH} levels of tables and arrays")
     if isinstance(data, dict):
-        items = ((f"{where}.{k}" if where else str(k), val) for k, val in data.items())
+        items = ((where + (str(k),), val) for k, val in data.items())
     elif isinstance(data, list):
-        items = ((f"{where}[{i}]", val) for i, val in enumerate(data))
+        items = ((where[:-1] + (f"{where[-1] if where else ''}[{i}]",), val)
+                 for i, val in enumerate(data))
     else:
         if isinstance(data, int) and not isinstance(data, bool) and abs(data) > _INT64:
-            raise ValueError(f"{where} = {_short(data, 40)} does not fit a 64-bit integer; "
-                             f"valid range: [-{_INT64}, {_INT64}] (and the key's own range)")
+            raise ValueError(f"{_key(where)} = {_short(data, 40)} does not fit a 64-bit "
+                             f"integer; valid range: [-{_INT64}, {_INT64}] (and the key's own "
+                             "range)")
         return
     for key, val in items:
         check_document(val, key, depth + 1)
+
+
+def _key(path: tuple) -> str:
+    """``('solver', 'max_steps')`` → ``[solver] max_steps`` (the way a TOML file shows it)."""
+    if not path:
+        return "the document"
+    if len(path) == 1:
+        return path[0]
+    return f"[{path[0]}] " + ".".join(path[1:])
 
 
 def read_toml(path, what: str, max_bytes: int = MAX_FILE_BYTES) -> dict:
