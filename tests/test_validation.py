@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
 import slidespin as ss
@@ -119,3 +120,145 @@ def test_case_missing_table_and_key():
     data["sovler"] = {}
     with pytest.raises(ValueError, match="unknown table or key 'sovler'"):
         case_from_dict(data)
+
+
+# ------------------------------------------------------------------------------------------
+# issue 11: the edges of the valid ranges, angle_deg, and import anywhere
+# ------------------------------------------------------------------------------------------
+def _just_outside(x, direction):
+    return math.nextafter(x, direction)
+
+
+EDGES = [
+    (lambda x: ss.Ellipse(x, x), 1e-9, 1e6, "a = "),
+    (lambda x: ss.Circle(x), 1e-9, 1e6, "radius = "),
+    (lambda x: ss.Ellipse(1.0, x), 1e-3, 30.0, "b/a = "),
+    (lambda x: ss.Body(ss.Circle(0.1), ss.UniformPressure(), x), 1e-12, 1e12, "mass = "),
+    (lambda x: ss.Body.from_inertia_ratio(ss.Circle(0.1), ss.HertzPressure(), 2.0, x), 1e-8, 1e8,
+     "inertia_ratio = "),
+    (lambda x: ss.FrictionTensor(x, 0.3), 1e-6, 5.0, "fx = "),
+    (lambda x: ss.FrictionTensor(0.3, 0.3, f=x), -5.0, 5.0, "f = "),
+    (lambda x: ss.State(vx=x), -1e8, 1e8, "vx = "),
+    (lambda x: ss.State(omega=x), -1e12, 1e12, "omega = "),
+]
+
+
+@pytest.mark.parametrize("make, lo, hi, name", EDGES, ids=[e[3].strip(" =") for e in EDGES])
+def test_range_edges_are_in_and_the_next_floats_out(make, lo, hi, name):
+    make(lo)
+    make(hi)
+    for x in (_just_outside(lo, -math.inf), _just_outside(hi, math.inf)):
+        with pytest.raises(ValueError) as err:
+            make(x)
+        assert name in str(err.value) and "valid range" in str(err.value)
+
+
+def test_inertia_ratio_bound_applies_to_an_explicit_inertia():
+    body = ss.Body(ss.Circle(0.1), ss.UniformPressure(), 2.0, 1e8 * 2.0 * 0.01)
+    assert body.inertia_ratio == pytest.approx(1e8)
+    with pytest.raises(ValueError, match=r"I/\(m a\^2\) = 1.1e\+08; valid range: \[1e-08, 1e\+08\]"):
+        ss.Body(ss.Circle(0.1), ss.UniformPressure(), 2.0, 1.1e8 * 2.0 * 0.01)
+
+
+def test_friction_angle_in_degrees():
+    a = ss.FrictionTensor(0.3, 0.4, f=0.05, frame="body", angle_deg=30.0)
+    b = ss.FrictionTensor(0.3, 0.4, f=0.05, frame="body", angle=math.radians(30.0))
+    assert a == b and a.angle == math.radians(30.0)
+    assert a.angle_deg == pytest.approx(30.0, rel=1e-15)
+    assert ss.FrictionTensor.from_degrees(0.3, 0.4, angle_deg=90.0).world_matrix() == pytest.approx(
+        np.array([[0.4, 0.0], [0.0, 0.3]]), abs=1e-15)  # axes turned by 90°: fx and fy swap
+    assert ss.FrictionTensor(0.3, 0.4).angle_deg == 0.0
+    with pytest.raises(ValueError, match="gives both angle"):
+        ss.FrictionTensor(0.3, 0.4, angle=0.2, angle_deg=30.0)
+
+
+_IMPORT_ANYWHERE = r"""
+import math, os, sys, warnings
+warnings.simplefilter("always")
+if os.environ.get("SLIDESPIN_TEST_NO_TMP"):
+    import tempfile
+    def refuse(*args, **kwargs):
+        raise PermissionError("no temporary directory either")
+    tempfile.mkdtemp = refuse
+import slidespin as ss
+from slidespin import _jit
+assert os.path.dirname(ss.__file__).startswith(sys.argv[1]), ss.__file__
+@_jit.jit
+def f(x):
+    return 2.0 * math.sqrt(x)
+assert f(4.0) == 4.0
+print("dir", _jit._fallback["dir"])
+"""
+
+
+def _run_import_anywhere(tmp, extra_env=None):
+    """Import a copy of slidespin from a read-only directory with a read-only HOME.
+
+    As root, write permissions are not enforced, so the child runs as uid/gid 65534 (nobody)
+    through ``setpriv``; as any other user chmod alone makes both read-only. As root without
+    ``setpriv`` the failure is simulated: numba may then only use NUMBA_CACHE_DIR, which is
+    set to a path under a regular file (never a directory, even for root).
+    """
+    import os
+    import shutil
+    import stat
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    src = Path(ss.__file__).resolve().parent
+    pkg = Path(tmp) / "site"
+    shutil.copytree(src, pkg / "slidespin", ignore=shutil.ignore_patterns("__pycache__"))
+    home = Path(tmp) / "home"
+    home.mkdir()
+    for path in [Path(tmp), *Path(tmp).rglob("*")]:
+        mode = stat.S_IRUSR | stat.S_IRGRP | stat.S_IROTH
+        if path.is_dir():
+            mode |= stat.S_IXUSR | stat.S_IXGRP | stat.S_IXOTH
+        path.chmod(mode)
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("NUMBA_CACHE", "XDG_"))}
+    env.update(HOME=str(home), XDG_CACHE_HOME=str(home / ".cache"), PYTHONPATH=str(pkg),
+               **(extra_env or {}))
+    prefix = []
+    if os.geteuid() == 0:
+        if shutil.which("setpriv"):
+            prefix = ["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"]
+        else:  # pragma: no cover - depends on the machine
+            plain = Path(tmp) / "plain-file"
+            plain.write_text("")
+            env.update(NUMBA_CACHE_LOCATOR_CLASSES="UserProvidedCacheLocator",
+                       NUMBA_CACHE_DIR=str(plain / "cache"))
+    return subprocess.run([*prefix, sys.executable, "-c", _IMPORT_ANYWHERE, str(pkg)], env=env,
+                          capture_output=True, text=True, timeout=600, cwd=str(home))
+
+
+@pytest.fixture
+def readonly_tmp():
+    import os
+    import shutil
+    import stat
+    import tempfile
+
+    tmp = tempfile.mkdtemp(prefix="slidespin-ro-")  # not under pytest's 0700 root directory
+    yield tmp
+    for root, dirs, _ in os.walk(tmp):
+        for d in dirs:
+            os.chmod(os.path.join(root, d), stat.S_IRWXU)
+    os.chmod(tmp, stat.S_IRWXU)
+    shutil.rmtree(tmp)
+
+
+def test_import_with_read_only_install_and_home_caches_in_a_temporary_directory(readonly_tmp):
+    r = _run_import_anywhere(readonly_tmp)
+    assert r.returncode == 0, r.stderr
+    assert "dir /" in r.stdout and "slidespin-numba-" in r.stdout
+    notes = [line for line in r.stderr.splitlines() if "CacheWarning" in line]
+    assert len(notes) == 1 and "cached in" in notes[0], r.stderr
+
+
+def test_import_without_any_writable_directory_compiles_without_cache(readonly_tmp):
+    r = _run_import_anywhere(readonly_tmp, {"SLIDESPIN_TEST_NO_TMP": "1"})
+    assert r.returncode == 0, r.stderr
+    assert "dir \n" in r.stdout or r.stdout.strip() == "dir"
+    notes = [line for line in r.stderr.splitlines() if "CacheWarning" in line]
+    assert len(notes) == 1 and "without a disk cache" in notes[0], r.stderr

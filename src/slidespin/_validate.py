@@ -33,7 +33,7 @@ GRAVITY = (1e-6, 1e6)  # g [m/s²]
 WRENCH_TOL = (1e-13, 1e-2)  # absolute quadrature target, units of m g and m g a
 SPEED = 1e8  # |vx|, |vy| of a State [m/s]
 SPIN = 1e12  # |ω| of a State [rad/s]
-POSITION = 1e15  # |x|, |y| of a State [m]
+POSITION = 1e100  # |x|, |y| of a State [m]: any stop the other ranges allow is far inside
 RATIO = (1e-9, 1e9)  # β/a in terminal-ratio inputs
 
 

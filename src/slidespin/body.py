@@ -75,7 +75,7 @@ class Body:
             inertia = v.positive("moment_of_inertia", self.moment_of_inertia, "kg m^2")
             lo, hi = v.INERTIA_RATIO
             i_star = inertia / m / a / a
-            if not lo <= i_star <= hi:
+            if not lo * (1.0 - 1e-12) <= i_star <= hi * (1.0 + 1e-12):  # round-off of I* m a²
                 raise ValueError(
                     f"moment_of_inertia = {inertia!r} kg m^2 is invalid for mass = {m!r} kg and "
                     f"a = {a!r} m: I/(m a^2) = {i_star:.6g}; valid range: [{lo:g}, {hi:g}] "
@@ -134,7 +134,7 @@ class State:
     Parameters
     ----------
     x, y : float
-        Position of the mass centre G [m], |x|, |y| ≤ 1e15.
+        Position of the mass centre G [m], |x|, |y| ≤ 1e100.
     phi : float
         Body angle φ between OX and the body axis Cξ [rad], any finite value.
     vx, vy : float

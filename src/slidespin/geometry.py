@@ -85,7 +85,13 @@ class Ellipse:
         """
         a = v.bounded("a", a, *v.LENGTH, "m")
         e = v.bounded("eccentricity", eccentricity, 0.0, _E_MAX)
-        return cls(a, a * math.sqrt(1.0 - e * e))
+        b = a * math.sqrt(1.0 - e * e)
+        if b < v.LENGTH[0]:
+            raise ValueError(
+                f"eccentricity = {e!r} with a = {a!r} m gives b = a sqrt(1 - e^2) = {b:.6g} m; "
+                f"valid range: b in [{v.LENGTH[0]:g}, {v.LENGTH[1]:g}] m"
+            )
+        return cls(a, b)
 
     @property
     def aspect(self) -> float:
@@ -108,8 +114,11 @@ class Ellipse:
         return (1.0 + self.aspect**2) / 4.0
 
     def outline(self, n: int = 181):
-        """Body-frame outline points (ξ, η) [m], shape (n, 2), closed."""
+        """Body-frame outline points (ξ, η) [m], shape (n, 2), closed; n in [2, 1e6]."""
         import numpy as np
+
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= 10**6:
+            raise ValueError(f"n = {v._short(n)} is invalid; valid range: integer in [2, 1000000]")
 
         t = np.linspace(0.0, 2.0 * np.pi, n)
         return np.column_stack((self.a * np.cos(t), self.b * np.sin(t)))

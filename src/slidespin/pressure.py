@@ -66,13 +66,25 @@ class _Law:
         patch : Ellipse
             The contact patch.
         xi, eta : array_like
-            Body-frame coordinates [m].
+            Body-frame coordinates [m], finite.
         load : float
-            Normal load P = m g [N].
+            Normal load P = m g [N], in [0, 1e300].
         """
-        xi = np.asarray(xi, dtype=float)
-        eta = np.asarray(eta, dtype=float)
-        q = (xi / patch.a) ** 2 + (eta / patch.b) ** 2
+        from .geometry import Ellipse
+
+        if not isinstance(patch, Ellipse):
+            raise ValueError(f"patch = {v._short(patch)} is invalid; valid values: an Ellipse or a Circle")
+        xi = v.real_array("xi", xi)
+        eta = v.real_array("eta", eta)
+        load = v.bounded("load", load, 0.0, 1e300, "N")
+        try:
+            xi, eta = np.broadcast_arrays(xi, eta)
+        except ValueError:
+            raise ValueError(
+                f"xi, eta have shapes {xi.shape}, {eta.shape} that do not broadcast together"
+            ) from None
+        with np.errstate(over="ignore"):  # far outside: q = inf, p = 0
+            q = (xi / patch.a) ** 2 + (eta / patch.b) ** 2
         inside = q < 1.0
         p = np.where(inside, self._shape(patch, xi, eta, np.minimum(q, 1.0)), 0.0)
         return load / (math.pi * patch.a * patch.b) * p
