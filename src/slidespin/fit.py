@@ -366,9 +366,11 @@ class _Problem:
         fmax = max(friction.fx, friction.fy)
         typ = {"fx": fmax, "fy": fmax, "f": fmax, "angle": 1.0, "xi_c": a / 4.0,
                "eta_c": b / 4.0, "moment_of_inertia": body.moment_of_inertia}
-        lo = {"fx": 1e-9, "fy": 1e-9, "f": -np.inf, "angle": -np.inf, "xi_c": -a / 4.0,
+        c_lo, c_hi = getattr(v, "COEFFICIENT", (1e-9, np.inf))  # FrictionTensor's range
+        skew = getattr(v, "SKEW", np.inf)
+        lo = {"fx": c_lo, "fy": c_lo, "f": -skew, "angle": -np.inf, "xi_c": -a / 4.0,
               "eta_c": -b / 4.0, "moment_of_inertia": 1e-4 * body.moment_of_inertia}
-        hi = {"fx": np.inf, "fy": np.inf, "f": np.inf, "angle": np.inf, "xi_c": a / 4.0,
+        hi = {"fx": c_hi, "fy": c_hi, "f": skew, "angle": np.inf, "xi_c": a / 4.0,
               "eta_c": b / 4.0, "moment_of_inertia": 1e4 * body.moment_of_inertia}
         names, x0, typs, lbs, ubs, owner = [], [], [], [], [], []
         for p in free:
@@ -598,6 +600,15 @@ def _noise_from_data(runs, c) -> float:
     d = np.concatenate(parts)
     mad = 1.4826 * np.median(np.abs(d - np.median(d)))
     return float(mad / math.sqrt(6.0))
+
+
+def _undetermined(J, typ):
+    """SVD of the Jacobian scaled by typical sizes; indices of undetermined parameters."""
+    _, s, vt = np.linalg.svd(J * typ[None, :], full_matrices=False)
+    bad = set()
+    for i in np.flatnonzero(s < SINGULAR_TOL):
+        bad.update(int(j) for j in np.flatnonzero(np.abs(vt[i]) >= WEIGHT_TOL))
+    return s, vt, bad
 
 
 def _loss_weights(z, loss):
@@ -1024,15 +1035,9 @@ def fit(
     J = prob.jacobian(p)
     if loss != "linear":
         J = J * np.sqrt(_loss_weights((r / f_scale) ** 2, loss))[:, None]
-    Jt = J * prob.typ[None, :]
-    _, s, vt = np.linalg.svd(Jt, full_matrices=False)
+    s, vt, not_ident = _undetermined(J, prob.typ)
     smax = float(s[0]) if s.size else 0.0
     condition = smax / float(s[-1]) if s.size and s[-1] > 0 else math.inf
-    bad_dirs = np.flatnonzero(s < SINGULAR_TOL)
-    not_ident = set()
-    for i in bad_dirs:
-        for j in np.flatnonzero(np.abs(vt[i]) >= WEIGHT_TOL):
-            not_ident.add(int(j))
     s_safe = np.maximum(s, max(smax, 1e-300) * 1e-15)
     cov_t = (vt.T / s_safe**2) @ vt
     cov = cov_t * np.outer(prob.typ, prob.typ)
@@ -1040,6 +1045,19 @@ def fit(
     corr = cov / np.outer(d, d)
     np.fill_diagonal(corr, 1.0)
     se = d.copy()
+    # A start velocity the data do not tell from zero may carry the only information on a
+    # parameter (a run sliding along x tells fy only through its noise-sized vy): judge
+    # identifiability also with such velocities set to zero.
+    p_null = p.copy()
+    for j, name in enumerate(prob.names):
+        if name.split(".")[-1] in ("vx", "vy", "omega") and abs(p[j]) < 2.0 * d[j]:
+            p_null[j] = 0.0
+    if np.any(p_null != p):
+        J0 = prob.jacobian(p_null)
+        if loss != "linear":
+            J0 = J0 * np.sqrt(_loss_weights((prob.residuals(p_null) / f_scale) ** 2,
+                                            loss))[:, None]
+        not_ident |= _undetermined(J0, prob.typ)[2]
     for j in not_ident:
         se[j] = math.inf
     names = prob.names
