@@ -272,3 +272,13 @@ def test_random_cases_are_the_draws_of_independent_streams():
         assert np.array_equal(p["mu"], mu[start:stop])
         assert list(p["law"]) == list(law[start:stop])
         assert np.array_equal(p["v0"], v0[start:stop])
+
+
+def test_damaged_manifest_is_named(tmp_path, capsys):
+    out = tmp_path / "s"
+    out.mkdir()
+    (out / "manifest.json").write_bytes(b"\xff{not json")
+    assert main(["sweep-read", str(out), "--csv", str(tmp_path / "t.csv")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "manifest.json" in err and "is unreadable" in err
+    assert not (tmp_path / "t.csv").exists()

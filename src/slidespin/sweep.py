@@ -442,6 +442,8 @@ CHUNK_COLUMNS = (
     "aspect", "v0", "theta0",
 ) + RESULT_COLUMNS
 LOCK = ".lock"
+#: largest manifest read (its chunk list has one number per chunk)
+MAX_MANIFEST_BYTES = 128_000_000
 #: statuses in the order of the summaries: converged, flagged, unconverged
 STATUS_ORDER = ("stopped", "at_rest", "marginal", "saddle", "max_steps", "step_too_small",
                 "non_finite")
@@ -604,9 +606,17 @@ def _read_manifest(out: Path) -> dict | None:
     p = out / MANIFEST
     if not p.exists():
         return None
+    if not p.is_file():
+        raise SweepError(f"{str(p)!r} is not a regular file; it is not a slidespin sweep "
+                         "directory")
     try:
-        doc = json.loads(p.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        with open(p, "rb") as fh:
+            raw = fh.read(MAX_MANIFEST_BYTES + 1)
+        if len(raw) > MAX_MANIFEST_BYTES:
+            raise SweepError(f"{str(p)!r} is larger than {MAX_MANIFEST_BYTES} bytes; it is not "
+                             "a slidespin sweep manifest")
+        doc = json.loads(raw.decode("utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
         raise SweepError(f"{str(p)!r} is unreadable ({exc}); it is not a slidespin sweep "
                          "directory") from None
     if not isinstance(doc, dict):
@@ -716,7 +726,8 @@ class _Lock:
 
 def _lock_owner(path: Path):
     try:
-        text = path.read_text(encoding="utf-8", errors="replace")[:200].split()
+        with open(path, "rb") as fh:
+            text = fh.read(200).decode("utf-8", errors="replace").split()
         return int(text[0]), (text[1] if len(text) > 1 else "")
     except (OSError, ValueError, IndexError):
         return None, ""
