@@ -11,14 +11,20 @@ laws of :mod:`slidespin.footprint_pressure`. It returns the same :class:`~slides
   polar coordinates about the instantaneous centre of rotation c, which removes its
   singularity: on each ray c + ρ ê the slip direction is constant, the footprint cuts exact
   intervals (ray–edge crossings, ray–circle roots), and the radial integral of p ρ (1, r − r_G)
-  is Gauss–Legendre on each interval. The angle is split at every vertex direction, every
-  circle tangent and the directions ±90° from each circle's centre; each panel gets
-  Gauss–Legendre in u with ψ = ψ_a + (ψ_b − ψ_a)(1 − cos πu)/2 (square-root ends of tangent
-  panels become smooth). The node count is doubled (12, 24, ..., 192 per panel and interval)
-  until two successive results agree to ``map_tol`` (default 1e-9 P, P·L). For ω = 0 or a far
-  ICR (|c − o| > 24 × extent) the integrand is smooth and the 24 × 24 Gauss rule of
-  :func:`~slidespin.footprint_pressure.area_rule` is used. Speed: a few milliseconds per
-  wrench (pure NumPy; the map is evaluated at ~1e4–1e5 points).
+  is Gauss–Legendre (24 nodes) on each interval. The angle is split at every vertex
+  direction, every circle tangent and the directions ±90° from each circle's centre, and, for
+  an edge at a distance d from c, at the directions of its points s_V/2^k from the foot of
+  the perpendicular (k = 1, 2, ... while s_V/2^k > d; s_V the vertex's offset): the area
+  beyond a near edge crowds into angles ~d/s_V wide beside its vertices. Each panel gets 12
+  Gauss–Legendre nodes in u with ψ = ψ_a + (ψ_b − ψ_a)(1 − cos πu)/2 (square-root ends of
+  tangent panels become smooth) and is bisected, all panels at once, until the halves agree
+  with the whole to ``map_tol`` × (panel width)/2π (default map_tol 1e-9 P and P·extent; a
+  RuntimeWarning if 40 levels do not suffice). For ω = 0 or a far ICR (|c − o| > 24 × extent)
+  the integrand is smooth and the 24 × 24 Gauss rule of
+  :func:`~slidespin.footprint_pressure.area_rule` is used. Measured: the linear law given as
+  a map agrees with the exact kernel to ≤ 1e-12 with the ICR inside, at 1e-11 … 1e-3 of an
+  edge, near a ring's rim and outside; 2–30 ms per wrench (pure NumPy, ~1e4–1e5 map
+  evaluations), up to ~0.1 s with the ICR within 1e-10 of an edge.
 """
 
 from __future__ import annotations
@@ -45,7 +51,9 @@ __all__ = ["MAP_TOL", "footprint_wrench"]
 
 #: default target of the user-map quadrature (units of P and P × extent)
 MAP_TOL = 1e-9
-_MAP_NODES = (12, 24, 48, 96, 192)
+_MAP_OUTER = 12  # Gauss–Legendre nodes per angular panel
+_MAP_INNER = 24  # Gauss–Legendre nodes per ray interval
+_MAP_MAX_LEVELS = 40
 
 
 def footprint_wrench(
@@ -208,24 +216,71 @@ def _map_wrench_body(prep, tb, vx, vy, omega, tol):
         tx = -(tb[0, 0] * wx + tb[0, 1] * wy) * pw
         ty = -(tb[1, 0] * wx + tb[1, 1] * wy) * pw
         return np.array([tx.sum(), ty.sum()]), float(((x - gx) * ty - (y - gy) * tx).sum())
-    prev = None
-    for n in _MAP_NODES:
-        cur = _map_polar(prep, tb, cx, cy, omega, n)
-        if prev is not None:
-            err = max(np.abs(cur[:2] - prev[:2]).max(), abs(cur[2] - prev[2]) / ext)
-            if err <= tol:
-                return cur[:2], float(cur[2])
-        prev = cur
-    warnings.warn(
-        f"footprint_wrench: the pressure-map quadrature reached {err:.2e} (target {tol:.1e}) "
-        "with the ICR at ({cx:.6g}, {cy:.6g}) m", RuntimeWarning, stacklevel=4)
-    return prev[:2], float(prev[2])
+    return _map_adaptive(prep, tb, cx, cy, omega, tol, ext)
+
+
+def _map_adaptive(prep, tb, cx, cy, omega, tol, ext):
+    """Globally vectorised adaptive bisection of the angular panels (module notes)."""
+    br = _map_breaks(prep, cx, cy)
+    lo, hi = br[:-1], br[1:]
+    total = np.zeros(3)
+    err_left = 0.0
+    for _ in range(_MAP_MAX_LEVELS):
+        if lo.size == 0:
+            break
+        mid = 0.5 * (lo + hi)
+        both = _map_panels(prep, tb, cx, cy, omega, np.concatenate((lo, lo, mid)),
+                           np.concatenate((hi, mid, hi)), _MAP_INNER)
+        k = lo.size
+        whole, halves = both[:k], both[k:2 * k] + both[2 * k:]
+        diff = np.maximum(np.abs(halves[:, :2] - whole[:, :2]).max(axis=1),
+                          np.abs(halves[:, 2] - whole[:, 2]) / ext)
+        ok = (diff <= tol * (hi - lo) / (2.0 * np.pi)) | (hi - lo < 1e-13)
+        total += halves[ok].sum(axis=0)
+        lo, hi = np.concatenate((lo[~ok], mid[~ok])), np.concatenate((mid[~ok], hi[~ok]))
+    else:
+        if lo.size:
+            mid = 0.5 * (lo + hi)
+            rest = _map_panels(prep, tb, cx, cy, omega, np.concatenate((lo, mid)),
+                               np.concatenate((mid, hi)), _MAP_INNER)
+            total += rest.sum(axis=0)
+            err_left = lo.size
+    if err_left:
+        warnings.warn(
+            f"footprint_wrench: the pressure-map quadrature did not reach {tol:.1e} on "
+            f"{err_left} angular panel(s) with the ICR at ({cx:.6g}, {cy:.6g}) m",
+            RuntimeWarning, stacklevel=5)
+    return total[:2], float(total[2])
+
+
+def _handed(nx, ny, tx, ty):
+    """+1 if t̂ is n̂ turned counter-clockwise, else −1."""
+    return 1.0 if nx * ty - ny * tx > 0.0 else -1.0
 
 
 def _map_breaks(prep, cx, cy):
     br = []
     for poly in prep["polys"]:
         br.extend(np.arctan2(poly[:, 1] - cy, poly[:, 0] - cx))
+        # an edge close to c: seen from c, the area beyond it crowds into narrow angles next to
+        # its vertices; graded breaks at the directions of the edge points s_V/2^k from the foot
+        # of the perpendicular (k = 1, 2, ... while s_V/2^k > d) resolve that scale
+        q = np.roll(poly, -1, axis=0)
+        for (ax, ay), (bx, by) in zip(poly, q):
+            ln = math.hypot(bx - ax, by - ay)
+            tx, ty = (bx - ax) / ln, (by - ay) / ln
+            d = abs((ax - cx) * ty - (ay - cy) * tx)
+            if d == 0.0:
+                continue
+            nx, ny = ty, -tx
+            if (ax - cx) * nx + (ay - cy) * ny < 0.0:
+                nx, ny = -nx, -ny
+            psi0 = math.atan2(ny, nx)
+            for sv in ((ax - cx) * tx + (ay - cy) * ty, (bx - cx) * tx + (by - cy) * ty):
+                k = abs(sv) / 2.0
+                while k > d:
+                    br.append(psi0 + math.copysign(math.atan(k / d), sv) * _handed(nx, ny, tx, ty))
+                    k *= 0.5
     for ox, oy, r0, r1 in prep["rings"]:
         dx, dy = ox - cx, oy - cy
         dist = math.hypot(dx, dy)
@@ -241,17 +296,20 @@ def _map_breaks(prep, cx, cy):
     return np.concatenate((br, [br[0] + 2.0 * np.pi]))
 
 
-def _map_polar(prep, tb, cx, cy, omega, n):
-    """(Fx, Fy, M) in the body frame by the polar rule about the ICR with n nodes."""
+def _map_panels(prep, tb, cx, cy, omega, lo, hi, n_in):
+    """(Fx, Fy, M) in the body frame of each angular panel [lo, hi] of the polar rule about
+    the ICR: ``_MAP_OUTER`` Gauss–Legendre nodes in u, ψ = lo + (hi − lo)(1 − cos πu)/2, and
+    ``n_in`` Gauss–Legendre nodes on each interval of each ray inside the footprint."""
     gx, gy = prep["g"]
-    br = _map_breaks(prep, cx, cy)
-    x, w = np.polynomial.legendre.leggauss(n)
+    x, w = np.polynomial.legendre.leggauss(_MAP_OUTER)
+    uo = 0.5 * (x + 1.0)
+    wo = 0.5 * w
+    x, w = np.polynomial.legendre.leggauss(n_in)
     u = 0.5 * (x + 1.0)
     wu = 0.5 * w
-    lo = br[:-1, None]
-    width = (br[1:] - br[:-1])[:, None]
-    psi = (lo + width * 0.5 * (1.0 - np.cos(np.pi * u))).ravel()
-    wpsi = (width * 0.5 * np.pi * np.sin(np.pi * u) * wu).ravel()
+    width = (hi - lo)[:, None]
+    psi = (lo[:, None] + width * 0.5 * (1.0 - np.cos(np.pi * uo))).ravel()
+    wpsi = (width * 0.5 * np.pi * np.sin(np.pi * uo) * wo).ravel()
     ex, ey = np.cos(psi), np.sin(psi)
     # crossings of the full line c + ρ ê with the footprint's boundary, per direction
     cols = []
@@ -294,7 +352,5 @@ def _map_polar(prep, tb, cx, cy, omega, n):
     sg = 1.0 if omega > 0.0 else -1.0
     tx = -sg * (tb[0, 0] * -ey + tb[0, 1] * ex)  # −𝔽 ŵ, ŵ = sign(ω) ẑ×ê
     ty = -sg * (tb[1, 0] * -ey + tb[1, 1] * ex)
-    fx = (wpsi * k1 * tx).sum()
-    fy = (wpsi * k1 * ty).sum()
-    mm = (wpsi * (k2x * ty - k2y * tx)).sum()
-    return np.array([fx, fy, mm])
+    out = np.column_stack((wpsi * k1 * tx, wpsi * k1 * ty, wpsi * (k2x * ty - k2y * tx)))
+    return out.reshape(lo.size, _MAP_OUTER, 3).sum(axis=1)
