@@ -4,8 +4,21 @@ A sweep specification (TOML, see ``examples/sweep_*.toml``) fixes some parameter
 others on a grid or by random sampling. The cases are numbered deterministically and cut into
 chunks; each finished chunk is written to ``DIR/chunks/chunk-NNNNNN.parquet`` under a temporary
 name and renamed into place, and ``DIR/manifest.json`` records the spec, its hash, the package
-version and the chunks done. A sweep killed at any moment loses only its unfinished chunks;
-``resume=True`` computes exactly the missing ones.
+version, the chunks done and how many cases ended with each status and each ending
+(:mod:`slidespin.outcomes`). A sweep killed at any moment loses only its unfinished chunks;
+``resume=True`` checks every chunk file (readable Parquet, columns, row count, case numbers),
+recomputes damaged ones and computes the missing ones. ``DIR/.lock`` (pid and host) keeps a
+second sweep off a directory in use; a lock whose process is gone is taken over. A write that
+fails (disk full, permission denied) raises :class:`SweepError` naming the file and leaves a
+directory that ``resume=True`` completes.
+
+:func:`read_sweep` leaves out the cases whose status is unconverged (``max_steps``,
+``step_too_small``, ``non_finite``) unless ``include_unconverged=True``.
+
+Limits (checked before any work, with the key and the valid range in the message): at most
+:data:`MAX_CASES` cases, :data:`MAX_AXIS` values per grid axis or list, :data:`MAX_CHUNK`
+cases per chunk; specs are read like case files (:func:`slidespin.case.read_toml`: a regular
+UTF-8 file of at most 1 MB, nesting and integers bounded).
 
 Executors: by default all local cores (the compiled batch engine, :func:`simulate_cases`);
 a ``dask.distributed.Client`` (or any ``concurrent.futures.Executor``) runs consecutive chunks
