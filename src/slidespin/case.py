@@ -4,6 +4,13 @@ A case file has the tables ``[patch]``, ``[pressure]``, ``[friction]``, ``[body]
 ``[initial]`` and optionally ``[solver]`` (see ``examples/*.toml``). Every key is checked:
 an unknown key (a typo) or a missing required key is an error naming the table and the key,
 never silently ignored. Angles are in radians unless the key ends in ``_deg``.
+
+Files are read defensively (:func:`read_toml`, also used for sweep specs): only a regular file
+(a FIFO or a device such as ``/dev/zero`` is refused without waiting), at most
+:data:`MAX_FILE_BYTES` bytes, UTF-8 text, nesting of at most :data:`MAX_DEPTH` levels, integers
+within 64 bits; ``name`` has at most :data:`MAX_NAME_CHARS` characters and
+``[solver] max_steps`` at most :data:`MAX_STEPS_LIMIT`. Every refusal is one line naming the
+file and the key.
 """
 
 from __future__ import annotations
