@@ -675,3 +675,31 @@ def test_pressure_map_icr_near_an_edge(delta):
     e = footprint_wrench(fp, law, fr, vx, vy, 1.0)
     assert abs(w.force_x - e.force_x) < 1e-9 and abs(w.force_y - e.force_y) < 1e-9
     assert abs(w.moment - e.moment) < 1e-9 * 0.11
+
+
+def test_value_objects_pickle():
+    """Footprints and grid maps cross process boundaries (sweeps, Dask) intact."""
+    import pickle
+
+    for fp in FOOTPRINTS.values():
+        assert pickle.loads(pickle.dumps(fp)) == fp
+    xs = np.linspace(-0.2, 0.2, 6)
+    gmap = PressureMap.from_grid(xs, xs, 1.0 + np.add.outer(xs, xs) ** 2)
+    back = pickle.loads(pickle.dumps(gmap))
+    pts = np.array([[0.013, -0.07], [0.1, 0.1]])
+    assert np.array_equal(back(pts[:, 0], pts[:, 1]), gmap(pts[:, 0], pts[:, 1]))
+
+
+def test_collinear_vertices_change_nothing():
+    """Extra vertices along a side (collinear edges) leave the footprint and wrench as they are."""
+    plain = Rectangle(0.2, 0.1, angle=0.3).as_polygon()
+    p = plain.points
+    extra = Polygon([p[0], 0.5 * (p[0] + p[1]), p[1], p[2], 0.3 * p[2] + 0.7 * p[3], p[3]])
+    assert abs(extra.area - plain.area) < 1e-16
+    fr = TENSORS["skew"]
+    law = ss.LinearPressure(0.01, 0.004)
+    for icr in [(0.0, 0.0), tuple(0.5 * (p[0] + p[1])), (0.3, 0.1)]:
+        vx, vy = _velocity(plain, law, icr, 0.0)
+        a = footprint_wrench(plain, law, fr, vx, vy, 1.0)
+        b = footprint_wrench(extra, law, fr, vx, vy, 1.0)
+        assert abs(a.force_x - b.force_x) < 1e-15 and abs(a.moment - b.moment) < 1e-15

@@ -58,6 +58,29 @@ def _check_footprint(fp) -> None:
         )
 
 
+class _GridMap:
+    """The bicubic interpolating spline through grid samples, as a picklable callable."""
+
+    def __init__(self, xi, eta, values):
+        from scipy.interpolate import RectBivariateSpline
+
+        self.grid = (np.asarray(xi, dtype=float), np.asarray(eta, dtype=float),
+                     np.asarray(values, dtype=float))
+        self._spline = RectBivariateSpline(*self.grid, kx=3, ky=3, s=0)
+
+    def __call__(self, xi, eta):
+        xi = np.asarray(xi, dtype=float)
+        eta = np.broadcast_to(np.asarray(eta, dtype=float), xi.shape)
+        return self._spline.ev(xi.ravel(), eta.ravel()).reshape(xi.shape)
+
+    def __reduce__(self):
+        return (_GridMap, self.grid)
+
+    def __repr__(self) -> str:
+        x, y, _ = self.grid
+        return f"<bicubic spline on a {x.size} x {y.size} grid>"
+
+
 @dataclass(frozen=True, slots=True)
 class PressureMap:
     """A user pressure map p(ξ, η), normalised to the load on the footprint it is used with.
@@ -101,8 +124,6 @@ class PressureMap:
         The map is the interpolating bicubic spline (``scipy.interpolate.RectBivariateSpline``,
         s = 0); outside the grid it is extrapolated, so the grid should cover the footprint.
         """
-        from scipy.interpolate import RectBivariateSpline
-
         x = np.asarray(xi, dtype=float)
         y = np.asarray(eta, dtype=float)
         z = np.asarray(values, dtype=float)
@@ -117,13 +138,7 @@ class PressureMap:
                 f"values has shape {z.shape} (or non-finite entries); valid values: finite "
                 f"samples of shape ({x.size}, {y.size})"
             )
-        spline = RectBivariateSpline(x, y, z, kx=3, ky=3, s=0)
-
-        def f(xx, yy):
-            xx = np.asarray(xx, dtype=float)
-            return spline.ev(xx.ravel(), np.asarray(yy, dtype=float).ravel()).reshape(xx.shape)
-
-        return cls(f)
+        return cls(_GridMap(x, y, z))
 
     def __call__(self, xi, eta):
         return np.asarray(self.function(xi, eta), dtype=float)
