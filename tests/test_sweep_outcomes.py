@@ -282,3 +282,27 @@ def test_damaged_manifest_is_named(tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and "manifest.json" in err and "is unreadable" in err
     assert not (tmp_path / "t.csv").exists()
+
+
+def test_sweep_read_disk_full_writes_nothing(tmp_path, fake, capsys, monkeypatch):
+    import builtins
+
+    out = tmp_path / "s"
+    sweep(grid_spec(), out)
+    real_open = builtins.open
+
+    def full(path, mode="r", *args, **kwargs):
+        if "w" in mode and ".t.csv.tmp-" in str(path):
+            fh = real_open(path, mode, *args, **kwargs)
+            fh.write("case_id,partial\n")
+            fh.close()
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
+        return real_open(path, mode, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "open", full)
+    code = main(["sweep-read", str(out), "--csv", str(tmp_path / "t.csv")])
+    monkeypatch.setattr(builtins, "open", real_open)
+    assert code == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "disk full while writing" in err and "t.csv" in err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["s"]

@@ -327,18 +327,27 @@ def _read_table(args):
 
 def _cmd_sweep_read(args) -> int:
     import csv
-    import io
 
     check_output_path(args.csv, "--csv")
     table, left = _read_table(args)
     names = list(table)
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(names)
     n = len(table[names[0]]) if names else 0
-    for i in range(n):
-        w.writerow([_cell(table[k][i]) for k in names])
-    write_outputs([(args.csv, buf.getvalue().encode("utf-8"))])
+    # streamed to a temporary file renamed into place: whole or nothing, in bounded memory
+    parent = os.path.dirname(os.path.abspath(args.csv))
+    tmp = os.path.join(parent, f".{os.path.basename(args.csv)}.tmp-{os.getpid()}")
+    try:
+        with open(tmp, "w", newline="", encoding="utf-8") as fh:
+            w = csv.writer(fh, lineterminator="\n")
+            w.writerow(names)
+            for i in range(n):
+                w.writerow([_cell(table[k][i]) for k in names])
+        os.replace(tmp, args.csv)
+    except OSError as exc:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise ValueError(_write_failure(exc, args.csv)) from None
     note = ""
     if left:
         note = (f"; {sum(left.values())} unconverged cases left out ({_counts_text(left)}): "
