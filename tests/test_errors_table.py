@@ -215,7 +215,7 @@ def worker():
 
 @pytest.mark.parametrize("where, text, fragment", ROWS, ids=[f"{r[0]}:{r[1][:40]}" for r in ROWS])
 def test_bad_input_row(where, text, fragment, tmp_path, worker):
-    line, seconds = worker["w"].run((where, text, fragment), tmp_path)
+    line, _ = worker["w"].run((where, text, fragment), tmp_path)
     if line is None or line == "":
         worker["w"].close()
         worker["w"] = Worker()
@@ -237,7 +237,7 @@ def test_a_hanging_row_fails_instead_of_blocking(worker, monkeypatch):
     assert json.loads(line)["ok"]
 
 
-def test_good_inputs_used_by_the_table_are_good(tmp_path, capsys):  # noqa: D103
+def test_good_inputs_used_by_the_table_are_good(tmp_path, capsys):
     case = tmp_path / "case.toml"
     case.write_text(GOOD_CASE)
     assert main(["simulate", str(case), "--json"]) == 0

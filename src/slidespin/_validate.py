@@ -69,11 +69,11 @@ def bounded(name: str, value: object, lo: float, hi: float, unit: str = "") -> f
     The message names the parameter, the value, its unit and the closed range.
     """
     u = f" {unit}" if unit else ""
-    if isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_)):
-        if not -1e308 < value < 1e308:  # beyond float: OverflowError in float()
-            raise ValueError(
-                f"{name} = {_short(value)}{u} is invalid; valid range: {_fmt_range(lo, hi, unit)}"
-            )
+    huge_int = isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_))
+    if huge_int and not -1e308 < value < 1e308:  # beyond float: OverflowError in float()
+        raise ValueError(
+            f"{name} = {_short(value)}{u} is invalid; valid range: {_fmt_range(lo, hi, unit)}"
+        )
     x = _as_float(name, value)
     if not (math.isfinite(x) and lo <= x <= hi):
         raise ValueError(f"{name} = {x!r}{u} is invalid; valid range: {_fmt_range(lo, hi, unit)}")

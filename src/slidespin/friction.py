@@ -76,7 +76,7 @@ class FrictionTensor:
     angle: float = 0.0
     angle_deg: InitVar[float | None] = None
 
-    def __post_init__(self, angle_deg: float | None = None) -> None:
+    def __post_init__(self, angle_deg: float | None = None) -> None:  # noqa: RUF033 - InitVar
         object.__setattr__(self, "fx", v.bounded("fx", self.fx, *v.COEFFICIENT))
         object.__setattr__(self, "fy", v.bounded("fy", self.fy, *v.COEFFICIENT))
         f = v.finite("f", self.f)
