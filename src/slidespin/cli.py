@@ -1,5 +1,5 @@
 """Command-line interface: ``slidespin demo | simulate | sweep | sweep-read | sweep-plot |
-reproduce | bench``.
+reproduce | bench | fit``.
 
 Errors in the input (bad values, unknown keys, unreadable files, unwritable outputs, an
 unknown figure format) print one line naming the file, the parameter, its value and the valid
@@ -43,6 +43,7 @@ CLI_MAX_STEP = 0.05
 _PLUGINS = (
     ("reproduce", "slidespin.paper.cli", "reproduce the paper's tables and figures"),
     ("bench", "slidespin.bench", "benchmark the compiled engine against naive approaches"),
+    ("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion (CSV of t, x, y, phi)"),
 )
 
 ISSUE_URL = "https://github.com/slidespin/slidespin/issues"
