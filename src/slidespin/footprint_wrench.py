@@ -6,7 +6,7 @@ laws of :mod:`slidespin.footprint_pressure`. It returns the same :class:`~slides
 
 * Uniform and linear pressure: the compiled exact kernel
   (:mod:`slidespin._footprint_kernel`: closed forms for polygons, complete elliptic integrals
-  for disks and rings), to rounding (≲ 1e-13 P and P·L in the tests) for every motion state.
+  for disks and rings), to ≲ 3e-12 P and P·extent in the tests, for every motion state.
 * A user pressure map (:class:`~slidespin.footprint_pressure.PressureMap`): a quadrature in
   polar coordinates about the instantaneous centre of rotation c, which removes its
   singularity: on each ray c + ρ ê the slip direction is constant, the footprint cuts exact
