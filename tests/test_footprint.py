@@ -703,3 +703,23 @@ def test_collinear_vertices_change_nothing():
         a = footprint_wrench(plain, law, fr, vx, vy, 1.0)
         b = footprint_wrench(extra, law, fr, vx, vy, 1.0)
         assert abs(a.force_x - b.force_x) < 1e-15 and abs(a.moment - b.moment) < 1e-15
+
+
+def _inertia_for_ratio(fp, beta, radius):
+    """J(β) = β M_paper/F_τ in units of radius (MODEL §6): the I* = I/(m R²) whose terminal
+    ratio v/(Rω) is β, for an axisymmetric footprint under isotropic friction (ϑ = 0)."""
+    w = footprint_wrench(fp, ss.UniformPressure(), ss.FrictionTensor.isotropic(0.3),
+                         beta * radius, 0.0, 1.0)
+    return beta * w.moment_paper / (w.tangential * radius)
+
+
+def test_published_terminal_ratios():
+    """The uniform disk with I* = 1/2 stops with v/(aω) = 0.653 (Voyenli & Eriksen 1985;
+    Weidman & Malhotra 2007); a thin uniform ring with I* = 1 stops with v/(Rω) = 1 (MODEL §8)."""
+    from scipy.optimize import brentq
+
+    beta = brentq(lambda b: _inertia_for_ratio(Disk(0.2), b, 0.2) - 0.5, 0.3, 1.0, xtol=1e-12)
+    assert abs(beta - 0.653) < 5e-4
+    gaps = [1.0 - _inertia_for_ratio(Annulus(1.0 - eps, 1.0), 1.0, 1.0)
+            for eps in (1e-2, 1e-3, 1e-4)]
+    assert 0.0 < gaps[2] < 1e-3 and gaps[0] > gaps[1] > gaps[2]
