@@ -1,0 +1,450 @@
+"""Static friction: when a loaded body at rest stays at rest, and how it starts (MODEL §11).
+
+At rest, a contact point with pressure p can supply any traction in p·E, E = {𝔽 s : |s| ≤ 1}
+(the image of the unit disk under the friction tensor), so static friction can supply exactly
+the convex set of wrenches (Fx, Fy, M about G)
+
+    C = ∫ p E dS,       support function  h(d) = max_{W ∈ C} d·W = ∫ p |𝔽ᵀ (d_F + d_M r′⊥)| dS,
+
+for a wrench direction d = (d_F, d_M), with r′ = R(φ)(r − r_G) and r′⊥ = (−y′, x′). (The
+maximising traction at each point is p 𝔽 ẑ, ẑ = 𝔽ᵀc/|𝔽ᵀc|, c = d_F + d_M r′⊥.) C is symmetric,
+C = −C. A body at rest under an applied wrench W_a stays at rest iff −W_a ∈ C, that is iff the
+**load factor**
+
+    λ*(W_a) = min_{d·W_a > 0} h(d)/(d·W_a)            (the gauge of C at W_a, inverted)
+
+is at least 1: λ* is the factor by which the load can be scaled before the body slips. The
+minimising d is the outward normal of C where the ray through W_a leaves it.
+
+How h is computed (exactly, with the compiled kernel). With S = 𝔽ᵀ and L = J⁻¹ S J
+(J the quarter turn), S J r′ = J L r′, so 𝔽ᵀc = S d_F + d_M J (L r′): the field 𝔽ᵀc is the
+velocity field of the rigid twist (S d_F, d_M) of the *image* patch L·Ω, which is again an
+ellipse carrying the same pressure law (uniform, Boussinesq and Hertz depend on the patch's
+own quadratic form; the linear law stays linear with its centroid at the image of G). Hence
+h(d) = −W_iso·(S d_F, d_M), the dissipation of that twist under *isotropic unit* friction on
+the image patch, and the support point is ∇h(d) = (−𝔽 F_iso, −M_iso). One kernel call, 1e-12.
+
+For isotropic friction (𝔽 = μ 1) the support point in direction d is −W(d), minus the friction
+wrench of the twist d: C is bounded by the limit surface, and the twist is normal to it
+(maximum dissipation; Goyal, Ruina & Papadopoulos 1991). For an anisotropic tensor the law
+τ = −p 𝔽 ŵ is not of maximum dissipation and the limit surface may lie inside C.
+
+**Onset** (MODEL §11). If −W_a ∉ C the body starts moving in the direction u of the scaled
+twist (vx, vy, k ω)/s (k = √(I/m), s² = vx² + vy² + k² ω²) for which
+
+    A_a + A(u) = λ u,   λ > 0,
+
+with A(u) = (Fx, Fy, M/k)/m the friction accelerations of the sliding law and
+A_a = (Qx, Qy, T/k)/m the applied ones: M⁻¹(W_a + W(u)) is a positive multiple of the twist
+(M = diag(m, m, I)). λ = ds/dt is the initial rate at which s grows. For isotropic friction
+u = (A_a − P_C(A_a))/|A_a − P_C(A_a)| (the proximal point of the support function in the mass
+metric: the solution exists and is unique exactly when −W_a ∉ C). It is not the direction of
+the load in general: a force plus a torque start a mixed motion.
+
+Units: wrenches in N, N, N m; directions d = (d_Fx, d_Fy, d_M) pair with wrenches as
+d·W = d_Fx Fx + d_Fy Fy + d_M M, so d_M is in 1/m. Internally natural units (a = m = g = 1).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import minimize, root
+
+from . import _ode
+from . import _validate as v
+from ._kernel import STATUS_OK, wrench_world
+from .body import Body
+from .friction import FrictionTensor
+from .loads import Incline
+
+__all__ = [
+    "support_function",
+    "load_factor",
+    "can_stick",
+    "onset",
+    "Onset",
+    "StaticSupport",
+]
+
+_TOL = 1e-13  # kernel error target (units of the load and load × a)
+_J = np.array([[0.0, -1.0], [1.0, 0.0]])
+
+
+# ------------------------------------------------------------------------------------------
+# the support function through the image patch (natural units: a = 1, P = 1)
+# ------------------------------------------------------------------------------------------
+class StaticSupport:
+    """Support function h and support point ∇h of C at one body angle (natural units).
+
+    Built once per (body, friction, φ); evaluations cost one kernel call each. Wrench
+    directions d = (d_Fx, d_Fy, d_M) with d_M per unit a; h per unit normal load.
+    """
+
+    __slots__ = ("fw", "bn", "law", "xg", "yg", "psi", "s1", "S")
+
+    def __init__(self, par: np.ndarray, friction: FrictionTensor, phi: float) -> None:
+        fw = friction.world_matrix(phi)
+        self.fw = fw
+        self.S = fw.T.copy()
+        lmap = np.linalg.solve(_J, self.S @ _J)  # L = J⁻¹ S J
+        c, s = math.cos(phi), math.sin(phi)
+        rot = np.array([[c, -s], [s, c]])
+        bn = par[_ode.P_BN]
+        rg = np.array([par[_ode.P_XG], par[_ode.P_YG]])
+        centre = lmap @ (rot @ (-rg))  # image of the patch centre (G is at the origin)
+        u_, sig, vt = np.linalg.svd(lmap @ rot @ np.diag([1.0, bn]))
+        if np.linalg.det(u_) < 0.0:
+            u_[:, 1] *= -1.0
+        self.s1 = float(sig[0])
+        self.bn = float(sig[1] / sig[0])
+        self.psi = math.atan2(u_[1, 0], u_[0, 0])
+        g_img = -(u_.T @ centre) / sig[0]  # G in the image patch's own frame, units of s1
+        self.xg, self.yg = float(g_img[0]), float(g_img[1])
+        self.law = int(par[_ode.P_LAW])
+
+    def __call__(self, d):
+        """(h(d), ∇h(d)) for a direction d = (d_Fx, d_Fy, d_M) (natural units)."""
+        vx, vy = self.S @ np.asarray(d[:2], dtype=float)
+        om = float(d[2])
+        f1, f2, m, st = wrench_world(
+            self.bn, self.law, self.xg, self.yg, 1.0, 0.0, 0.0, 1.0, False, self.psi,
+            vx / self.s1, vy / self.s1, om, _TOL,
+        )
+        if st != STATUS_OK:  # pragma: no cover - guard
+            raise RuntimeError("statics: the wrench quadrature missed its error target")
+        mom = m * self.s1
+        h = -(f1 * vx + f2 * vy + mom * om)
+        grad = np.array([-(self.fw[0, 0] * f1 + self.fw[0, 1] * f2),
+                         -(self.fw[1, 0] * f1 + self.fw[1, 1] * f2), -mom])
+        return h, grad
+
+
+def _check(body, friction):
+    if not isinstance(body, Body):
+        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
+    if not isinstance(friction, FrictionTensor):
+        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+
+
+def _wrench3(name, w):
+    try:
+        items = [float(x) for x in w]
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {w!r} is invalid; valid values: (Fx, Fy, M)") from None
+    if len(items) != 3 or not all(math.isfinite(x) for x in items):
+        raise ValueError(f"{name} = {w!r} is invalid; valid values: three finite numbers (Fx, Fy, M)")
+    return np.array(items)
+
+
+def _normal(incline, normal_factor):
+    if incline is not None:
+        if not isinstance(incline, Incline):
+            raise ValueError(f"incline = {incline!r} is invalid; valid values: an Incline or None")
+        return incline.normal_factor
+    return v.positive("normal_factor", normal_factor)
+
+
+def support_function(body: Body, friction: FrictionTensor, direction, phi: float = 0.0,
+                     g: float = 9.81, *, incline: Incline | None = None):
+    """Support function h(d) of the static-friction set C and its support point (MODEL §11).
+
+    Parameters
+    ----------
+    body, friction : Body, FrictionTensor
+        The body and its friction tensor.
+    direction : (float, float, float)
+        Wrench direction d = (d_Fx, d_Fy, d_M) [1, 1, 1/m]; need not be a unit vector.
+    phi : float
+        Body angle [rad].
+    g : float
+        Gravitational acceleration [m/s²].
+    incline : Incline or None
+        A tilted plane scales the normal load, hence C, by cos α.
+
+    Returns
+    -------
+    h : float
+        max over C of d·W [N] (for d_F dimensionless).
+    point : ndarray, shape (3,)
+        The wrench of C where d is an outward normal: (Fx [N], Fy [N], M [N m]).
+
+    Examples
+    --------
+    >>> from slidespin import Body, Circle, UniformPressure, FrictionTensor
+    >>> disk = Body(Circle(0.1), UniformPressure(), mass=1.0)
+    >>> h, _ = support_function(disk, FrictionTensor(0.3, 0.3), (0.0, 0.0, 1.0), g=10.0)
+    >>> round(h, 12)  # (2/3) μ m g R, the torque a uniform disk resists
+    0.2
+    """
+    _check(body, friction)
+    d = _wrench3("direction", direction)
+    nf = _normal(incline, 1.0)
+    g = v.positive("g", g, "m/s^2")
+    a = body.patch.a
+    sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
+    h, grad = sup(np.array([d[0], d[1], d[2] * a]))
+    load = body.mass * g * nf
+    return float(h * load), np.array([grad[0] * load, grad[1] * load, grad[2] * load * a])
+
+
+def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
+    """(λ*, d*) for a wrench b ≠ 0 in natural units: min over d·b > 0 of h(d)/(d·b)."""
+    nb = float(np.linalg.norm(b))
+    bh = b / nb
+    # orthonormal frame (bh, e1, e2); d = bh + p e1 + q e2 covers the open half space d·b > 0
+    e1 = np.cross(bh, [1.0, 0.0, 0.0] if abs(bh[0]) < 0.9 else [0.0, 1.0, 0.0])
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(bh, e1)
+
+    def fun(pq):
+        d = bh + pq[0] * e1 + pq[1] * e2
+        h, grad = sup(d)
+        val = h / nb  # d·b = |b| since d·bh = 1
+        gd = grad / nb - val * bh  # gradient of h/(d·b) with respect to d
+        return val, np.array([gd @ e1, gd @ e2])
+
+    starts = [np.zeros(2)]
+    if d0 is not None and float(np.dot(d0, bh)) > 1e-3:
+        d0 = np.asarray(d0, float) / float(np.dot(d0, bh))
+        starts.insert(0, np.array([d0 @ e1, d0 @ e2]))
+    # a coarse look over the half space guards against a poor start (the ratio is
+    # quasi-convex in d, so any local minimum is global; this only saves iterations)
+    best = None
+    for p0 in starts:
+        r = minimize(fun, p0, jac=True, method="BFGS", options={"gtol": 1e-13, "maxiter": 400})
+        if best is None or r.fun < best.fun:
+            best = r
+    pq = best.x
+    d = bh + pq[0] * e1 + pq[1] * e2
+    return float(best.fun), d / np.linalg.norm(d)
+
+
+def load_factor(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
+                g: float = 9.81, *, incline: Incline | None = None) -> float:
+    """Load factor λ*: the applied wrench can be multiplied by λ* before the body slips.
+
+    λ* = min over wrench directions d with d·W_a > 0 of h(d)/(d·W_a) (the inverse of the
+    gauge of C at W_a; MODEL §11). The body at rest stays at rest iff λ* ≥ 1.
+
+    Parameters
+    ----------
+    body, friction : Body, FrictionTensor
+        The body and its friction tensor.
+    applied_wrench : (float, float, float)
+        W_a = (Qx [N], Qy [N], moment about G [N m]) in the fixed frame; gravity along a
+        slope included (:func:`slidespin.loads.applied_wrench` builds it).
+    phi : float
+        Body angle [rad].
+    g : float
+        Gravitational acceleration [m/s²].
+    incline : Incline or None
+        Scales the normal load (and C) by cos α. Its downhill pull is *not* added here: it
+        belongs to ``applied_wrench``.
+
+    Returns
+    -------
+    float
+        λ* (``inf`` for a zero load).
+
+    Examples
+    --------
+    >>> from slidespin import Body, Circle, UniformPressure, FrictionTensor
+    >>> disk = Body(Circle(0.1), UniformPressure(), mass=1.0)
+    >>> round(load_factor(disk, FrictionTensor(0.3, 0.3), (1.5, 0.0, 0.0), g=10.0), 12)
+    2.0
+    """
+    _check(body, friction)
+    w = _wrench3("applied_wrench", applied_wrench)
+    nf = _normal(incline, 1.0)
+    g = v.positive("g", g, "m/s^2")
+    load = body.mass * g * nf
+    a = body.patch.a
+    b = np.array([w[0] / load, w[1] / load, w[2] / (load * a)])
+    if not b.any():
+        return math.inf
+    sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
+    return _load_factor_nat(sup, b)[0]
+
+
+def can_stick(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
+              g: float = 9.81, *, incline: Incline | None = None) -> bool:
+    """Whether static friction can hold the body at rest under ``applied_wrench``.
+
+    True iff −W_a ∈ C (MODEL §11), i.e. :func:`load_factor` ≥ 1: a load exactly at the
+    threshold is held. Arguments as in :func:`load_factor`.
+
+    Examples
+    --------
+    >>> from slidespin import Body, Circle, UniformPressure, FrictionTensor
+    >>> disk = Body(Circle(0.1), UniformPressure(), mass=1.0)
+    >>> fr = FrictionTensor(0.3, 0.3)
+    >>> can_stick(disk, fr, (0.0, 0.0, 0.199), g=10.0), can_stick(disk, fr, (0.0, 0.0, 0.201), g=10.0)
+    (True, False)
+    """
+    return load_factor(body, friction, applied_wrench, phi, g, incline=incline) >= 1.0
+
+
+# ------------------------------------------------------------------------------------------
+# onset of slip
+# ------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class Onset:
+    """How a body at rest starts to slip under a load it cannot resist (MODEL §11).
+
+    Attributes
+    ----------
+    direction : ndarray, shape (3,)
+        Unit scaled twist u = (vx, vy, k ω)/s (dimensionless; k = √(I/m)).
+    twist : ndarray, shape (3,)
+        The same direction as (vx [m/s], vy [m/s], ω [rad/s]) per unit s [m/s].
+    acceleration : float
+        λ = ds/dt at the start [m/s²] (> 0).
+    residual : float
+        |A_a + A(u) − λ u| in units of g, the accuracy of the solve.
+    """
+
+    direction: np.ndarray
+    twist: np.ndarray
+    acceleration: float
+    residual: float
+
+
+def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False):
+    """Solve b + A(u) = λ u, λ > 0, for u on the unit sphere near u0 (natural units).
+
+    ``acc_fun(u)`` returns the friction accelerations A(u) (scaled coordinates).
+    Returns (u, λ, residual) or None. ``quick``: Newton from u0 only (u0 already close);
+    ``allow_negative``: accept λ ≤ 0 (a fixed point the body does not leave from rest).
+    """
+
+    def residual_at(u):
+        x = b + acc_fun(u)
+        return x - (u @ x) * u, float(u @ x)
+
+    def polish(u_start):
+        e1 = np.cross(u_start, [1.0, 0.0, 0.0] if abs(u_start[0]) < 0.9 else [0.0, 1.0, 0.0])
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(u_start, e1)
+
+        def eqs(pq):
+            u = u_start + pq[0] * e1 + pq[1] * e2
+            u = u / np.linalg.norm(u)
+            t, _ = residual_at(u)
+            return [t @ e1, t @ e2]
+
+        sol = root(eqs, np.zeros(2), method="hybr", options={"xtol": 1e-14})
+        u = u_start + sol.x[0] * e1 + sol.x[1] * e2
+        u /= np.linalg.norm(u)
+        t, lam = residual_at(u)
+        return u, lam, float(np.linalg.norm(t))
+
+    def flow(u, tau):
+        # explicit sphere-flow steps du/dτ = X − (u·X)u towards a sink, then re-normalise
+        h = 0.05 / max(1e-300, float(np.linalg.norm(b)) + 1.0)
+        for _ in range(int(tau / h)):
+            t, _ = residual_at(u)
+            u = u + h * t
+            u /= np.linalg.norm(u)
+        return u
+
+    if quick:
+        u, lam, res = polish(u0)
+        return (u, lam, res) if (lam > 0.0 or allow_negative) and res < 1e-11 else None
+    best = None
+    for uc in (u0, None):
+        u, lam, res = polish(flow(u0, 20.0) if uc is None else uc)
+        if (lam > 0.0 or allow_negative) and (best is None or res < best[2]):
+            best = (u, lam, res)
+        if best is not None and best[2] < 1e-12:
+            break
+    return best
+
+
+def _scaled_b(body, wrench, load_nf, g):
+    """Applied accelerations in scaled natural coordinates (Qx, Qy, T/k)/(m g)."""
+    k = body.radius_of_gyration / body.patch.a
+    mg = body.mass * g
+    return np.array([wrench[0] / mg, wrench[1] / mg, wrench[2] / (mg * body.patch.a * k)])
+
+
+def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
+          g: float = 9.81, *, incline: Incline | None = None) -> Onset | None:
+    """Direction and initial rate in which a body at rest starts to slip (MODEL §11).
+
+    Parameters
+    ----------
+    body, friction, applied_wrench, phi, g, incline
+        As in :func:`load_factor`; ``applied_wrench`` includes the slope's downhill pull.
+
+    Returns
+    -------
+    Onset or None
+        ``None`` when static friction holds the body (:func:`can_stick` is true).
+
+    Notes
+    -----
+    Solves A_a + A(u) = λ u with λ > 0 on the unit sphere of scaled twists, starting from
+    the outward normal of C found by :func:`load_factor` (exact for isotropic friction at
+    the threshold) and, if that fails, from a short run of the sphere flow
+    du/dτ = A_a + A − ((A_a + A)·u) u, of which the onset direction is an attracting fixed
+    point for isotropic friction (the tangent eigenvalues are −λ − the curvatures of h).
+
+    Examples
+    --------
+    >>> from slidespin import Body, Circle, UniformPressure, FrictionTensor
+    >>> disk = Body(Circle(0.1), UniformPressure(), mass=1.0)
+    >>> o = onset(disk, FrictionTensor(0.3, 0.3), (5.0, 0.0, 0.0), g=10.0)
+    >>> [round(float(x), 9) for x in o.direction], round(o.acceleration, 9)  # (5 − 3) N / 1 kg
+    ([1.0, 0.0, 0.0], 2.0)
+    """
+    _check(body, friction)
+    w = _wrench3("applied_wrench", applied_wrench)
+    nf = _normal(incline, 1.0)
+    g = v.positive("g", g, "m/s^2")
+    phi = v.finite("phi", phi)
+    par = body.kernel_params(friction, _TOL)
+    res = _onset_from_par(body, par, friction, phi, _scaled_b(body, w, nf, g), nf)
+    if res is None:
+        return None
+    u, lam, resid = res
+    k = body.radius_of_gyration
+    return Onset(u, np.array([u[0], u[1], u[2] / k]), lam * g, resid)
+
+
+def _friction_acc(par, phi, nf):
+    """u ↦ A(u) = cos α · (Fx, Fy, M/k) in scaled natural coordinates."""
+    k = par[_ode.P_K]
+    args = (par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
+            par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
+            par[_ode.P_BODY] != 0.0)
+
+    def acc(u):
+        fx, fy, m, st = wrench_world(*args, phi, u[0], u[1], u[2] / k, _TOL)
+        if st != STATUS_OK:  # pragma: no cover - guard
+            raise RuntimeError("statics: the wrench quadrature missed its error target")
+        return np.array([fx * nf, fy * nf, m * nf / k])
+
+    return acc
+
+
+def _onset_from_par(body, par, friction, phi, b, nf, sup=None):
+    """(u, λ, residual) of the onset for scaled applied accelerations b, or None if stuck.
+
+    ``b`` is in scaled natural coordinates (Qx, Qy, T/k)/(m g); ``nf`` = cos α.
+    """
+    if not b.any():
+        return None
+    k = par[_ode.P_K]
+    if sup is None:
+        sup = StaticSupport(par, friction, phi)
+    # wrench per unit normal load, natural units: (Qx, Qy, T)/(m g cos α)
+    bw = np.array([b[0], b[1], b[2] * k]) / nf
+    lam_star, d = _load_factor_nat(sup, bw)
+    if lam_star >= 1.0:
+        return None
+    u0 = np.array([d[0], d[1], k * d[2]])
+    u0 /= np.linalg.norm(u0)
+    return _onset_nat(_friction_acc(par, phi, nf), b, u0)
