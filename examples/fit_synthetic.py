@@ -67,9 +67,8 @@ def write_csv(runs, path: str = PATH) -> None:
     with open(path, "w", encoding="utf-8", newline="") as fh:
         fh.write("run,t,x,y,phi\n")
         for k, run in enumerate(runs):
-            for i in range(run["t"].size):
-                fh.write(f"{k},{run['t'][i]:.6f},{run['x'][i]:.6f},{run['y'][i]:.6f},"
-                         f"{run['phi'][i]:.5f}\n")
+            fh.writelines(f"{k},{run['t'][i]:.6f},{run['x'][i]:.6f},{run['y'][i]:.6f},"
+                         f"{run['phi'][i]:.5f}\n" for i in range(run["t"].size))
 
 
 def main() -> None:

@@ -35,7 +35,7 @@ def plate():
     return ss.Body(ss.Ellipse.from_eccentricity(A, 0.866), ss.UniformPressure(), mass=1.0)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def dense(friction, state, body=None):
     """A dense simulation (τ steps of 0.002): the truth that synthetic data sample."""
     return ss.simulate(body or plate(), friction, state, max_step=0.002)

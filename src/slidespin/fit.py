@@ -68,16 +68,16 @@ from .friction import FrictionTensor
 from .pressure import LinearPressure
 
 __all__ = [
-    "fit",
-    "FitResult",
-    "read_runs",
-    "as_runs",
-    "trajectory_at",
-    "FitWarning",
-    "IdentifiabilityWarning",
-    "PARAMETERS",
     "CHANNELS",
     "LOSSES",
+    "PARAMETERS",
+    "FitResult",
+    "FitWarning",
+    "IdentifiabilityWarning",
+    "as_runs",
+    "fit",
+    "read_runs",
+    "trajectory_at",
 ]
 
 PARAMETERS = ("fx", "fy", "f", "angle", "xi_c", "eta_c", "moment_of_inertia")
@@ -90,6 +90,8 @@ _PAIR = {"x": "vx", "y": "vy", "phi": "omega"}
 SINGULAR_TOL = 1.0
 #: a parameter with at least this weight in an undetermined direction is not identifiable
 WEIGHT_TOL = 0.1
+#: trust-region solver of least_squares ("lsmr" avoids a dense SVD of the tall Jacobian)
+TR_SOLVER = "lsmr"
 #: step budget of a simulation inside a fit before its end speed is checked
 QUICK_STEPS = 4000
 
@@ -605,7 +607,10 @@ def _noise_from_data(runs, c) -> float:
 
 def _undetermined(J, typ):
     """SVD of the Jacobian scaled by typical sizes; indices of undetermined parameters."""
-    _, s, vt = np.linalg.svd(J * typ[None, :], full_matrices=False)
+    # QR first: the SVD of the small triangle is cheap where a threaded SVD of the tall
+    # Jacobian can be slow on a busy machine
+    r = np.linalg.qr(J * typ[None, :], mode="r")
+    _, s, vt = np.linalg.svd(r)
     bad = set()
     for i in np.flatnonzero(s < SINGULAR_TOL):
         bad.update(int(j) for j in np.flatnonzero(np.abs(vt[i]) >= WEIGHT_TOL))
@@ -806,8 +811,8 @@ class FitResult:
             f"chi2 / dof        : {self.chi2:.6g} / {self.dof} = {self.reduced_chi2:.4g}",
             f"rms residual      : {rms}",
             f"noise sigma       : {sig}",
-            f"points, runs      : {self.n_points} values in {self.n_runs} run(s); "
-            f"{self.nfev} evaluations, {self.seconds:.3g} s",
+            (f"points, runs      : {self.n_points} values in {self.n_runs} run(s); "
+             f"{self.nfev} evaluations, {self.seconds:.3g} s"),
             f"converged         : {self.success} ({self.message})",
         ]
         return "\n".join(lines)
@@ -1002,14 +1007,14 @@ def fit(
 
     p = np.clip(prob.x0, prob.lb, prob.ub)
     fun = prob.residuals
-    jac = lambda q: prob.jacobian(q)  # noqa: E731
+    jac = lambda q: prob.jacobian(q)
     nfev = 0
     res = None
     caught: list[str] = []
     for _ in range(6):
         res = least_squares(fun, p, jac=jac, bounds=(prob.lb, prob.ub), x_scale=prob.typ,
                             loss=loss, f_scale=f_scale, method="trf", ftol=1e-9, xtol=1e-9,
-                            gtol=1e-9, max_nfev=max_nfev)
+                            gtol=1e-9, max_nfev=max_nfev, tr_solver=TR_SOLVER)
         p = res.x
         nfev += int(res.nfev)
         if not any(estimated.values()):
@@ -1069,8 +1074,9 @@ def fit(
     if not_ident:
         which = [names[j] for j in sorted(not_ident)]
         msgs.append((IdentifiabilityWarning,
-                     f"the data cannot determine {', '.join(which)}: a change of their typical "
-                     "size moves chi2 by less than 1 (standard errors reported as inf)"))
+                     (f"the data cannot determine {', '.join(which)}: a change of their "
+                      "typical size moves chi2 by less than 1 (standard errors reported as "
+                      "inf)")))
     pairs = []
     for i in range(n_par):
         for j in range(i + 1, n_par):

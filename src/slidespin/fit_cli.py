@@ -30,7 +30,7 @@ import warnings
 
 import numpy as np
 
-__all__ = ["configure", "run", "plot_fit", "parse_sigma", "load_fit_case"]
+__all__ = ["configure", "load_fit_case", "parse_sigma", "plot_fit", "run"]
 
 
 def configure(parser) -> None:
