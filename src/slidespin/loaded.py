@@ -358,7 +358,7 @@ def simulate_loaded(
     >>> tr = simulate_loaded(disk, FrictionTensor(0.3, 0.3), State(), incline=Incline(0.4),
     ...                      t_end=1.0, g=10.0)
     >>> a = 10.0 * (math.sin(0.4) - 0.3 * math.cos(0.4))
-    >>> tr.ending, abs(tr.x[-1] - a / 2) < 1e-9
+    >>> tr.ending, bool(abs(tr.x[-1] - a / 2) < 1e-9)
     ('moving_at_t_end', True)
     """
     if not isinstance(body, Body):
