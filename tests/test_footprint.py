@@ -723,3 +723,10 @@ def test_published_terminal_ratios():
     gaps = [1.0 - _inertia_for_ratio(Annulus(1.0 - eps, 1.0), 1.0, 1.0)
             for eps in (1e-2, 1e-3, 1e-4)]
     assert 0.0 < gaps[2] < 1e-3 and gaps[0] > gaps[1] > gaps[2]
+
+
+def test_arrays_are_copies():
+    fp = Rectangle(0.2, 0.1)
+    a = fp.to_arrays()
+    a.edges[:] = 0.0
+    assert np.abs(fp.to_arrays().edges).max() == 0.1

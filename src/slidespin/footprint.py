@@ -110,6 +110,11 @@ def _segments_intersect(p, q, r, s, eps) -> bool:
             or (o3 == 0 and on(r, s, p)) or (o4 == 0 and on(r, s, q)))
 
 
+def _edges(ccw: np.ndarray) -> np.ndarray:
+    """Edges (ξ₀, η₀, ξ₁, η₁) of the closed counter-clockwise polygon ``ccw``."""
+    return np.column_stack((ccw, np.roll(ccw, -1, axis=0)))
+
+
 def _signed_area(pts: np.ndarray) -> float:
     x, y = pts[:, 0], pts[:, 1]
     return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
@@ -232,9 +237,27 @@ class _Patch:
     def _raw_arrays(self):  # (edges, circles)
         raise NotImplementedError
 
+    def _cached(self, key, make):
+        """A derived value, computed once (the objects are immutable)."""
+        cache = self._cache
+        if cache is None:
+            cache = {}
+            object.__setattr__(self, "_cache", cache)
+        if key not in cache:
+            cache[key] = make()
+        return cache[key]
+
+    def _arrays_copy(self) -> FootprintArrays:
+        """Fresh copies of the cached arrays (callers may modify theirs)."""
+        a = self._cached("arrays", lambda: _arrays(*self._raw_arrays()))
+        return FootprintArrays(a.edges.copy(), a.circles.copy(), a.frame.copy())
+
     def _central(self):
         """(A, r_c, J): moments taken about a point of the footprint, so that a footprint far
         from the body origin loses no digits to cancellation."""
+        return self._cached("central", self._central_moments)
+
+    def _central_moments(self):
         e, c = self._raw_arrays()
         pts = np.vstack((e[:, :2], c[:, :2]))
         sx, sy = pts.mean(axis=0)
@@ -350,6 +373,7 @@ class Polygon(_Patch):
     vertices: tuple
     centre: tuple = (0.0, 0.0)
     angle: float = 0.0
+    _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         try:
@@ -378,13 +402,11 @@ class Polygon(_Patch):
         return p if _signed_area(p) > 0 else p[::-1].copy()
 
     def _raw_arrays(self):
-        p = self._ccw()
-        q = np.roll(p, -1, axis=0)
-        return np.column_stack((p, q)), np.zeros((0, 4))
+        return _edges(self._ccw()), np.zeros((0, 4))
 
     def to_arrays(self) -> FootprintArrays:
         """Plain arrays for the kernel: the edges, counter-clockwise (module notes)."""
-        return _arrays(*self._raw_arrays())
+        return self._arrays_copy()
 
     def outline(self) -> np.ndarray:
         """Closed outline (n + 1, 2) in the body frame [m]."""
@@ -418,6 +440,7 @@ class Rectangle(_Patch):
     width: float
     centre: tuple = (0.0, 0.0)
     angle: float = 0.0
+    _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "length", v.positive("length", self.length, "m"))
@@ -430,11 +453,13 @@ class Rectangle(_Patch):
         return Polygon(((-a, -b), (a, -b), (a, b), (-a, b)), self.centre, self.angle)
 
     def _raw_arrays(self):
-        return self.as_polygon()._raw_arrays()
+        a, b = 0.5 * self.length, 0.5 * self.width
+        corners = np.array([(-a, -b), (a, -b), (a, b), (-a, b)])  # counter-clockwise
+        return _edges(_place(corners, self.centre, self.angle)), np.zeros((0, 4))
 
     def to_arrays(self) -> FootprintArrays:
         """Plain arrays for the kernel (module notes)."""
-        return _arrays(*self._raw_arrays())
+        return self._arrays_copy()
 
     def outline(self) -> np.ndarray:
         """Closed outline (5, 2) in the body frame [m]."""
@@ -473,6 +498,7 @@ class Annulus(_Patch):
     outer_radius: float
     centre: tuple = (0.0, 0.0)
     angle: float = 0.0
+    _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         r = v.in_range("inner_radius", self.inner_radius, 0.0, math.inf, hi_open=True)
@@ -494,7 +520,7 @@ class Annulus(_Patch):
 
     def to_arrays(self) -> FootprintArrays:
         """Plain arrays for the kernel: a disk and, if any, the hole with sign −1."""
-        return _arrays(*self._raw_arrays())
+        return self._arrays_copy()
 
     def outlines(self, n: int = 181) -> list[np.ndarray]:
         """The outer circle and (if any) the hole, closed, in the body frame [m]."""
@@ -517,6 +543,7 @@ class Disk(Annulus):
         object.__setattr__(self, "outer_radius", v.positive("radius", radius, "m"))
         object.__setattr__(self, "centre", centre)
         object.__setattr__(self, "angle", angle)
+        object.__setattr__(self, "_cache", None)
         _placement(self)
 
     @property
@@ -641,6 +668,7 @@ class Pads(_Patch):
     """
 
     patches: tuple = field(default_factory=tuple)
+    _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         try:
@@ -681,7 +709,7 @@ class Pads(_Patch):
 
     def to_arrays(self) -> FootprintArrays:
         """Plain arrays for the kernel: every pad's edges and circles in one set."""
-        return _arrays(*self._raw_arrays())
+        return self._arrays_copy()
 
     def outlines(self, n: int = 181) -> list[np.ndarray]:
         """Closed outlines of every pad in the body frame [m]."""

@@ -260,8 +260,7 @@ def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float
     """
     _check_footprint(footprint)
     load = v.positive("load", load, "N")
-    arrays = footprint.to_arrays()
-    a = footprint.area
+    a, rc, jm = footprint._central()
     if isinstance(pressure, UniformPressure):
         return load / a, 0.0, 0.0
     if not isinstance(pressure, LinearPressure):
@@ -269,9 +268,10 @@ def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float
             f"pressure = {pressure!r} is invalid here; valid values: UniformPressure(), "
             "LinearPressure(xi_c, eta_c) (a PressureMap is not linear)"
         )
-    rc = np.array(footprint.centroid)
+    arrays = footprint.to_arrays()
+    rc = np.array(rc)
     rg = np.array([pressure.xi_c, pressure.eta_c])
-    g = np.linalg.solve(footprint.second_moment, a * (rg - rc))
+    g = np.linalg.solve(jm, a * (rg - rc))
     p0 = load / a * (1.0 - g @ rc)
     p1, p2 = load / a * g
     _check_nonnegative(arrays, (p0, p1, p2), pressure, load / a)
