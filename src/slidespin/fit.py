@@ -654,7 +654,8 @@ class FitResult:
     values : ndarray
         Their fitted values.
     covariance, correlation : ndarray
-        Covariance (JᵀJ)⁻¹ σ̂² (MODEL §12) and correlation of ``parameter_names``.
+        Covariance (JᵀJ)⁻¹ σ̂² (MODEL §12) and correlation of ``parameter_names`` (NaN in
+        the rows of parameters that are not identifiable).
     identifiable : dict
         For each of ``parameter_names``, whether the data determine it (module docstring).
     singular_values : ndarray
@@ -796,7 +797,8 @@ class FitResult:
         if len(names) > 1:
             lines.append("correlation:")
             for i, a in enumerate(names):
-                row = " ".join(f"{self.correlation[i, j]:+7.3f}" for j in range(len(names)))
+                row = " ".join(f"{self.correlation[i, j]:+7.3f}" if math.isfinite(
+                    self.correlation[i, j]) else f"{'n/a':>7}" for j in range(len(names)))
                 lines.append(f"  {a:<16} {row}")
         for k, st in enumerate(self.starts):
             lines.append(
@@ -1067,6 +1069,8 @@ def fit(
         not_ident |= _undetermined(J0, prob.typ)[2]
     for j in not_ident:
         se[j] = math.inf
+        corr[j, :] = corr[:, j] = math.nan  # meaningless for an undetermined parameter
+        corr[j, j] = 1.0
     names = prob.names
     identifiable = {name: (j not in not_ident) for j, name in enumerate(names)}
 
