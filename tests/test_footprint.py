@@ -730,3 +730,32 @@ def test_arrays_are_copies():
     a = fp.to_arrays()
     a.edges[:] = 0.0
     assert np.abs(fp.to_arrays().edges).max() == 0.1
+
+
+@pytest.mark.parametrize("scale", [1e-3, 1e3])
+def test_scale_invariance(scale):
+    """Lengths × λ and velocities × λ: the same force, the moment × λ (mm to km footprints)."""
+    fr = TENSORS["skew"]
+    base = Pads([Polygon(L_SHAPE), Annulus(0.02, 0.05, centre=(0.4, 0.1))])
+    big = Pads([Polygon([(scale * x, scale * y) for x, y in L_SHAPE]),
+                Annulus(0.02 * scale, 0.05 * scale, centre=(0.4 * scale, 0.1 * scale))])
+    for kind in ("uniform", "linear"):
+        law, _ = _law(base, kind)
+        law_big = law if kind == "uniform" else ss.LinearPressure(law.xi_c * scale,
+                                                                  law.eta_c * scale)
+        for vx, vy, om in [(0.1, 0.05, 1.0), (0.0, 0.0, 1.0), (3.0, -1.0, 1.0), (1.0, 0.0, 0.0)]:
+            a = footprint_wrench(base, law, fr, vx, vy, om)
+            b = footprint_wrench(big, law_big, fr, vx * scale, vy * scale, om)
+            assert abs(a.force_x - b.force_x) < 1e-13 and abs(a.force_y - b.force_y) < 1e-13
+            assert abs(a.moment - b.moment / scale) < 1e-13
+
+
+def test_triangulations_cover_the_polygons():
+    """Ear clipping (used by the overlap test and the map rule) covers each polygon exactly,
+    a comb whose notch touches a diagonal and a 256-gon included."""
+    comb = Polygon([(0, 0), (4, 0), (4, 1), (3, 1), (2, 0.5), (1, 1), (0, 1)])
+    for fp in [comb, _ngon(256, 1.0), Polygon(L_SHAPE), Polygon(ARROW[::-1])]:
+        t = fp.triangles()
+        cr = ((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
+              - (t[:, 1, 1] - t[:, 0, 1]) * (t[:, 2, 0] - t[:, 0, 0]))
+        assert np.all(cr > 0) and abs(0.5 * cr.sum() - fp.area) < 1e-14 * max(fp.area, 1.0)

@@ -165,14 +165,15 @@ def _ear_clip(pts: np.ndarray) -> np.ndarray:
     idx = list(range(len(pts)))
     tris = []
 
-    def inside(a, b, c, p):  # p in the closed triangle abc (ccw)
-        return (_cross(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1]) >= 0
-                and _cross(c[0] - b[0], c[1] - b[1], p[0] - b[0], p[1] - b[1]) >= 0
-                and _cross(a[0] - c[0], a[1] - c[1], p[0] - c[0], p[1] - c[1]) >= 0)
+    def inside(a, b, c, p, closed):  # p in the closed (or open) triangle abc (ccw)
+        s1 = _cross(b[0] - a[0], b[1] - a[1], p[0] - a[0], p[1] - a[1])
+        s2 = _cross(c[0] - b[0], c[1] - b[1], p[0] - b[0], p[1] - b[1])
+        s3 = _cross(a[0] - c[0], a[1] - c[1], p[0] - c[0], p[1] - c[1])
+        if closed:
+            return s1 >= 0 and s2 >= 0 and s3 >= 0
+        return s1 > 0 and s2 > 0 and s3 > 0
 
-    guard = 0
-    while len(idx) > 3 and guard < 10 * len(pts) ** 2:
-        guard += 1
+    def clip_one(closed):
         n = len(idx)
         for k in range(n):
             i0, i1, i2 = idx[k - 1], idx[k], idx[(k + 1) % n]
@@ -182,13 +183,18 @@ def _ear_clip(pts: np.ndarray) -> np.ndarray:
                 continue
             if cr == 0:  # collinear vertex: drop it, no triangle
                 idx.pop(k)
-                break
-            if any(inside(a, b, c, pts[j]) for j in idx if j not in (i0, i1, i2)):
+                return True
+            if any(inside(a, b, c, pts[j], closed) for j in idx if j not in (i0, i1, i2)):
                 continue
             tris.append((a, b, c))
             idx.pop(k)
-            break
-        else:  # pragma: no cover - a simple polygon always has an ear
+            return True
+        return False
+
+    while len(idx) > 3:
+        # a vertex of the remainder that merely touches a candidate ear (a degenerate but
+        # simple polygon) blocks the closed test only: then the open test is used
+        if not (clip_one(True) or clip_one(False)):  # pragma: no cover - always an ear
             raise RuntimeError("ear clipping failed")
     if len(idx) == 3:
         a, b, c = (pts[j] for j in idx)
