@@ -57,15 +57,24 @@ POLISH_MAX_MOVE = 1e-2
 P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range(11)
 NPAR = 11
 
-# integration status codes
-ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_SPIRAL = 0, 1, 2, 3, 4
-# each time s drops by a further e^-60 beyond ``s_drop`` while u has not converged: if |du/dτ|
-# has not halved and u has swept more than SPIRAL_ARC since the last check, in SPIRAL_WINDOWS
-# windows in a row, the body has stopped (to far below rounding) while its direction of
-# motion keeps turning: a spiral stop with no terminal direction
-LN_S_SPIRAL = -60.0
-SPIRAL_ARC = 1.0  # [rad] u must also have swept this arc between two checks
-SPIRAL_WINDOWS = 2  # ... in this many consecutive windows
+# integration status codes (indices into slidespin.outcomes.STATUSES; ST_SPIRAL is reported
+# as "stopped" with the ending "spiral")
+(ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_MARGINAL, ST_SADDLE,
+ ST_NON_FINITE, ST_SPIRAL) = range(8)
+#: |u₃| or |u₁₂| at or below which a terminal direction is pure sliding or pure spinning
+ENDING_TOL = 1e-6
+#: |λ|/|u·A| below which a fixed point is marginal: the direction approaches it like
+#: s^(|λ|/|u·A|), algebraically in the limit (a Table 2 boundary and its analogues)
+MARGIN = 1e-3
+#: |u₃| (|u₁₂|) below which the sign of the spin (the direction of the velocity) is at the
+#: level of the round-off of the friction moment (force) and no longer set by the physics
+EPS_INVARIANT = 1e-9
+# once s < s_drop s₀: every further drop of s by e^LN_S_WINDOW, a search for an attracting
+# fixed point near the current direction; if none has been seen while the direction swept an
+# arc of SPIRAL_ARC [rad] (one and a half turns of a great circle), it turns for ever: the
+# ω-limit set of the flow on the sphere is a closed orbit (Poincaré–Bendixson), a spiral stop
+LN_S_WINDOW = 30.0
+SPIRAL_ARC = 3.0 * math.pi
 
 
 @jit(error_model="numpy")
@@ -125,19 +134,70 @@ def rhs(par, y, out):
 
 
 @jit(error_model="numpy", inline="always")
+def tangent_jacobian(par, kc, W, uu, phi, t1, t2, jac, g):
+    """Jacobian of the sphere flow G(u) = A − (u·A)u in the tangent plane at the unit vector
+    ``uu`` (frozen φ), by central differences; fills the tangent basis ``t1``, ``t2``, the 2×2
+    ``jac`` (in that basis) and G(uu) in ``g``.
+
+    The basis: t1 from the axis least aligned with uu, t2 = uu × t1 (at the pole u = (0, 0, 1)
+    this is t1 = e_x, t2 = e_y). G is the first three components of :func:`_rhs` at ln s = 0;
+    one call site keeps the compiled code small (scalar loops: array expressions compile
+    slowly).
+    """
+    ax = 0 if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2]) else (
+        1 if abs(uu[1]) <= abs(uu[2]) else 2)
+    d = uu[ax]
+    for i in range(3):
+        t1[i] = (1.0 if i == ax else 0.0) - d * uu[i]
+    n1 = math.sqrt(t1[0] ** 2 + t1[1] ** 2 + t1[2] ** 2)
+    for i in range(3):
+        t1[i] /= n1
+    t2[0] = uu[1] * t1[2] - uu[2] * t1[1]
+    t2[1] = uu[2] * t1[0] - uu[0] * t1[2]
+    t2[2] = uu[0] * t1[1] - uu[1] * t1[0]
+    yp = np.zeros(NY)
+    yp[7] = phi
+    out = np.empty(NY)
+    hd = 1e-6
+    # G at uu (m = 0) and at uu ± hd t_j (m = 1..4), central differences along t_j
+    for m in range(5):
+        j = (m - 1) // 2
+        sg = 0.0 if m == 0 else (1.0 if m % 2 == 1 else -1.0)
+        for i in range(3):
+            yp[i] = uu[i] + sg * hd * (t1[i] if j == 0 else t2[i])
+        _rhs(par, kc, W, yp, out)
+        if m == 0:
+            for i in range(3):
+                g[i] = out[i]
+            continue
+        a0 = out[0] * t1[0] + out[1] * t1[1] + out[2] * t1[2]
+        a1 = out[0] * t2[0] + out[1] * t2[1] + out[2] * t2[2]
+        if m % 2 == 1:
+            jac[0, j] = a0
+            jac[1, j] = a1
+        else:
+            jac[0, j] = (jac[0, j] - a0) / (2.0 * hd)
+            jac[1, j] = (jac[1, j] - a1) / (2.0 * hd)
+
+
+@jit(error_model="numpy", inline="always")
+def _lam_max(jac):
+    """Largest real part of the eigenvalues of a 2×2 matrix."""
+    tr = jac[0, 0] + jac[1, 1]
+    disc = 0.25 * tr * tr - (jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0])
+    return 0.5 * tr + (math.sqrt(disc) if disc > 0.0 else 0.0)
+
+
+@jit(error_model="numpy", inline="always")
 def polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist):
     """Newton iteration for the fixed point u* of the sphere flow at frozen φ (MODEL §5–6).
 
-    Starts from ``u`` (close to u*); works in the tangent plane of the sphere with a
-    central-difference Jacobian. Returns (u*, converged, largest real part of the two
-    tangent eigenvalues, number of iterations). ``converged`` is false if the iteration
-    moves more than ``max_dist`` away from ``u`` or does not settle below 1e-13 within
-    ``max_iter`` iterations. ``kc``, ``W``: kernel constants and workspace.
-
-    The sphere flow G(u) = A − (u·A)u is the first three components of the right-hand side
-    (:func:`_rhs` at ln s = 0); one call site for it keeps the compiled code small.
+    Starts from ``u`` (close to u*); works in the tangent plane of the sphere with the
+    central-difference Jacobian of :func:`tangent_jacobian`. Returns (u*, converged, largest
+    real part of the two tangent eigenvalues, number of iterations). ``converged`` is false if
+    the iteration moves more than ``max_dist`` away from ``u`` or does not settle below 1e-13
+    within ``max_iter`` iterations. ``kc``, ``W``: kernel constants and workspace.
     """
-    # (scalar loops throughout: array expressions are slow to compile)
     nu = math.sqrt(u[0] ** 2 + u[1] ** 2 + u[2] ** 2)
     uu = np.empty(3)
     u0 = np.empty(3)
@@ -148,52 +208,16 @@ def polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist):
     t1 = np.empty(3)
     t2 = np.empty(3)
     jac = np.empty((2, 2))
-    yp = np.zeros(NY)
-    yp[7] = phi
-    out = np.empty(NY)
-    hd = 1e-6
     converged = False
     lam = 0.0
     it = 0
     for it in range(max_iter):
-        # orthonormal tangent basis (t1, t2) at uu, from the axis least aligned with uu
-        ax = 0 if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2]) else (
-            1 if abs(uu[1]) <= abs(uu[2]) else 2)
-        d = uu[ax]
-        for i in range(3):
-            t1[i] = (1.0 if i == ax else 0.0) - d * uu[i]
-        n1 = math.sqrt(t1[0] ** 2 + t1[1] ** 2 + t1[2] ** 2)
-        for i in range(3):
-            t1[i] /= n1
-        t2[0] = uu[1] * t1[2] - uu[2] * t1[1]
-        t2[1] = uu[2] * t1[0] - uu[0] * t1[2]
-        t2[2] = uu[0] * t1[1] - uu[1] * t1[0]
-        # G at uu (m = 0) and at uu ± hd t_j (m = 1..4), central differences along t_j
-        for m in range(5):
-            j = (m - 1) // 2
-            sg = 0.0 if m == 0 else (1.0 if m % 2 == 1 else -1.0)
-            for i in range(3):
-                yp[i] = uu[i] + sg * hd * (t1[i] if j == 0 else t2[i])
-            _rhs(par, kc, W, yp, out)
-            if m == 0:
-                for i in range(3):
-                    g[i] = out[i]
-                continue
-            a0 = out[0] * t1[0] + out[1] * t1[1] + out[2] * t1[2]
-            a1 = out[0] * t2[0] + out[1] * t2[1] + out[2] * t2[2]
-            if m % 2 == 1:
-                jac[0, j] = a0
-                jac[1, j] = a1
-            else:
-                jac[0, j] = (jac[0, j] - a0) / (2.0 * hd)
-                jac[1, j] = (jac[1, j] - a1) / (2.0 * hd)
+        tangent_jacobian(par, kc, W, uu, phi, t1, t2, jac, g)
         r0 = g[0] * t1[0] + g[1] * t1[1] + g[2] * t1[2]
         r1 = g[0] * t2[0] + g[1] * t2[1] + g[2] * t2[2]
         det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
-        tr = jac[0, 0] + jac[1, 1]
-        disc = 0.25 * tr * tr - det
-        lam = 0.5 * tr + (math.sqrt(disc) if disc > 0.0 else 0.0)
-        if det == 0.0:
+        lam = _lam_max(jac)
+        if det == 0.0 or not math.isfinite(det):
             break
         d0 = (-r0 * jac[1, 1] + r1 * jac[0, 1]) / det
         d1 = (-r1 * jac[0, 0] + r0 * jac[1, 0]) / det
@@ -203,7 +227,7 @@ def polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist):
         for i in range(3):
             uu[i] /= nu
         dist = math.sqrt((uu[0] - u0[0]) ** 2 + (uu[1] - u0[1]) ** 2 + (uu[2] - u0[2]) ** 2)
-        if dist > max_dist:
+        if not dist <= max_dist:
             break
         if math.sqrt(d0 * d0 + d1 * d1) < 1e-13:
             converged = True
@@ -233,8 +257,162 @@ def _err_norm(K, h, scale):
 
 
 @jit(error_model="numpy")
+def _equator_point(par, kc, W, u, phi):
+    """The pure-sliding fixed point (u₃ = 0) nearest the direction ``u``: Newton's method on
+    the tangential component of the flow along the invariant circle u₃ = 0 (pure translation:
+    the moment about G vanishes there). Returns (u*, converged)."""
+    th = math.atan2(u[1], u[0])
+    yp = np.zeros(NY)
+    yp[7] = phi
+    out = np.empty(NY)
+    hd = 1e-7
+    ok = False
+    for _ in range(40):
+        gv = np.empty(3)
+        for m in range(3):
+            t = th + (m - 1) * hd
+            yp[0] = math.cos(t)
+            yp[1] = math.sin(t)
+            yp[2] = 0.0
+            _rhs(par, kc, W, yp, out)
+            gv[m] = -math.sin(t) * out[0] + math.cos(t) * out[1]
+        der = (gv[2] - gv[0]) / (2.0 * hd)
+        if der == 0.0 or not math.isfinite(der):
+            break
+        step = gv[1] / der
+        th -= step
+        if abs(step) < 1e-14:
+            ok = True
+            break
+    us = np.zeros(3)
+    us[0] = math.cos(th)
+    us[1] = math.sin(th)
+    return us, ok
+
+
+@jit(error_model="numpy", inline="always")
+def rotationally_symmetric(par):
+    """True for a circular patch with a centred, axisymmetric pressure under a tensor that
+    commutes with rotations (fx = fy): every rotation of a fixed point about the vertical is a
+    fixed point too, so one tangent eigenvalue vanishes identically (a neutral direction along
+    that circle of fixed points, not a marginal one)."""
+    return (par[P_BN] == 1.0 and par[P_XG] == 0.0 and par[P_YG] == 0.0
+            and par[P_T00] == par[P_T11] and par[P_T01] == -par[P_T10])
+
+
+@jit(error_model="numpy")
+def _rel_lam(par, kc, W, us, phi):
+    """λ/|u·A| at the unit vector ``us``: the largest real part of the eigenvalues of the
+    sphere flow's tangent Jacobian over the decay rate of ln s (MODEL §9). Under rotational
+    symmetry (:func:`rotationally_symmetric`) the neutral eigenvalue along the circle of fixed
+    points is left out (away from the pole): λ is then the other one, the trace."""
+    t1 = np.empty(3)
+    t2 = np.empty(3)
+    jac = np.empty((2, 2))
+    g = np.empty(3)
+    tangent_jacobian(par, kc, W, us, phi, t1, t2, jac, g)
+    if rotationally_symmetric(par) and us[0] ** 2 + us[1] ** 2 > ENDING_TOL ** 2:
+        lam = jac[0, 0] + jac[1, 1]
+    else:
+        lam = _lam_max(jac)
+    yp = np.zeros(NY)
+    yp[0] = us[0]
+    yp[1] = us[1]
+    yp[2] = us[2]
+    yp[7] = phi
+    out = np.empty(NY)
+    _rhs(par, kc, W, yp, out)
+    return lam / max(abs(out[3]), 1e-300)
+
+
+@jit(error_model="numpy")
+def terminal_point(par, kc, W, u, phi, symmetric, max_iter, max_dist):
+    """The fixed point of the sphere flow that the direction ``u`` approaches, at frozen φ.
+
+    Newton's method first (:func:`polish_fixed_point`); where it fails because the Jacobian
+    is singular (a marginal fixed point), the invariant sets on which Table 2's boundaries
+    lie: the pole (pure spin about G, a fixed point for a centrally symmetric pressure) and
+    the equator (pure sliding), accepted only if marginal there. Returns (u*, found, λ/|u·A|,
+    right-hand-side calls).
+    """
+    us, ok, lam, nit = polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist)
+    calls = 5 * nit + 6
+    if ok:
+        return us, True, _rel_lam(par, kc, W, us, phi), calls
+    u12 = math.sqrt(u[0] ** 2 + u[1] ** 2)
+    cand = np.zeros(3)
+    found = False
+    if symmetric and u12 < 0.1:
+        cand[2] = 1.0 if u[2] >= 0.0 else -1.0
+        found = True
+    elif abs(u[2]) < 0.1:
+        cand, found = _equator_point(par, kc, W, u, phi)
+        calls += 120
+    if found:
+        rel = _rel_lam(par, kc, W, cand, phi)
+        if abs(rel) < MARGIN:
+            return cand, True, rel, calls
+    return us, False, math.nan, calls
+
+
+@jit(error_model="numpy")
+def _pure_spin_direction(par, kc, W, u_pre, phi):
+    """ϑ* of a pure-spinning ending (MODEL §9), or NaN where the velocity has no limiting
+    direction.
+
+    Near the pole u* = (0, 0, ±1) the vanishing velocity direction (u₁, u₂) obeys the linear
+    flow of the 2×2 tangent Jacobian J. Complex eigenvalues: it keeps turning (NaN). J ∝ the
+    identity: it is frozen, so the direction reached by the integration (``u_pre``) is the limit.
+    Real distinct eigenvalues: it tends to the eigenvector of the slower (larger) one, on the
+    side given by the component of ``u_pre`` along it (left eigenvector).
+    """
+    pole = np.zeros(3)
+    pole[2] = 1.0 if u_pre[2] >= 0.0 else -1.0
+    t1 = np.empty(3)
+    t2 = np.empty(3)
+    jac = np.empty((2, 2))
+    g = np.empty(3)
+    tangent_jacobian(par, kc, W, pole, phi, t1, t2, jac, g)
+    # J in the (u₁, u₂) coordinates: t1 = e_x, t2 = ±e_y
+    sy = t2[1]
+    a = jac[0, 0]
+    b = jac[0, 1] * sy
+    c = jac[1, 0] * sy
+    d = jac[1, 1]
+    half = 0.5 * (a + d)
+    # traceless part [[p, b], [c, -p]]: its size decides whether the direction moves at all
+    p = 0.5 * (a - d)
+    size = math.sqrt(p * p + b * b + c * c)
+    yp = np.zeros(NY)
+    yp[2] = pole[2]
+    yp[7] = phi
+    out = np.empty(NY)
+    _rhs(par, kc, W, yp, out)
+    rate = abs(out[3])  # the decay rate of ln s: the scale of every eigenvalue here
+    if not math.isfinite(size) or size <= 1e-6 * rate:
+        return math.atan2(u_pre[1], u_pre[0])  # J ∝ identity: the direction is frozen
+    disc = p * p + b * c
+    if disc < -1e-12 * rate * rate:
+        return math.nan  # complex eigenvalues: the direction keeps turning
+    lam = half + math.sqrt(max(disc, 0.0))
+    # right eigenvector of λ, and left eigenvector for the component along it
+    if abs(b) + abs(lam - a) >= abs(c) + abs(lam - d):
+        vx, vy = b, lam - a
+    else:
+        vx, vy = lam - d, c
+    if abs(c) + abs(lam - a) >= abs(b) + abs(lam - d):  # wᵀ(J − λ) = 0
+        wx, wy = c, lam - a
+    else:
+        wx, wy = lam - d, b
+    comp = (wx * u_pre[0] + wy * u_pre[1]) / (wx * vx + wy * vy)
+    if comp < 0.0:
+        vx, vy = -vx, -vy
+    return math.atan2(vy, vx)
+
+
+@jit(error_model="numpy")
 def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
-    """Integrate the regularised system from ``y0`` to the stop.
+    """Integrate the regularised system from ``y0`` to the stop and classify the stop.
 
     Parameters
     ----------
@@ -258,23 +436,55 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     Returns
     -------
     y_stop : ndarray (9,)
-        State at the stop (tail added; s = 0 there, stored as ln s = −inf).
+        State at the stop (tail added; s = 0 there, stored as ln s = −inf); its u is the
+        reported terminal direction (the analytic fixed point for ``ST_MARGINAL``, the saddle
+        for ``ST_SADDLE``).
     status : int
-        ``ST_STOPPED``, ``ST_SPIRAL`` (stopped, but the direction of motion keeps turning:
-        no terminal direction exists), ``ST_MAX_STEPS`` or ``ST_STEP_TOO_SMALL``.
+        ``ST_STOPPED``, ``ST_SPIRAL`` (stopped, but the direction of motion keeps turning: no
+        terminal direction exists), ``ST_MARGINAL``, ``ST_SADDLE``, ``ST_MAX_STEPS``,
+        ``ST_STEP_TOO_SMALL`` or ``ST_NON_FINITE``.
     n_steps, n_rhs, n_wrench_failed : int
         Accepted steps, right-hand-side calls, wrench evaluations above their error target.
     rate : float
         |u·A| at the stop (the final decay rate of ln s).
     rec : ndarray (n, 10)
         Records (τ, y) of accepted steps, including the start (empty unless ``record``).
+    term : ndarray (4,)
+        ϑ* (NaN where no limiting direction exists; the direction reached if not converged),
+        ln(s/s₀) down to which a ``saddle`` ending was observed (NaN otherwise), the largest
+        real part of the eigenvalues of the sphere flow at the reported fixed point relative to
+        the decay rate (λ/|u·A|), and β*/a = k u₁₂/u₃ of the reported direction (inf for
+        u₃ = 0).
+
+    Notes
+    -----
+    The stop is classified from the analysis of the fixed point u* (MODEL §9), not from the
+    last step: u* is polished by Newton's method at the frozen final φ and the eigenvalues of
+    the flow there decide between an exponential approach (``ST_STOPPED``), a marginal one
+    (|λ| < ``MARGIN`` |u·A|: an algebraic approach at a Table 2 boundary, reported at its
+    analytic limit) and a saddle. The spin can never change sign in exact arithmetic (pure
+    translation is an invariant set: the moment about G vanishes there), nor can the velocity
+    of G vanish exactly under a centrally symmetric pressure (pure spin is invariant); a
+    trajectory that comes within ``EPS_INVARIANT`` of either set and then leaves it has been
+    steered out by round-off, and is reported as a ``saddle`` passage at the energy where it
+    came that close.
     """
     y = y0.copy()
     nrm = math.sqrt(y[0] * y[0] + y[1] * y[1] + y[2] * y[2])
     y[0] /= nrm
     y[1] /= nrm
     y[2] /= nrm
-    ln_s_target = y0[3] + math.log(s_drop)
+    ln_s0 = y[3]
+    ln_s_target = ln_s0 + math.log(s_drop)
+    spin0 = y[2] != 0.0
+    slide0 = y[0] != 0.0 or y[1] != 0.0
+    sign3 = 1.0 if y[2] > 0.0 else -1.0
+    eps_inv = max(EPS_INVARIANT, 10.0 * atol)
+    # the last direction whose velocity part is still well above round-off and the
+    # integrator's absolute tolerance: where a pure-spinning ending's ϑ* is read
+    thr12 = min(1e-2, max(ENDING_TOL, 1e3 * atol))
+    u_dir = y[:3].copy()
+    symmetric = par[P_XG] == 0.0 and par[P_YG] == 0.0
     K = np.empty((_NS + 1, NY))
     f = np.empty(NY)
     yt = np.empty(NY)
@@ -289,28 +499,48 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     rec = np.empty((cap, NY + 1))
     nrec = 0
     tau = 0.0
+    term = np.empty(4)
+    term[0] = math.nan
+    term[1] = math.nan
+    term[2] = math.nan
     if record:
         rec[0, 0] = tau
         for i in range(NY):
             rec[0, 1 + i] = y[i]
         nrec = 1
+    status = ST_MAX_STEPS
+    finite = True
+    for i in range(NY):
+        if not math.isfinite(f[i]) or not (math.isfinite(y[i]) or i == 3):
+            finite = False
+    if not finite or not math.isfinite(ln_s0):
+        status = ST_NON_FINITE
+        max_steps = 0
     # initial step: resolve the sphere flow (rates are O(friction coefficient))
     fm = math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2 + f[3] ** 2)
-    h = min(h_max, 0.01 / max(fm, 1e-3))
-    status = ST_MAX_STEPS
+    h = min(h_max, 0.01 / max(fm, 1e-3)) if finite else 0.0
     nsteps = 0
     exponent = -1.0 / 8.0
     du_polish = math.inf  # |du/dτ| at the last polishing attempt
-    du_check = -1.0  # |du/dτ| when s first fell below target, then at each spiral check
-    ln_s_check = 0.0
-    arc = 0.0  # arc swept by u since the last spiral check [rad]
-    spiral_windows = 0  # consecutive checks that looked like a spiral
+    # near-invariant sets (MODEL §9): ln s when |u₃| (|u₁₂|) first fell below EPS_INVARIANT,
+    # and the direction where the flow was slowest while still close to the set
+    ln_inv3 = math.nan
+    ln_inv12 = math.nan
+    du_inv3 = math.inf
+    du_inv12 = math.inf
+    u_inv3 = np.zeros(3)
+    u_inv12 = np.zeros(3)
+    # windows of LN_S_WINDOW in ln s once s < s_drop s₀: fixed-point search and spiral test
+    ln_s_win = math.inf
+    arc = 0.0  # arc swept by u since the tail began or an attracting point was last seen
     tau_arc = 0.0
+    us_prev = np.zeros(3)  # the attracting fixed point found at the last window
+    d_ref = math.inf  # distance from it when first found
     while nsteps < max_steps:
         rejected = False
         while True:
-            if h < 1e-12 * (1.0 + tau):
-                status = ST_STEP_TOO_SMALL
+            if not h >= 1e-12 * (1.0 + tau):  # (also catches a NaN step)
+                status = ST_STEP_TOO_SMALL if h == h else ST_NON_FINITE
                 break
             for i in range(NY):
                 K[0, i] = f[i]
@@ -332,6 +562,9 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
             for i in range(NY):
                 scale[i] = atol + max(abs(y[i]), abs(ynew[i])) * rtol
             en = _err_norm(K, h, scale)
+            if not math.isfinite(en):
+                status = ST_NON_FINITE
+                break
             if en < 1.0:
                 if en == 0.0:
                     factor = 10.0
@@ -344,7 +577,7 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                 break
             h *= max(0.2, 0.9 * en**exponent)
             rejected = True
-        if status == ST_STEP_TOO_SMALL:
+        if status == ST_STEP_TOO_SMALL or status == ST_NON_FINITE:
             break
         nrm = math.sqrt(ynew[0] ** 2 + ynew[1] ** 2 + ynew[2] ** 2)
         for i in range(NY):
@@ -368,6 +601,23 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                 rec[nrec, 1 + i] = y[i]
             nrec += 1
         du = math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2)
+        u12 = math.sqrt(y[0] * y[0] + y[1] * y[1])
+        if u12 > thr12:
+            u_dir[0] = y[0]
+            u_dir[1] = y[1]
+            u_dir[2] = y[2]
+        if spin0 and (abs(y[2]) < eps_inv or y[2] * sign3 < 0.0) and ln_inv3 != ln_inv3:
+            ln_inv3 = y[3]
+        if ln_inv3 == ln_inv3 and abs(y[2]) < 1e-3 and du < du_inv3:
+            du_inv3 = du
+            for i in range(3):
+                u_inv3[i] = y[i]
+        if symmetric and slide0 and u12 < eps_inv and ln_inv12 != ln_inv12:
+            ln_inv12 = y[3]
+        if ln_inv12 == ln_inv12 and u12 < 1e-3 and du < du_inv12:
+            du_inv12 = du
+            for i in range(3):
+                u_inv12[i] = y[i]
         if y[3] < ln_s_target:
             if du < utol:
                 status = ST_STOPPED
@@ -380,38 +630,102 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                                                       POLISH_MAX_MOVE)
                 nrhs += 5 * nit
                 if ok and lam < 0.0:
-                    y[0] = us[0]
-                    y[1] = us[1]
-                    y[2] = us[2]
-                    fails += _rhs(par, kc, W, y, f)
-                    nrhs += 1
                     status = ST_STOPPED
                     break
             arc += du * (tau - tau_arc)
             tau_arc = tau
-            if du_check < 0.0:
-                du_check = du
-                ln_s_check = y[3] + LN_S_SPIRAL
+            if ln_s_win == math.inf:
+                ln_s_win = y[3] - LN_S_WINDOW
                 arc = 0.0
-            elif y[3] < ln_s_check:
-                # s fell by another e^60 (t, x, y, φ are converged far below rounding). A
-                # direction turning for ever has kept its rate of change and swept a large
-                # arc since the last check; one approaching a fixed point, however slowly
-                # (near a Table 2 boundary the approach is algebraic), moves less and less
-                if du > 0.5 * du_check and arc > SPIRAL_ARC:
-                    spiral_windows += 1
-                    if spiral_windows >= SPIRAL_WINDOWS:  # not a transient near a saddle
-                        status = ST_SPIRAL
+            elif y[3] < ln_s_win:
+                # s fell by another e^LN_S_WINDOW: t, x, y, φ have converged far below
+                # rounding and only the direction's limit is open. A fixed point that attracts
+                # (exponentially, or algebraically at a boundary) and that the direction has
+                # come to half its distance from (or within 1e-3) is the limit; a direction
+                # that sweeps SPIRAL_ARC with no attracting point near turns for ever
+                us, ok, rel, calls = terminal_point(par, kc, W, y[:3], y[7], symmetric, 40, 0.5)
+                nrhs += calls
+                attracting = ok and rel <= MARGIN
+                if attracting:
+                    d = math.sqrt((y[0] - us[0]) ** 2 + (y[1] - us[1]) ** 2
+                                  + (y[2] - us[2]) ** 2)
+                    same = math.sqrt((us[0] - us_prev[0]) ** 2 + (us[1] - us_prev[1]) ** 2
+                                     + (us[2] - us_prev[2]) ** 2) < 1e-8
+                    if not same:
+                        d_ref = d
+                        for i in range(3):
+                            us_prev[i] = us[i]
+                    if d < max(1e-3, 100.0 * atol) or d < 0.5 * d_ref:
+                        status = ST_STOPPED
                         break
-                else:
-                    spiral_windows = 0
-                du_check = du
-                ln_s_check = y[3] + LN_S_SPIRAL
-                arc = 0.0
+                    arc = 0.0
+                elif arc > SPIRAL_ARC:
+                    status = ST_SPIRAL
+                    break
+                ln_s_win = y[3] - LN_S_WINDOW
+    if status == ST_STOPPED:
+        # classify the stop from the fixed point and its eigenvalues (MODEL §9)
+        u_pre = u_dir
+        us, ok, rel, calls = terminal_point(par, kc, W, y[:3], y[7], symmetric, 60, 0.5)
+        nrhs += calls
+        if ok:
+            y[0] = us[0]
+            y[1] = us[1]
+            y[2] = us[2]
+        else:
+            rel = _rel_lam(par, kc, W, y[:3], y[7])
+        term[2] = rel
+        u12 = math.sqrt(y[0] * y[0] + y[1] * y[1])
+        if ln_inv3 == ln_inv3 and abs(y[2]) > ENDING_TOL:
+            # the spin came back from round-off: what the motion does down to that energy is
+            # to approach pure sliding (the invariant set ω = 0)
+            us, ok, lam, nit = polish_fixed_point(par, kc, W, u_inv3, y[7], 40, 0.05)
+            src = us if ok else u_inv3
+            n12 = math.sqrt(src[0] ** 2 + src[1] ** 2)
+            y[0] = src[0] / n12
+            y[1] = src[1] / n12
+            y[2] = 0.0
+            status = ST_SADDLE
+            term[1] = ln_inv3 - ln_s0
+        elif ln_inv12 == ln_inv12 and u12 > ENDING_TOL:
+            y[0] = u_inv12[0]
+            y[1] = u_inv12[1]
+            y[2] = 1.0 if u_inv12[2] >= 0.0 else -1.0
+            u_pre = u_inv12.copy()
+            status = ST_SADDLE
+            term[1] = ln_inv12 - ln_s0
+        elif rel > -MARGIN:
+            if rel < MARGIN:
+                status = ST_MARGINAL
+            elif not ((not spin0 and abs(y[2]) <= ENDING_TOL)
+                      or (not slide0 and symmetric and u12 <= ENDING_TOL)):
+                # held on an unstable fixed point (other than by an exact invariance)
+                status = ST_SADDLE
+                term[1] = y[3] - ln_s0
+        u12 = math.sqrt(y[0] * y[0] + y[1] * y[1])
+        if u12 <= ENDING_TOL:
+            y[0] = 0.0
+            y[1] = 0.0
+            y[2] = 1.0 if y[2] >= 0.0 else -1.0
+            term[0] = _pure_spin_direction(par, kc, W, u_pre, y[7])
+            nrhs += 5
+        else:
+            if abs(y[2]) <= ENDING_TOL:
+                y[0] /= u12
+                y[1] /= u12
+                y[2] = 0.0
+            term[0] = math.atan2(y[1], y[0])
+        fails += _rhs(par, kc, W, y, f)
+    # β*/a = k u₁₂/u₃ of the reported direction (computed here, so that simulate() and the
+    # batch agree to the last bit)
+    u12 = math.hypot(y[0], y[1])
+    term[3] = math.inf if y[2] == 0.0 else par[P_K] * u12 / y[2]
+    if status != ST_STOPPED and status != ST_MARGINAL and status != ST_SADDLE:
+        term[0] = math.atan2(y[1], y[0])  # not converged: the direction as reached
     # closed-form tail: ln s decays at the rate |u·A| once u has converged
     rate = -f[3]
     yend = y.copy()
-    if rate > 0.0:
+    if rate > 0.0 and math.isfinite(rate):
         s = math.exp(y[3])
         yend[4] += s / rate
         q = s * s / (2.0 * rate)
@@ -420,7 +734,7 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
         yend[7] += q * y[2] / par[P_K]
         yend[8] += q * math.sqrt(y[0] ** 2 + y[1] ** 2)
     yend[3] = -np.inf
-    return yend, status, nsteps, nrhs, fails, rate, rec[:nrec].copy()
+    return yend, status, nsteps, nrhs, fails, rate, rec[:nrec].copy(), term
 
 
 @jit(error_model="numpy")
@@ -474,6 +788,8 @@ def integrate_many(pars, init, rtol, atol, utol, s_drop, max_steps):
     y_stop : ndarray (N, NY)
         Stop states (a body at rest keeps its initial state, with ln s = −inf).
     status, n_steps, n_rhs, n_wrench_failed : ndarray (N,) of int64
+    term : ndarray (N, 4)
+        ϑ*, the saddle's ln(s/s₀), λ/|u·A| and β*/a per case (see :func:`integrate`).
     """
     n = init.shape[0]
     out = np.empty((n, NY))
@@ -481,6 +797,7 @@ def integrate_many(pars, init, rtol, atol, utol, s_drop, max_steps):
     steps = np.empty(n, dtype=np.int64)
     rhss = np.empty(n, dtype=np.int64)
     fails = np.empty(n, dtype=np.int64)
+    terms = np.empty((n, 4))
     no_record = max_steps < 0
     for i in prange(n):
         y0 = initial_state(pars[i], init[i, 0], init[i, 1], init[i, 2], init[i, 3],
@@ -492,16 +809,20 @@ def integrate_many(pars, init, rtol, atol, utol, s_drop, max_steps):
             steps[i] = 0
             rhss[i] = 0
             fails[i] = 0
+            for c in range(4):
+                terms[i, c] = math.nan
             continue
         # ``no_record`` is False as a variable: a literal False would compile integrate() a
         # second time, specialised, instead of reusing the version simulate() compiled
-        yend, st, ns, nr, nf, rate, rec = integrate(
+        yend, st, ns, nr, nf, rate, rec, term = integrate(
             pars[i], y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
         )
         for c in range(NY):
             out[i, c] = yend[c]
+        for c in range(4):
+            terms[i, c] = term[c]
         status[i] = st
         steps[i] = ns
         rhss[i] = nr
         fails[i] = nf
-    return out, status, steps, rhss, fails
+    return out, status, steps, rhss, fails, terms

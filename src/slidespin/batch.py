@@ -21,7 +21,8 @@ from . import _validate as v
 from .body import Body
 from .friction import FrictionTensor
 from ._cases import CASE_FIELDS, validated_columns
-from .simulate import ENDING_TOL, ENDINGS, STATUSES
+from .outcomes import ENDINGS, STATUSES
+from .simulate import ENDING_TOL, check_solver_options
 
 __all__ = ["StopResults", "simulate_many", "simulate_cases", "CASE_FIELDS"]
 
@@ -45,12 +46,16 @@ class StopResults:
         Distance travelled by G [m].
     beta_stop, theta_stop : ndarray
         Terminal ratio β* [m] (inf pure sliding, 0 pure spinning, NaN at rest) and the
-        terminal direction ϑ* [rad] (NaN at rest and for ``spiral`` endings, which have none:
-        see :class:`slidespin.Trajectory`).
+        terminal direction ϑ* [rad] (NaN where no limiting direction exists: at rest,
+        ``spiral`` endings, pure spinning with a turning velocity; see
+        :class:`slidespin.Trajectory`).
     ending_code, status_code : ndarray of int8
         Indices into :data:`ENDINGS` and status names; ``ending``/``status`` give strings.
     n_steps : ndarray of int
         Integrator steps per case.
+    saddle_energy : ndarray
+        For ``saddle`` statuses, the fraction of the initial kinetic energy down to which the
+        saddle's ending was observed (NaN otherwise; see :class:`slidespin.Trajectory`).
     """
 
     t_stop: np.ndarray
@@ -63,39 +68,44 @@ class StopResults:
     ending_code: np.ndarray
     status_code: np.ndarray
     n_steps: np.ndarray
+    saddle_energy: np.ndarray
 
     def __len__(self) -> int:
         return self.t_stop.size
 
+    def __repr__(self) -> str:
+        from collections import Counter
+
+        counts = Counter(self.status.tolist())
+        ends = Counter(self.ending.tolist())
+        fmt = lambda c: ", ".join(f"{k}: {n}" for k, n in sorted(c.items()))  # noqa: E731
+        return f"StopResults({len(self)} cases; status {{{fmt(counts)}}}; ending {{{fmt(ends)}}})"
+
+    def counts(self) -> dict:
+        """Number of cases per status and per ending: ``{"status": {...}, "ending": {...}}``."""
+        from collections import Counter
+
+        return {"status": dict(Counter(self.status.tolist())),
+                "ending": dict(Counter(self.ending.tolist()))}
+
     @property
     def ending(self) -> np.ndarray:
-        """Ending names (``mixed``, ``pure_sliding``, ``pure_spinning``, ``at_rest``)."""
+        """Ending names (:data:`slidespin.outcomes.ENDINGS`)."""
         return np.asarray(ENDINGS, dtype=object)[self.ending_code]
 
     @property
     def status(self) -> np.ndarray:
-        """Status names (``stopped``, ``max_steps``, ``step_too_small``, ``at_rest``)."""
-        names = np.empty(len(STATUSES), dtype=object)
-        for code, name in STATUSES.items():
-            names[code] = name
-        return names[self.status_code]
+        """Status names (:data:`slidespin.outcomes.STATUSES`)."""
+        return np.asarray(STATUSES, dtype=object)[self.status_code]
 
     def as_dict(self) -> dict:
         """Column name → array, with string columns for ending and status."""
         out = {k: getattr(self, k) for k in (
             "t_stop", "x_stop", "y_stop", "phi_stop", "path_length", "beta_stop", "theta_stop",
-            "n_steps")}
+            "saddle_energy", "n_steps")}
         out["ending"] = self.ending
         out["status"] = self.status
         return out
-
-
-def _check_options(rtol, max_steps):
-    """Validate the integrator options as :func:`slidespin.simulate` does."""
-    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
-        raise ValueError(f"max_steps = {max_steps!r} is invalid; valid range: integer >= 1")
-    return rtol, int(max_steps)
 
 
 def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -> StopResults:
@@ -119,7 +129,7 @@ def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -
     -------
     StopResults
     """
-    rtol, max_steps = _check_options(rtol, max_steps)
+    rtol, max_steps = check_solver_options(rtol, max_steps)
     col, inertia = validated_columns(cases)
     return _run(col, inertia, rtol, max_steps)
 
@@ -163,7 +173,7 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps) -> StopResults:
         t_stop=np.empty(n), x_stop=np.empty(n), y_stop=np.empty(n), phi_stop=np.empty(n),
         path_length=np.empty(n), beta_stop=np.empty(n), theta_stop=np.empty(n),
         ending_code=np.empty(n, dtype=np.int8), status_code=np.empty(n, dtype=np.int8),
-        n_steps=np.empty(n, dtype=np.int64),
+        n_steps=np.empty(n, dtype=np.int64), saddle_energy=np.empty(n),
     )
     fails = 0
     for lo in range(0, n, CHUNK):
@@ -180,41 +190,46 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps) -> StopResults:
         init[:, 3] = st["x"][lo:hi] / ac
         init[:, 4] = st["y"][lo:hi] / ac
         init[:, 5] = st["phi"][lo:hi]
-        yend, status, steps, _, nf = _ode.integrate_many(
+        yend, status, steps, _, nf, term = _ode.integrate_many(
             pars, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
         )
         fails += int((nf > 0).sum())
-        _stop_values(res, lo, hi, yend, status, steps, pars[:, _ode.P_K], ac, t_unit, st)
+        _stop_values(res, lo, hi, yend, status, steps, term, pars[:, _ode.P_K], ac, t_unit,
+                     st)
     if fails:  # pragma: no cover - guard
         raise RuntimeError(f"{fails} cases had wrench evaluations above their error target; "
                            "please report")
     return res
 
 
-def _stop_values(res, lo, hi, yend, status, steps, k, a, t_unit, st):
-    """Fill cases lo..hi of ``res`` from the stop states, exactly as simulate() does."""
+def _stop_values(res, lo, hi, yend, status, steps, term, k, a, t_unit, st):
+    """Fill cases lo..hi of ``res`` from the stop states, exactly as simulate() does
+    (:func:`slidespin.simulate._terminal_values`, vectorised)."""
     rest = status == _ode.ST_AT_REST
     u3 = yend[:, 2]
-    u12, theta = _ode.stop_direction(yend)
+    u12, _ = _ode.stop_direction(yend)
+    converged = np.isin(status, (_ode.ST_STOPPED, _ode.ST_MARGINAL, _ode.ST_SADDLE))
+    spiral = status == _ode.ST_SPIRAL
     # classification and β* from u*, then the spiral override
     ending = np.where(np.abs(u3) <= ENDING_TOL, 1, np.where(u12 <= ENDING_TOL, 2, 0))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        beta = k * u12 / u3 * a
-    beta = np.where(ending == 1, np.inf, beta)
-    beta = np.where(ending == 2, 0.0, beta)
-    spiral = status == _ode.ST_SPIRAL
-    beta = np.where(spiral & (np.abs(u3) > ENDING_TOL), np.nan, beta)
+    beta = term[:, 3].copy()
+    beta = np.where(converged & (ending == 1), np.inf, beta)
+    beta = np.where(converged & (ending == 2), 0.0, beta)
+    beta = np.where(spiral, np.where(np.abs(u3) > ENDING_TOL, np.nan, np.inf), beta)
+    theta = term[:, 0]
     ending = np.where(spiral, 4, ending)
     # a body at rest stays where it is
     res.ending_code[lo:hi] = np.where(rest, 3, ending)
     res.status_code[lo:hi] = np.where(spiral, _ode.ST_STOPPED, status)
-    res.beta_stop[lo:hi] = np.where(rest, np.nan, beta)
+    res.beta_stop[lo:hi] = np.where(rest, np.nan, beta * a)
     res.theta_stop[lo:hi] = np.where(rest | spiral, np.nan, theta)
     res.t_stop[lo:hi] = np.where(rest, 0.0, yend[:, 4] * t_unit)
     res.x_stop[lo:hi] = np.where(rest, st["x"][lo:hi], yend[:, 5] * a)
     res.y_stop[lo:hi] = np.where(rest, st["y"][lo:hi], yend[:, 6] * a)
     res.phi_stop[lo:hi] = np.where(rest, st["phi"][lo:hi], yend[:, 7])
     res.path_length[lo:hi] = np.where(rest, 0.0, yend[:, 8] * a)
+    res.saddle_energy[lo:hi] = np.where(np.isfinite(term[:, 1]), np.exp(2.0 * term[:, 1]),
+                                        np.nan)
     res.n_steps[lo:hi] = steps
 
 
@@ -259,8 +274,8 @@ def simulate_many(
         raise ValueError(
             f"initial_states has shape {st.shape}; valid: (N, 6) rows of (x, y, phi, vx, vy, omega)"
         )
-    rtol, max_steps = _check_options(rtol, max_steps)
-    g = v.positive("g", g, "m/s^2")
+    rtol, max_steps = check_solver_options(rtol, max_steps)
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     bad = ~np.isfinite(st)
     if bad.any():
         i, j = (int(x[0]) for x in np.nonzero(bad))

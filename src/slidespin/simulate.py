@@ -28,18 +28,33 @@ from . import _validate as v
 from ._kernel import wrench_array
 from .body import Body, State
 from .friction import FrictionTensor
+from .outcomes import ENDINGS, STATUSES, status_message
 
-__all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending"]
+__all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "status_name"]
 
-ENDINGS = ("mixed", "pure_sliding", "pure_spinning", "at_rest", "spiral")
-STATUSES = {
-    _ode.ST_STOPPED: "stopped",
-    _ode.ST_MAX_STEPS: "max_steps",
-    _ode.ST_STEP_TOO_SMALL: "step_too_small",
-    _ode.ST_AT_REST: "at_rest",
-    _ode.ST_SPIRAL: "stopped",
-}
-ENDING_TOL = 1e-6
+ENDING_TOL = _ode.ENDING_TOL
+
+
+#: largest step budget (the integrator counts steps in 64-bit integers; 1e9 steps of a few
+#: microseconds each is already an hour)
+MAX_STEPS_LIMIT = 1_000_000_000
+
+
+def check_solver_options(rtol, max_steps):
+    """Validate ``rtol`` in (0, 1e-3] and ``max_steps`` an integer in [1, 1e9]."""
+    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
+    if (isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer))
+            or not 1 <= max_steps <= MAX_STEPS_LIMIT):
+        raise ValueError(f"max_steps = {max_steps!r} is invalid; valid range: integer in "
+                         f"[1, {MAX_STEPS_LIMIT}]")
+    return rtol, int(max_steps)
+
+
+def status_name(code: int) -> str:
+    """Status name (:data:`slidespin.outcomes.STATUSES`) of an integrator status code; a spiral
+    stop is ``stopped`` (its ending says ``spiral``)."""
+    code = int(code)
+    return "stopped" if code == _ode.ST_SPIRAL else STATUSES[code]
 
 
 def classify_ending(u_plane: float, u_spin: float, tol: float = ENDING_TOL) -> str:
@@ -83,19 +98,33 @@ class Trajectory:
     stop_state : State
         Position and angle at the stop (velocities zero).
     beta_stop, theta_stop : float
-        Terminal ratio β* = lim v/ω [m] and terminal direction ϑ* [rad] (MODEL §5): +inf
-        for a pure-sliding ending, 0 for a pure-spinning one (ϑ* is then the limiting
-        direction of the vanishing velocity); NaN when the body starts at rest, and for a
-        ``spiral`` ending (see ``ending``).
+        Terminal ratio β* = lim v/ω [m] and terminal direction ϑ* [rad] of the velocity of G
+        (MODEL §5, §9), taken from the fixed point of the flow of the direction of motion
+        that the trajectory approaches, not from its last step: +inf for a pure-sliding
+        ending, 0 for a pure-spinning one. ϑ* is NaN where no limiting direction exists: a
+        pure-spinning ending whose vanishing velocity keeps turning, a ``spiral`` ending, a
+        body at rest. β* is NaN at rest and for a spiral with spin.
     ending : str
         ``mixed``, ``pure_sliding`` (ω/v → 0), ``pure_spinning`` (v/ω → 0), ``at_rest``, or
         ``spiral``: the body stops (t_stop, position and angle are converged) while the
         direction of its motion keeps turning, so there is no terminal direction; ϑ* is then
         NaN, and β* too unless the spin has died out first (β* = inf). This happens e.g. in
-        pure sliding under a skew tensor with |f| > |μ|/2, where 𝔽 has no real eigenvector.
+        pure sliding under a skew tensor with |f| > |μ|/2, where 𝔽 has no real eigenvector,
+        and on limit cycles of the direction of motion.
     status : str
-        ``stopped`` (the stop is reached and converged), ``max_steps``, ``step_too_small``
-        or ``at_rest``.
+        How far the reported stop can be trusted (:mod:`slidespin.outcomes`): ``stopped``
+        (converged; independent of ``rtol`` and ``max_step``), ``marginal`` (an algebraic
+        approach at a boundary between endings: β*, ϑ* are the analytic limit), ``saddle``
+        (round-off chooses the exit from a saddle: the values are the saddle's, valid down
+        to ``saddle_energy``), ``max_steps``, ``step_too_small``, ``non_finite`` (values as
+        reached, not converged) or ``at_rest``.
+    saddle_energy : float
+        For ``status == "saddle"``: the fraction of the initial kinetic energy down to which
+        the motion was observed to approach the saddle's ending; NaN otherwise.
+    eigenvalue_ratio : float
+        Largest real part of the eigenvalues of the direction flow at the terminal fixed point
+        divided by its decay rate |u·A| (negative: attracting; near 0: marginal); NaN where no
+        fixed point was reached.
     n_steps, n_rhs : int
         Integrator steps and right-hand-side evaluations.
     """
@@ -126,6 +155,21 @@ class Trajectory:
     friction: FrictionTensor = field(repr=False)
     initial_state: State = field(repr=False)
     g: float = 9.81
+    saddle_energy: float = math.nan
+    eigenvalue_ratio: float = math.nan
+
+    def __repr__(self) -> str:
+        return (
+            f"Trajectory(status={self.status!r}, ending={self.ending!r}, "
+            f"t_stop={self.t_stop:.6g} s, distance={self.distance:.6g} m, "
+            f"beta_stop={self.beta_stop:.6g} m, theta_stop={self.theta_stop:.6g} rad, "
+            f"n_steps={self.n_steps}, n_points={self.t.size})"
+        )
+
+    @property
+    def status_message(self) -> str:
+        """One-line explanation of :attr:`status`."""
+        return status_message(self.status)
 
     @property
     def distance(self) -> float:
@@ -161,6 +205,9 @@ class Trajectory:
             "theta_stop": num(self.theta_stop),
             "ending": self.ending,
             "status": self.status,
+            "status_message": self.status_message,
+            "saddle_energy": num(self.saddle_energy),
+            "eigenvalue_ratio": num(self.eigenvalue_ratio),
             "n_steps": int(self.n_steps),
         }
 
@@ -213,13 +260,15 @@ def simulate(
     initial_state : State
         Initial position, angle and velocities (SI).
     g : float, default 9.81
-        Gravitational acceleration [m/s²].
+        Gravitational acceleration [m/s²], in [1e-6, 1e6].
     rtol : float, default 1e-10
         Relative (and, in natural units, absolute) tolerance of the integrator, in (0, 1e-3].
-        The stop is declared when the direction of motion has converged to ``rtol``.
+        The stop values carry the integration's global error: measured over random cases,
+        t_stop, β* and ϑ* change by less than 1e-6 (relative, resp. rad) between rtol 1e-10
+        and 1e-12, and by up to ~1e3·rtol at looser tolerances; the ending does not change.
     max_steps : int, default 200000
-        Step budget; if exhausted, ``status`` is ``"max_steps"`` and the stop values are
-        those reached.
+        Step budget, at most 1e9; if exhausted, ``status`` is ``"max_steps"`` and the stop
+        values are those reached.
     max_step : float or None
         Largest step in the regularised time τ (dimensionless); smaller values give more
         points along the trajectory (for plotting and CSV export; ``slidespin demo`` uses
@@ -251,10 +300,8 @@ def simulate(
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
         )
-    g = v.positive("g", g, "m/s^2")
-    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    if isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer)) or max_steps < 1:
-        raise ValueError(f"max_steps = {max_steps!r} is invalid; valid range: integer >= 1")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    rtol, max_steps = check_solver_options(rtol, max_steps)
     h_max = math.inf if max_step is None else v.positive("max_step", max_step)
 
     a = body.patch.a
@@ -280,7 +327,7 @@ def simulate(
         [vxn / speed0, vyn / speed0, k * wn / speed0, math.log(speed0), 0.0,
          s0.x / a, s0.y / a, s0.phi, 0.0]
     )
-    yend, status, nsteps, nrhs, fails, rate, rec = _ode.integrate(
+    yend, status, nsteps, nrhs, fails, rate, rec, term = _ode.integrate(
         par, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
     )
     if fails:  # pragma: no cover - guard, not reached in tests
@@ -300,21 +347,9 @@ def simulate(
     theta = np.arctan2(u2, u1)
     c, sn = np.cos(theta), np.sin(theta)
     beta = _beta(u12, u3, k) * a
-    u1s, u2s, u3s = yend[0], yend[1], yend[2]
-    u12s = math.hypot(u1s, u2s)
-    ending = classify_ending(u12s, u3s)
-    beta_stop = float(_beta(u12s, u3s, k)) * a
-    theta_stop = math.atan2(u2s, u1s)
-    if ending == "pure_sliding":
-        beta_stop = math.inf  # ω/v → 0; the sign of the vanishing ω is not meaningful
-    elif ending == "pure_spinning":
-        beta_stop = 0.0
-    if status == _ode.ST_SPIRAL:
-        # the direction of motion turns for ever while the body stops: no terminal direction
-        ending = "spiral"
-        theta_stop = math.nan
-        if abs(u3s) > ENDING_TOL:
-            beta_stop = math.nan
+    ending, beta_stop, theta_stop = _terminal_values(
+        status, math.hypot(yend[0], yend[1]), yend[2], term[0], term[3])
+    beta_stop *= a
     stop = State(yend[5] * a, yend[6] * a, yend[7])
     return Trajectory(
         t=rows[:, 4] * t_unit,
@@ -336,8 +371,27 @@ def simulate(
         beta_stop=beta_stop,
         theta_stop=theta_stop,
         ending=ending,
-        status=STATUSES[int(status)],
+        status=status_name(status),
         n_steps=int(nsteps),
         n_rhs=int(nrhs),
+        saddle_energy=math.exp(2.0 * term[1]) if math.isfinite(term[1]) else math.nan,
+        eigenvalue_ratio=float(term[2]),
         **common,
     )
+
+
+def _terminal_values(status, u12, u3, theta_star, beta_nat):
+    """(ending, β*/a, ϑ*) of a stop from its reported direction (|u₁₂|, u₃) and the
+    integrator's ϑ* and k u₁₂/u₃ (MODEL §5, §9)."""
+    status = int(status)
+    if status == _ode.ST_SPIRAL:
+        # the direction of motion turns for ever while the body stops: no terminal direction
+        return "spiral", (math.inf if abs(u3) <= ENDING_TOL else math.nan), math.nan
+    ending = classify_ending(u12, u3)
+    if status in (_ode.ST_STOPPED, _ode.ST_MARGINAL, _ode.ST_SADDLE):
+        if ending == "pure_sliding":
+            return ending, math.inf, float(theta_star)  # the sign of a vanishing ω is noise
+        if ending == "pure_spinning":
+            return ending, 0.0, float(theta_star)
+    # mixed, or not converged: the direction as reached
+    return ending, float(beta_nat), float(theta_star)
