@@ -759,3 +759,9 @@ def test_triangulations_cover_the_polygons():
         cr = ((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
               - (t[:, 1, 1] - t[:, 0, 1]) * (t[:, 2, 0] - t[:, 0, 0]))
         assert np.all(cr > 0) and abs(0.5 * cr.sum() - fp.area) < 1e-14 * max(fp.area, 1.0)
+
+
+def test_extent():
+    assert Annulus(0.3, 0.5, centre=(1.0, 1.0)).extent == 0.5
+    assert abs(Rectangle(0.6, 0.8, angle=1.0).extent - 0.5) < 1e-15
+    assert abs(Polygon([(0, 0), (3, 0), (0, 3)]).extent - math.hypot(2, 1)) < 1e-15

@@ -291,6 +291,13 @@ class _Patch:
         return self._central()[2]
 
     @property
+    def extent(self) -> float:
+        """Largest distance from the area centroid to a point of the footprint [m]: the
+        radius of a disk or ring, the half-diagonal of a centred rectangle (a natural length
+        unit: it plays the role of the ellipse's a)."""
+        return float(self._cached("arrays", lambda: _arrays(*self._raw_arrays())).frame[2])
+
+    @property
     def polar_moment(self) -> float:
         """∫|r − r_c|² dS [m⁴]: the plate inertia of unit areal density about the centroid."""
         j = self.second_moment
