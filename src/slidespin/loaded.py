@@ -82,7 +82,8 @@ class LoadedTrajectory:
         (gravity along a slope included) [J] at the same instants.
     phases : tuple of (str, float, float)
         ``("stick", t0, t1)`` and ``("slip", t0, t1)`` intervals in order, covering
-        [0, t_final].
+        [0, t_final]. Without ``t_end`` the run ends when the body sticks (no final stick
+        interval).
     ending : str
         ``at_rest_throughout`` (never moved), ``stopped_stuck`` (moved, and is stuck at
         the end), ``moving_at_t_end``, or ``steady_sliding`` (moving at t_end under a
@@ -204,6 +205,7 @@ class _Problem:
         self.constant = load is None or load.is_constant
         self.n_rhs = 0
         self._support = {}
+        self._d_last = None
 
     def b(self, t, phi):
         """Applied accelerations (Qx, Qy, T_G/k)/(m g), scaled natural coordinates."""
@@ -277,7 +279,7 @@ class _Problem:
         w = np.array([bx, by, bm * self.k]) / self.nf
         if not w.any():
             return 0.0
-        lam, _ = _load_factor_nat(self.support(phi), w)
+        lam, self._d_last = _load_factor_nat(self.support(phi), w, self._d_last)
         return 1.0 / lam
 
     def onset(self, t, phi):
@@ -423,8 +425,7 @@ def simulate_loaded(
             if prob.gauge(t, pos[2]) <= 1.0:
                 t_exit = _stick_exit(prob, t, pos[2], t_end_n, scan, t_tol)
                 t_stop_stick = t_end_n if t_exit is None else t_exit
-                if math.isinf(t_stop_stick):
-                    phases.append(["stick", t, math.inf])
+                if math.isinf(t_stop_stick):  # no t_end: the run ends when the body sticks
                     break
                 phases.append(["stick", t, t_stop_stick])
                 t = t_stop_stick
@@ -452,16 +453,25 @@ def simulate_loaded(
             if method == "auto" and prob.stiffness(y0) > _STIFF:
                 phase_method = "Radau"
         else:
+            moved = True
             t_phase0 = t
             u = vel / speed
             y0 = np.concatenate([u, [math.log(speed), t, pos[0], pos[1], pos[2]], work])
             ln_stop = math.log(speed * _STOP_DROP)
-        y_end, rec, nst, reason = _slip(prob, y0, ln_stop, t_end_n, rtol, phase_method, h_max,
-                                        steps_left)
-        steps_left -= nst
-        for r in rec:
-            s = math.exp(r[3])
-            record(r[4], r[5:8], s * r[0:3], r[8:10])
+        while True:
+            # Radau while stiff; every time s has grown e^5-fold, look again
+            ln_switch = y0[3] + 5.0 if phase_method == "Radau" and method == "auto" else None
+            y_end, rec, nst, reason = _slip(prob, y0, ln_stop, t_end_n, rtol, phase_method,
+                                            h_max, steps_left, ln_switch)
+            steps_left -= nst
+            for r in rec:
+                s = math.exp(r[3])
+                record(r[4], r[5:8], s * r[0:3], r[8:10])
+            if reason != "switch":
+                break
+            y0 = y_end
+            if prob.stiffness(y0) <= _STIFF:
+                phase_method = "DOP853"
         t = float(y_end[4])
         pos = y_end[5:8].copy()
         work = y_end[8:10].copy()
@@ -616,8 +626,11 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
     return None
 
 
-def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left):
-    """Integrate one slip phase in τ; returns (y_end, recorded rows, steps, reason)."""
+def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=None):
+    """Integrate one slip phase in τ; returns (y_end, recorded rows, steps, reason).
+
+    ``reason``: ``stop``, ``t_end``, ``max_steps`` or ``switch`` (ln s reached ``ln_switch``).
+    """
 
     def ev_stop(tau, y):
         return y[3] - ln_stop
@@ -630,7 +643,14 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left):
 
     ev_end.terminal = True
     ev_end.direction = 1.0
-    events = [ev_stop] if math.isinf(t_end) else [ev_stop, ev_end]
+    def ev_switch(tau, y):
+        return y[3] - ln_switch
+
+    ev_switch.terminal = True
+    ev_switch.direction = 1.0
+    events = [ev_stop, ev_end]
+    if ln_switch is not None:
+        events.append(ev_switch)
     atol = np.full(10, rtol * 1e-2)
     implicit = method in ("Radau", "BDF", "LSODA")
     if implicit:
@@ -665,9 +685,13 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left):
                     ye[5:8] += 0.5 * s * s / rate * np.array([u[0], u[1], u[2] / prob.k])
                 rec.append(ye)
                 return ye, rec, steps, "stop"
-            ye = sol.y_events[1][0].copy()
+            if sol.t_events[1].size:
+                ye = sol.y_events[1][0].copy()
+                rec.append(ye)
+                return ye, rec, steps, "t_end"
+            ye = sol.y_events[2][0].copy()
             rec.append(ye)
-            return ye, rec, steps, "t_end"
+            return ye, rec, steps, "switch"
         rec.extend(sol.y[:, 1:].T)
         if steps >= steps_left:
             return y, rec, steps, "max_steps"

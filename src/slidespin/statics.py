@@ -209,14 +209,16 @@ def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
     starts = [np.zeros(2)]
     if d0 is not None and float(np.dot(d0, bh)) > 1e-3:
         d0 = np.asarray(d0, float) / float(np.dot(d0, bh))
-        starts.insert(0, np.array([d0 @ e1, d0 @ e2]))
-    # a coarse look over the half space guards against a poor start (the ratio is
-    # quasi-convex in d, so any local minimum is global; this only saves iterations)
+        starts.insert(0, np.array([d0 @ e1, d0 @ e2]))  # warm start first
+    # the ratio is quasi-convex in d (its sublevel sets are convex cones), so any local
+    # minimum is global; a second start only guards against a failed line search
     best = None
     for p0 in starts:
         r = minimize(fun, p0, jac=True, method="BFGS", options={"gtol": 1e-13, "maxiter": 400})
         if best is None or r.fun < best.fun:
             best = r
+        if r.success or np.linalg.norm(r.jac) < 1e-10:
+            break
     pq = best.x
     d = bh + pq[0] * e1 + pq[1] * e2
     return float(best.fun), d / np.linalg.norm(d)
