@@ -386,3 +386,17 @@ def test_read_runs_missing_file(tmp_path):
         read_runs(tmp_path / "nope.csv")
     with pytest.raises(ValueError, match="is a directory"):
         read_runs(tmp_path)
+
+
+def test_unfinished_quick_simulations_are_redone_in_full(monkeypatch):
+    """Inside a fit a simulation first gets a small step budget; one that ends still moving
+    must be run again with the full budget, so the result cannot depend on that budget."""
+    import slidespin.fit as fit_module
+
+    rng = np.random.default_rng(12)
+    runs = synthetic(TRUE, STATES[:1], 60, SIGMA, rng)
+    ref = fit(runs, plate(), TRUE, sigma=SIGMA)
+    monkeypatch.setattr(fit_module, "QUICK_STEPS", 3)
+    res = fit(runs, plate(), TRUE, sigma=SIGMA)
+    for name in ("fx", "fy", "f"):
+        assert res.estimates[name] == pytest.approx(ref.estimates[name], rel=1e-9)

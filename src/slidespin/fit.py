@@ -480,7 +480,9 @@ class _Problem:
             # the body visibly; only a motion still fast at the end needs the full budget
             k = body.radius_of_gyration
             s0 = math.sqrt(state.vx**2 + state.vy**2 + (k * state.omega) ** 2)
-            s_end = math.hypot(traj.speed[-1], k * traj.omega[-1])
+            # the speed at the last integrator step (the final row may already be the stop)
+            s_end = max(math.hypot(traj.speed[i], k * traj.omega[i])
+                        for i in range(max(0, traj.t.size - 2), traj.t.size))
             if not s_end <= 1e-9 * s0:
                 traj = simulate(body, fr, state, g=self.g, rtol=self.rtol,
                                 max_step=self.max_step)
@@ -783,8 +785,12 @@ class FitResult:
             "seconds": _num(self.seconds),
         }
 
-    def table(self) -> str:
-        """The estimates ± standard errors and the goodness of fit as text."""
+    def table(self, labels=None) -> str:
+        """The estimates ± standard errors and the goodness of fit as text.
+
+        ``labels`` names the runs (default 0, 1, ...), e.g. the ``run`` column of the CSV.
+        """
+        labels = [str(k) for k in range(self.n_runs)] if labels is None else list(labels)
         lines = [f"{'parameter':<18} {'estimate':>14} {'std error':>12}  95% interval"]
         for k, val in self.estimates.items():
             se = self.std_errors[k]
@@ -802,7 +808,7 @@ class FitResult:
                 lines.append(f"  {a:<16} {row}")
         for k, st in enumerate(self.starts):
             lines.append(
-                f"run {k} start       : x={st.x:.6g} m, y={st.y:.6g} m, phi={st.phi:.6g} rad, "
+                f"{'run ' + labels[k] + ' start':<18}: x={st.x:.6g} m, y={st.y:.6g} m, phi={st.phi:.6g} rad, "
                 f"vx={st.vx:.6g} m/s, vy={st.vy:.6g} m/s, omega={st.omega:.6g} rad/s"
             )
         rms = ", ".join(f"{c} {x:.3g} {_UNITS[c]}" for c, x in self.rms.items())

@@ -163,7 +163,7 @@ def run(args) -> int:
     else:
         print(f"data        : {args.data} ({len(runs)} run(s): {', '.join(labels)})")
         print(f"case        : {case.name or args.case} (frame {case.friction.frame})")
-        print(res.table())
+        print(res.table(labels))
     if files:
         write_outputs(files)
         if not args.json:
