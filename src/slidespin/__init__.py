@@ -4,7 +4,7 @@ The friction force and moment are integrated exactly over a finite elliptic cont
 for four pressure laws and a full 2×2 friction tensor, and the motion is integrated to its
 finite stop. Source: "About the movement of a solid body on a plane surface in accordance
 with elliptic contact area and anisotropic friction"; the model as built, with the paper's
-errata, is documented in MODEL.md.
+errata, is documented in docs/model.md.
 """
 
 from .body import Body, State

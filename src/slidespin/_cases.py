@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from . import _validate as v
 from .pressure import LAW_NAMES
 
 __all__ = ["CASE_FIELDS", "validated_columns"]
@@ -41,6 +42,12 @@ def _check(name, arr, ok, valid):
         # 1.5 rather than np.float64(1.5) in the message
         value = arr[i].item() if isinstance(arr[i], np.generic) else arr[i]
         raise ValueError(f"{name} = {value!r} (case {i}) is invalid; valid range: {valid}")
+
+
+def _in(name, arr, lo, hi):
+    with np.errstate(all="ignore"):
+        ok = np.isfinite(arr) & (arr >= lo) & (arr <= hi)
+    _check(name, arr, ok, f"[{lo:g}, {hi:g}]")
 
 
 def validated_columns(cases: dict):
@@ -82,14 +89,24 @@ def validated_columns(cases: dict):
             col[k] = arr
         else:
             col[k] = _column(k, val, n)
-    for k in ("a", "b", "fx", "fy", "mass", "g"):
-        _check(k, col[k], np.isfinite(col[k]) & (col[k] > 0), "finite and > 0")
-    for k in ("xi_c", "eta_c", "f", "angle", "x", "y", "phi", "vx", "vy", "omega"):
+    # the same ranges as the value objects (slidespin._validate; docs/errors.md says why):
+    # this path skips Body and State, so it must refuse what they refuse
+    for k, (lo, hi) in (("a", v.LENGTH), ("b", v.LENGTH), ("fx", v.COEFFICIENT),
+                        ("fy", v.COEFFICIENT), ("mass", v.MASS), ("g", v.GRAVITY)):
+        _in(k, col[k], lo, hi)
+    _in("b/a", col["b"] / col["a"], *v.ASPECT)
+    _in("f", col["f"], -v.SKEW, v.SKEW)
+    for k, lim in (("vx", v.SPEED), ("vy", v.SPEED), ("omega", v.SPIN), ("x", v.POSITION),
+                   ("y", v.POSITION)):
+        _in(k, col[k], -lim, lim)
+    for k in ("xi_c", "eta_c", "angle", "phi"):
         _check(k, col[k], np.isfinite(col[k]), "finite")
     inertia = col["moment_of_inertia"]
     plate = col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4
     inertia = np.where(np.isnan(inertia), plate, inertia)
     _check("moment_of_inertia", inertia, np.isfinite(inertia) & (inertia > 0), "finite and > 0")
+    _in("I/(m a^2) (moment_of_inertia / (mass a^2))", inertia / (col["mass"] * col["a"] ** 2),
+        *v.INERTIA_RATIO)
     is_lin = col["law"] == 1
     core = (col["xi_c"] / col["a"]) ** 2 + (col["eta_c"] / col["b"]) ** 2
     _check("xi_c, eta_c (core measure (xi_c/a)^2 + (eta_c/b)^2)", core,
