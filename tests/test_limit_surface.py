@@ -49,8 +49,8 @@ def _series(q, terms=90):
     for n in range(1, terms + 3):
         a.append(a[-1] * ((2 * n - 1) / (2 * n)) ** 2)
     b = [-a[n] / (2 * n - 1) for n in range(len(a))]
-    at = lambda n: a[n] if n >= 0 else 0.0  # noqa: E731
-    bt = lambda n: b[n] if n >= 0 else 0.0  # noqa: E731
+    at = lambda n: a[n] if n >= 0 else 0.0
+    bt = lambda n: b[n] if n >= 0 else 0.0
     f = sum((bt(n) + bt(n - 1) - at(n) + at(n - 1)) * q ** (n - 1) for n in range(1, terms))
     m = sum((4 * bt(n - 1) - 2 * bt(n) + 2 * at(n) - 5 * at(n - 1) + 3 * at(n - 2)) * q ** (n - 2)
             for n in range(2, terms))

@@ -192,7 +192,7 @@ def _ramp_truth(f0, t1, fc, m):
         return f0 * t1
 
     ta = t1 * fc / f0
-    vel = lambda t: (impulse(t) - impulse(ta) - fc * (t - ta)) / m  # noqa: E731
+    vel = lambda t: (impulse(t) - impulse(ta) - fc * (t - ta)) / m
     tb = brentq(vel, t1, 2 * t1 + 10.0, xtol=1e-15, rtol=1e-15)
     x = quad(vel, ta, t1, epsabs=1e-14, epsrel=1e-14)[0] + quad(
         vel, t1, tb, epsabs=1e-14, epsrel=1e-14, points=[2 * t1] if tb > 2 * t1 else None)[0]
@@ -207,7 +207,7 @@ def test_ramped_push_sticks_slips_and_sticks_again():
                          t_end=3.0, g=G)
     ta, tb, x = _ramp_truth(f0, t1, fc, m)
     assert [k for k, _, _ in tr.phases] == ["stick", "slip", "stick"]
-    (_, s0, s1), (_, p0, p1), (_, q0, q1) = tr.phases
+    (_, _, s1), (_, p0, p1), (_, _, q1) = tr.phases
     assert s1 == pytest.approx(ta, abs=1e-9) and p0 == s1
     assert p1 == pytest.approx(tb, abs=1e-8) and q1 == pytest.approx(3.0)
     assert tr.x[-1] == pytest.approx(x, rel=1e-8)

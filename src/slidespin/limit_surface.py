@@ -38,7 +38,7 @@ from .loads import Incline
 from .statics import StaticSupport
 from .wrench import friction_wrench
 
-__all__ = ["limit_surface", "LimitSurface", "sphere_directions", "QUARTIC_EXPONENTS"]
+__all__ = ["QUARTIC_EXPONENTS", "LimitSurface", "limit_surface", "sphere_directions"]
 
 #: exponents (i, j, k) of the 15 monomials w₁ⁱ w₂ʲ w₃ᵏ of the quartic, in this order
 QUARTIC_EXPONENTS = tuple(
@@ -181,13 +181,13 @@ class LimitSurface:
 
     def arrays(self) -> dict:
         """Every array and the fits, as written by :meth:`to_npz`."""
-        return dict(
-            vx=self.vx, vy=self.vy, omega=self.omega, force_x=self.force_x,
-            force_y=self.force_y, moment=self.moment, support=self.support,
-            dissipation_gap=self.dissipation_gap, length=self.length,
-            normal_load=self.normal_load, ellipsoid=self.ellipsoid, quartic=self.quartic,
-            quartic_exponents=np.array(QUARTIC_EXPONENTS),
-        )
+        return {
+            "vx": self.vx, "vy": self.vy, "omega": self.omega, "force_x": self.force_x,
+            "force_y": self.force_y, "moment": self.moment, "support": self.support,
+            "dissipation_gap": self.dissipation_gap, "length": self.length,
+            "normal_load": self.normal_load, "ellipsoid": self.ellipsoid,
+            "quartic": self.quartic, "quartic_exponents": np.array(QUARTIC_EXPONENTS),
+        }
 
     def to_npz(self, path) -> None:
         """Write every array and the fits to a NumPy ``.npz`` file."""

@@ -59,7 +59,7 @@ from .friction import FrictionTensor
 from .loads import Incline, Load
 from .statics import StaticSupport, _load_factor_nat, _onset_from_par, _onset_nat
 
-__all__ = ["simulate_loaded", "LoadedTrajectory", "LOADED_ENDINGS"]
+__all__ = ["LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
 
 LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
 _TOL = 1e-13
@@ -607,7 +607,7 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
     if prob.constant or math.isinf(t_end):
         return None
     h = scan if scan is not None else (t_end - t0) / 400.0
-    f = lambda tt: prob.gauge(tt, phi) - 1.0  # noqa: E731
+    f = lambda tt: prob.gauge(tt, phi) - 1.0
     ta, fa = t0, f(t0)
     while ta < t_end:
         tb = min(ta + h, t_end)

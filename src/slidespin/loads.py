@@ -22,19 +22,19 @@ from __future__ import annotations
 
 import math
 import numbers
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable, Union
 
 import numpy as np
 
 from . import _validate as v
 
-__all__ = ["Load", "Incline", "LOAD_FRAMES", "applied_wrench"]
+__all__ = ["LOAD_FRAMES", "Incline", "Load", "applied_wrench"]
 
 LOAD_FRAMES = ("plane", "body")
 
-ForceSpec = Union[tuple, Callable[[float], tuple]]
-TorqueSpec = Union[float, Callable[[float], float]]
+ForceSpec = tuple | Callable[[float], tuple]
+TorqueSpec = float | Callable[[float], float]
 
 
 def _check_pair(name: str, value) -> tuple[float, float]:

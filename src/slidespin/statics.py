@@ -61,12 +61,12 @@ from .friction import FrictionTensor
 from .loads import Incline
 
 __all__ = [
-    "support_function",
-    "load_factor",
-    "can_stick",
-    "onset",
     "Onset",
     "StaticSupport",
+    "can_stick",
+    "load_factor",
+    "onset",
+    "support_function",
 ]
 
 _TOL = 1e-13  # kernel error target (units of the load and load × a)
@@ -83,7 +83,7 @@ class StaticSupport:
     directions d = (d_Fx, d_Fy, d_M) with d_M per unit a; h per unit normal load.
     """
 
-    __slots__ = ("fw", "bn", "law", "xg", "yg", "psi", "s1", "S")
+    __slots__ = ("S", "bn", "fw", "law", "psi", "s1", "xg", "yg")
 
     def __init__(self, par: np.ndarray, friction: FrictionTensor, phi: float) -> None:
         fw = friction.world_matrix(phi)
@@ -95,7 +95,7 @@ class StaticSupport:
         bn = par[_ode.P_BN]
         rg = np.array([par[_ode.P_XG], par[_ode.P_YG]])
         centre = lmap @ (rot @ (-rg))  # image of the patch centre (G is at the origin)
-        u_, sig, vt = np.linalg.svd(lmap @ rot @ np.diag([1.0, bn]))
+        u_, sig, _ = np.linalg.svd(lmap @ rot @ np.diag([1.0, bn]))
         if np.linalg.det(u_) < 0.0:
             u_[:, 1] *= -1.0
         self.s1 = float(sig[0])
