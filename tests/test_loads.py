@@ -9,6 +9,7 @@ the work of gravity from the displacement alone, and the example scripts' pinned
 
 from __future__ import annotations
 
+import json
 import math
 import runpy
 from pathlib import Path
@@ -171,6 +172,7 @@ def test_coasting_and_spinning_disks_stop_at_the_closed_form_times():
     body = disk(r=r)
     tr = simulate_loaded(body, ss.FrictionTensor.isotropic(mu), ss.State(vx=1.2), g=G)
     assert tr.ending == "stopped_stuck" and tr.t[-1] == pytest.approx(1.2 / (mu * G), rel=1e-10)
+    assert tr.t_stop == tr.t[-1]
     assert tr.x[-1] == pytest.approx(1.2**2 / (2 * mu * G), rel=1e-10)
     spin = simulate_loaded(body, ss.FrictionTensor.isotropic(mu), ss.State(omega=20.0), g=G)
     t_c = 2 / 3 * mu * G * r
@@ -211,8 +213,10 @@ def test_ramped_push_sticks_slips_and_sticks_again():
     assert s1 == pytest.approx(ta, abs=1e-9) and p0 == s1
     assert p1 == pytest.approx(tb, abs=1e-8) and q1 == pytest.approx(3.0)
     assert tr.x[-1] == pytest.approx(x, rel=1e-8)
-    assert tr.ending == "stopped_stuck"
+    assert tr.ending == "stopped_stuck" and tr.t_stop == p1
     assert tr.energy_error < 1e-9 * f0 * x
+    assert json.loads(tr.to_json())["phases"][1][0] == "slip"
+    assert tr.to_csv().count("\n") == tr.t.size + 1
 
 
 def test_energy_balance_and_gravity_work_on_a_slope():
@@ -247,3 +251,17 @@ def test_example_puck_on_slope_outruns_a_block(tmp_path):
     block = 0.5 * G * (math.sin(math.radians(20)) - 0.3 * math.cos(math.radians(20)))
     assert block < dist < 0.5 * G * math.sin(math.radians(20))
     assert dist == pytest.approx(0.666402206, abs=2e-9)
+
+
+def test_thrown_up_a_steep_slope_stops_and_slides_back():
+    mu, alpha, v0, t_end = 0.3, 0.5, 1.5, 1.0
+    tr = simulate_loaded(disk(), ss.FrictionTensor.isotropic(mu), ss.State(vx=-v0),
+                         incline=Incline(alpha), t_end=t_end, g=G)
+    up = G * (math.sin(alpha) + mu * math.cos(alpha))
+    down = G * (math.sin(alpha) - mu * math.cos(alpha))
+    t_top = v0 / up
+    assert [k for k, _, _ in tr.phases] == ["slip", "slip"]
+    assert tr.phases[0][2] == pytest.approx(t_top, abs=1e-10)
+    x_end = -v0**2 / (2 * up) + 0.5 * down * (t_end - t_top) ** 2
+    assert tr.x[-1] == pytest.approx(x_end, abs=1e-9)
+    assert tr.vx[-1] == pytest.approx(down * (t_end - t_top), abs=1e-9)

@@ -134,6 +134,16 @@ class LoadedTrajectory:
         return [(a, b) for kind, a, b in self.phases if kind == "slip"]
 
     @property
+    def t_stop(self) -> float:
+        """Time [s] of the last stop: the end of the last slip when the run ends stuck
+        (``stopped_stuck``), 0 for ``at_rest_throughout``, NaN while moving."""
+        if self.ending == "at_rest_throughout":
+            return 0.0
+        if self.ending != "stopped_stuck":
+            return math.nan
+        return self.slip_intervals[-1][1]
+
+    @property
     def final_state(self) -> State:
         """State at the last recorded time."""
         return State(self.x[-1], self.y[-1], self.phi[-1], self.vx[-1], self.vy[-1],
@@ -149,6 +159,7 @@ class LoadedTrajectory:
         f = self.final_state
         return {
             "t_final": float(self.t[-1]),
+            "t_stop": None if math.isnan(self.t_stop) else self.t_stop,
             "x_final": f.x, "y_final": f.y, "phi_final": f.phi,
             "vx_final": f.vx, "vy_final": f.vy, "omega_final": f.omega,
             "ending": self.ending,
