@@ -175,3 +175,19 @@ def test_validation_messages():
         onset("disk", fr, (1.0, 0.0, 0.0))
     with pytest.raises(ValueError, match="incline"):
         load_factor(disk, fr, (1.0, 0.0, 0.0), incline=0.3)
+
+
+def test_critical_tilt_is_the_friction_angle_of_the_downhill_direction():
+    from slidespin.statics import critical_tilt
+
+    body = ss.Body(ss.Ellipse(0.1, 0.06), ss.HertzPressure(), 1.0)
+    assert critical_tilt(body, ss.FrictionTensor.isotropic(0.35), 1.1, 0.4) == pytest.approx(
+        math.atan(0.35), rel=1e-12)
+    # orthotropic, principal axes turned by 0.3: the force ellipse gives
+    # tan α_c = 1/√((cos δ′/fx)² + (sin δ′/fy)²), δ′ = δ − 0.3
+    fx, fy = 0.2, 0.5
+    fr = ss.FrictionTensor(fx, fy, angle=0.3)
+    for delta in (0.3, 1.0, 0.3 + math.pi / 2):
+        dp = delta - 0.3
+        expected = math.atan(1 / math.hypot(math.cos(dp) / fx, math.sin(dp) / fy))
+        assert critical_tilt(body, fr, delta) == pytest.approx(expected, rel=1e-10)

@@ -289,6 +289,37 @@ def can_stick(body: Body, friction: FrictionTensor, applied_wrench, phi: float =
     return load_factor(body, friction, applied_wrench, phi, g, incline=incline) >= 1.0
 
 
+def critical_tilt(body: Body, friction: FrictionTensor, downhill: float = 0.0,
+                  phi: float = 0.0) -> float:
+    """Tilt α_c [rad] above which the body at rest slides down a plane (MODEL §11).
+
+    On a plane tilted by α the applied wrench is m g sin α (d, 0) and C scales by cos α, so
+    the body holds iff tan α ≤ λ*(m g d) on the level plane: α_c = atan λ*(m g (cos δ, sin δ), 0).
+    For isotropic friction α_c = atan μ whatever the patch and pressure law.
+
+    Parameters
+    ----------
+    body, friction : Body, FrictionTensor
+        The body and its friction tensor.
+    downhill : float
+        Direction δ of steepest descent in the plane frame [rad].
+    phi : float
+        Body angle [rad].
+
+    Examples
+    --------
+    >>> from slidespin import Body, Circle, UniformPressure, FrictionTensor
+    >>> disk = Body(Circle(0.1), UniformPressure(), mass=1.0)
+    >>> round(critical_tilt(disk, FrictionTensor(0.3, 0.5), downhill=math.pi / 2), 12)
+    0.463647609001
+    """
+    _check(body, friction)
+    d = v.finite("downhill", downhill)
+    mg = body.mass * 9.81
+    return math.atan(load_factor(body, friction, (mg * math.cos(d), mg * math.sin(d), 0.0),
+                                 phi, 9.81))
+
+
 # ------------------------------------------------------------------------------------------
 # onset of slip
 # ------------------------------------------------------------------------------------------
