@@ -79,6 +79,9 @@ def test_simulate_loaded_validation():
                         load=Load(force=lambda t: (t, 0.0)))
     with pytest.raises(ValueError, match="load"):
         simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(), load=(1, 0), t_end=1)
+    with pytest.raises(ValueError, match="never stop"):
+        simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(vx=1.0),
+                        incline=Incline(0.5))
 
 
 # ------------------------------------------------------------------------------------------

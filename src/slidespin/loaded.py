@@ -330,8 +330,9 @@ def simulate_loaded(
     incline : Incline or None
         Tilted plane: normal load m g cos α, downhill pull m g sin α.
     t_end : float or None
-        End of the run [s]. ``None`` is allowed for a constant load only: the run then ends
-        when the body sticks (or after ``max_steps``).
+        End of the run [s]. ``None`` is allowed for a constant load that static friction
+        can hold at the initial angle: the run then ends when the body sticks (or after
+        ``max_steps``).
     g : float, default 9.81
         Gravitational acceleration [m/s²].
     rtol : float, default 1e-10
@@ -406,6 +407,12 @@ def simulate_loaded(
         if isinstance(val, bool) or not isinstance(val, (int, np.integer)) or val < 1:
             raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 1")
 
+    if math.isinf(t_end_n) and prob.gauge(0.0, initial_state.phi) > 1.0:
+        raise ValueError(
+            "t_end = None is invalid here: the load exceeds what static friction can hold "
+            f"(load factor {1.0 / prob.gauge(0.0, initial_state.phi):.6g} < 1), so the body "
+            "need never stop; give t_end [s]"
+        )
     a, k = prob.a, prob.k
     s0 = initial_state
     # recorded rows: t, x, y, phi, vx, vy, kω (natural), W_f, W_Q
