@@ -268,3 +268,39 @@ def test_thrown_up_a_steep_slope_stops_and_slides_back():
     x_end = -v0**2 / (2 * up) + 0.5 * down * (t_end - t_top) ** 2
     assert tr.x[-1] == pytest.approx(x_end, abs=1e-9)
     assert tr.vx[-1] == pytest.approx(down * (t_end - t_top), abs=1e-9)
+
+
+def test_tables_of_a_case_file():
+    from slidespin.loads import incline_from_table, load_from_table
+
+    load = load_from_table({"fx": 1.0, "fy": -2.0, "torque": 0.5, "frame": "body",
+                            "at": [0.01, 0.0]})
+    assert load.force == (1.0, -2.0) and load.torque == 0.5 and load.at == (0.01, 0.0)
+    ramp = load_from_table({"times": [0.0, 1.0, 2.0], "profile_fx": [0.0, 5.0, 0.0],
+                            "profile_fy": [0.0, 0.0, 0.0], "profile_torque": [0.0, 1.0, 0.0]})
+    assert ramp.wrench(0.25) == pytest.approx((1.25, 0.0, 0.25))
+    assert ramp.wrench(5.0) == (0.0, 0.0, 0.0) and not ramp.is_constant
+    slope = incline_from_table({"angle_deg": 30.0, "downhill_deg": 90.0})
+    assert slope.angle == pytest.approx(math.pi / 6) and slope.downhill == pytest.approx(math.pi / 2)
+    for bad, match in [({"fx": 1.0, "force": 2.0}, "unknown key 'force'"),
+                       ({"fx": 1.0, "times": [0.0, 1.0]}, "not both"),
+                       ({"times": [0.0, 1.0], "profile_fx": [0.0, 1.0]}, "profile_fy"),
+                       ({"times": [1.0, 0.0], "profile_fx": [0, 1], "profile_fy": [0, 1]},
+                        r"\[load\] times"),
+                       ({"frame": "world"}, r"\[load\] frame")]:
+        with pytest.raises(ValueError, match=match):
+            load_from_table(bad)
+    for bad, match in [({"downhill": 0.1}, "angle"), ({"angle": 2.0}, r"\[incline\] angle"),
+                       ({"angle": 0.1, "angle_deg": 5.0}, "both")]:
+        with pytest.raises(ValueError, match=match):
+            incline_from_table(bad)
+
+
+def test_piecewise_linear_ramp_matches_the_closed_form():
+    mu, m, f0, t1 = 0.3, 1.0, 5.0, 1.0
+    load = Load.piecewise_linear([0.0, t1, 2 * t1], [0.0, f0, 0.0], [0.0, 0.0, 0.0])
+    tr = simulate_loaded(disk(m=m), ss.FrictionTensor.isotropic(mu), ss.State(), load=load,
+                         t_end=2.5, g=G, scan_step=0.05)
+    ta, tb, x = _ramp_truth(f0, t1, mu * m * G, m)
+    assert tr.slip_intervals[0] == pytest.approx((ta, tb), abs=1e-8)
+    assert tr.x[-1] == pytest.approx(x, rel=1e-8)

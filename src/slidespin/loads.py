@@ -112,6 +112,48 @@ class Load:
         if self.at is not None:
             object.__setattr__(self, "at", _check_pair("at", self.at))
 
+    @classmethod
+    def piecewise_linear(cls, times, fx, fy, torque=None, frame: str = "plane",
+                         at=None) -> "Load":
+        """A load interpolated linearly between samples, constant beyond the first and last.
+
+        Parameters
+        ----------
+        times : sequence of float
+            Strictly increasing times [s] (at least 2).
+        fx, fy : sequence of float
+            Force components [N] at those times, in ``frame``.
+        torque : sequence of float or None
+            Torque [N m] at those times (default 0).
+        frame, at
+            As in :class:`Load`.
+
+        Examples
+        --------
+        >>> push = Load.piecewise_linear([0.0, 1.0, 2.0], [0.0, 5.0, 0.0], [0.0, 0.0, 0.0])
+        >>> push.force_at(0.5), push.force_at(3.0)
+        ((2.5, 0.0), (0.0, 0.0))
+        """
+        t = np.asarray(times, dtype=float)
+        cols = [np.asarray(c, dtype=float) for c in (fx, fy)]
+        cols.append(np.zeros_like(t) if torque is None else np.asarray(torque, dtype=float))
+        if t.ndim != 1 or t.size < 2 or not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
+            raise ValueError(f"times = {list(np.atleast_1d(t))!r} is invalid; valid values: "
+                             "at least 2 finite, strictly increasing times [s]")
+        for name, c in zip(("fx", "fy", "torque"), cols):
+            if c.shape != t.shape or not np.all(np.isfinite(c)):
+                raise ValueError(f"{name} = {list(np.atleast_1d(c))!r} is invalid; valid "
+                                 f"values: {t.size} finite numbers, one per time")
+        tt, a, b, m = (tuple(float(x) for x in arr) for arr in (t, *cols))
+
+        def force(time, tt=tt, a=a, b=b):
+            return (float(np.interp(time, tt, a)), float(np.interp(time, tt, b)))
+
+        def torque_fn(time, tt=tt, m=m):
+            return float(np.interp(time, tt, m))
+
+        return cls(force=force, torque=torque_fn if any(m) else 0.0, frame=frame, at=at)
+
     @property
     def is_constant(self) -> bool:
         """True when neither the force nor the torque depends on time."""
@@ -236,3 +278,85 @@ def applied_wrench(body, t: float, phi: float, load: Load | None = None,
         qx += gx
         qy += gy
     return (qx, qy, mz)
+
+
+#: keys of a ``[load]`` table in a case file (see :func:`load_from_table`)
+LOAD_KEYS = ("fx", "fy", "torque", "frame", "at", "times", "profile_fx", "profile_fy",
+             "profile_torque")
+#: keys of an ``[incline]`` table in a case file (see :func:`incline_from_table`)
+INCLINE_KEYS = ("angle", "angle_deg", "downhill", "downhill_deg")
+
+
+def _table_value(where, build, *args, **kwargs):
+    try:
+        return build(*args, **kwargs)
+    except ValueError as exc:
+        msg = str(exc)
+        raise ValueError(msg if msg.startswith("[") else f"[{where}] {msg}") from None
+
+
+def load_from_table(table: dict, where: str = "load") -> Load:
+    """Build a :class:`Load` from a ``[load]`` TOML table; every key is checked.
+
+    A constant load takes ``fx``, ``fy`` [N], ``torque`` [N m], ``frame`` ("plane" or
+    "body") and ``at`` = [ξ, η] [m] (body frame, from the patch centre; default G). A load
+    varying in time takes ``times`` [s] with ``profile_fx``, ``profile_fy`` [N] and
+    optionally ``profile_torque`` [N m] at those times, interpolated linearly
+    (:meth:`Load.piecewise_linear`), instead of ``fx``, ``fy``, ``torque``.
+
+    Examples
+    --------
+    >>> load_from_table({"fx": 2.0, "torque": 0.1}).wrench(0.0)
+    (2.0, 0.0, 0.1)
+    """
+    if not isinstance(table, dict):
+        raise ValueError(f"[{where}] must be a table, got {table!r}")
+    unknown = sorted(set(table) - set(LOAD_KEYS))
+    if unknown:
+        raise ValueError(f"unknown key {unknown[0]!r} in [{where}]; valid keys: "
+                         + ", ".join(sorted(LOAD_KEYS)))
+    frame = table.get("frame", "plane")
+    at = table.get("at")
+    profile = [k for k in ("times", "profile_fx", "profile_fy", "profile_torque") if k in table]
+    if profile:
+        constant = [k for k in ("fx", "fy", "torque") if k in table]
+        if constant:
+            raise ValueError(f"[{where}] give either {constant[0]!r} (a constant load) or "
+                             "times/profile_* (a load varying in time), not both")
+        for key in ("times", "profile_fx", "profile_fy"):
+            if key not in table:
+                raise ValueError(f"[{where}] is missing the required key {key!r} of a profile")
+        return _table_value(where, Load.piecewise_linear, table["times"], table["profile_fx"],
+                            table["profile_fy"], table.get("profile_torque"), frame, at)
+    return _table_value(where, Load, (table.get("fx", 0.0), table.get("fy", 0.0)),
+                        table.get("torque", 0.0), frame, at)
+
+
+def incline_from_table(table: dict, where: str = "incline") -> Incline:
+    """Build an :class:`Incline` from an ``[incline]`` TOML table (``angle`` or ``angle_deg``,
+    ``downhill`` or ``downhill_deg``; radians unless the key ends in ``_deg``).
+
+    Examples
+    --------
+    >>> incline_from_table({"angle_deg": 30.0}).downhill_factor  # doctest: +ELLIPSIS
+    0.4999...
+    """
+    if not isinstance(table, dict):
+        raise ValueError(f"[{where}] must be a table, got {table!r}")
+    unknown = sorted(set(table) - set(INCLINE_KEYS))
+    if unknown:
+        raise ValueError(f"unknown key {unknown[0]!r} in [{where}]; valid keys: "
+                         + ", ".join(INCLINE_KEYS))
+
+    def angle(key, default=None):
+        if key in table and f"{key}_deg" in table:
+            raise ValueError(f"[{where}] gives both {key} and {key}_deg; give one")
+        if f"{key}_deg" in table:
+            return math.radians(v.finite(f"[{where}] {key}_deg", table[f"{key}_deg"]))
+        if key not in table:
+            if default is None:
+                raise ValueError(f"[{where}] is missing the required key 'angle' (or angle_deg)")
+            return default
+        return v.finite(f"[{where}] {key}", table[key])
+
+    return _table_value(where, Incline, angle("angle"), angle("downhill", 0.0))
