@@ -114,7 +114,7 @@ class Load:
 
     @classmethod
     def piecewise_linear(cls, times, fx, fy, torque=None, frame: str = "plane",
-                         at=None) -> "Load":
+                         at=None) -> Load:
         """A load interpolated linearly between samples, constant beyond the first and last.
 
         Parameters
