@@ -468,7 +468,8 @@ class _Problem:
             s[j] = p[i]
         return s
 
-    def simulate(self, vals, start):
+    def simulate(self, vals, start, t_need=math.inf):
+        """Trajectory from ``start``; it must be exact up to ``t_need`` [s] at least."""
         from .simulate import simulate
 
         body, fr = self.objects(vals)
@@ -476,14 +477,16 @@ class _Problem:
         traj = simulate(body, fr, state, g=self.g, rtol=self.rtol, max_step=self.max_step,
                         max_steps=QUICK_STEPS)
         if traj.status == "max_steps":
-            # a slow approach to the stop (MODEL §9) crawls at speeds far below any that moves
-            # the body visibly; only a motion still fast at the end needs the full budget
+            # A slow approach to the stop (MODEL §9, e.g. near pure sliding) may take many
+            # steps at speeds that no longer move the body visibly, or after the last
+            # measured time. The final row may be an extrapolated stop: judge by the last
+            # integrator step before it, and run again with the full budget only if that
+            # step is inside the measured times and still moving.
             k = body.radius_of_gyration
             s0 = math.sqrt(state.vx**2 + state.vy**2 + (k * state.omega) ** 2)
-            # the speed at the last integrator step (the final row may already be the stop)
-            s_end = max(math.hypot(traj.speed[i], k * traj.omega[i])
-                        for i in range(max(0, traj.t.size - 2), traj.t.size))
-            if not s_end <= 1e-9 * s0:
+            i = max(0, traj.t.size - 2)
+            s_end = math.hypot(traj.speed[i], k * traj.omega[i])
+            if traj.t[i] < t_need and not s_end <= 1e-9 * s0:
                 traj = simulate(body, fr, state, g=self.g, rtol=self.rtol,
                                 max_step=self.max_step)
         return traj
@@ -491,7 +494,7 @@ class _Problem:
     def model_run(self, vals, start, k):
         """Simulated channels at the measured times of run k (dict) and the trajectory."""
         run = self.runs[k]
-        traj = self.simulate(vals, start)
+        traj = self.simulate(vals, start, run["t"][-1] - run["t"][0])
         at = trajectory_at(traj, run["t"] - run["t"][0])
         return at, traj
 
