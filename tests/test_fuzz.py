@@ -468,10 +468,9 @@ def test_simulate(data):
     finite_everywhere(tr.stop_state.as_array())
 
 
-# Inputs of issue 11 that reach the integrator (simulate, simulate_many: the lead's files).
-# Each runs in its own process, so that a hang or a crash cannot take this module down.
-# Marked xfail(strict=False) until they are refused up front or give finite results; the
-# lead can drop the mark once they pass.
+# Inputs of issue 11 that reach the integrator (simulate, simulate_many). Each runs in its own
+# process, so that a hang or a crash cannot take this module down: each must be refused up
+# front naming the parameter, or give finite results.
 _SETUP = (
     "import json, math, sys, slidespin as ss, slidespin.batch as sb\n"
     "B = ss.Body(ss.Circle(0.05), ss.UniformPressure(), 1.0)\n"
@@ -497,10 +496,6 @@ LEAD_INPUTS = [
 ]
 
 
-@pytest.mark.xfail(strict=False, reason="simulate/simulate_many belong to the lead "
-                   "(_ode.py, simulate.py, batch.py); issue 11 inputs still failing when "
-                   "written: simulate g=5e-324 ZeroDivisionError, simulate_many g=5e-324 "
-                   "t_stop NaN, max_steps=2**64 numba TypingError in both")
 @pytest.mark.parametrize("expr, name", LEAD_INPUTS, ids=[x[0][:48] for x in LEAD_INPUTS])
 def test_integrator_issue_inputs(expr, name):
     import json

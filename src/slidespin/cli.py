@@ -44,6 +44,7 @@ _PLUGINS = (
     ("reproduce", "slidespin.paper.cli", "reproduce the paper's tables and figures"),
     ("bench", "slidespin.bench", "benchmark the compiled engine against naive approaches"),
     ("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion (CSV of t, x, y, phi)"),
+    ("limit-surface", "slidespin.ls_cli", "sample and fit the limit surface of a case's body"),
 )
 
 ISSUE_URL = "https://github.com/slidespin/slidespin/issues"
