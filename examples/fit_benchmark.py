@@ -16,10 +16,10 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-import fit_synthetic as fs  # noqa: E402
+import fit_synthetic as fs
 
-import slidespin as ss  # noqa: E402
-from slidespin.fit import fit  # noqa: E402
+import slidespin as ss
+from slidespin.fit import fit
 
 
 def main(repeats: int = 3) -> None:

@@ -400,3 +400,19 @@ def test_unfinished_quick_simulations_are_redone_in_full(monkeypatch):
     res = fit(runs, plate(), TRUE, sigma=SIGMA)
     for name in ("fx", "fy", "f"):
         assert res.estimates[name] == pytest.approx(ref.estimates[name], rel=1e-9)
+
+
+def test_wrapped_tracker_angles_fit_like_unwrapped_ones():
+    """A tracker reporting φ in (−π, π] must give the same fit as the continuous angle."""
+    rng = np.random.default_rng(21)
+    st = ss.State.from_speed(0.8, 25.0, theta=0.4, phi=3.0)  # turns through the cut at π
+    runs = synthetic(TRUE, (st,), 80, SIGMA, rng)
+    wrapped = dict(runs[0])
+    wrapped["phi"] = np.angle(np.exp(1j * runs[0]["phi"]))
+    assert np.ptp(runs[0]["phi"]) > math.pi and np.ptp(wrapped["phi"]) > 6.0  # it jumps
+    a = fit(runs[0], plate(), TRUE, sigma=SIGMA)
+    b = fit(wrapped, plate(), TRUE, sigma=SIGMA)
+    for name in ("fx", "fy", "f"):
+        assert b.estimates[name] == pytest.approx(a.estimates[name], rel=1e-6)
+        assert b.std_errors[name] == pytest.approx(a.std_errors[name], rel=1e-4)
+    assert abs(b.residuals[0]["phi"]).max() < 6 * SIGMA["phi"]

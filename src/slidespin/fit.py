@@ -657,7 +657,7 @@ def _num(x):
     return x if math.isfinite(x) else None
 
 
-@dataclass(frozen=True, repr=False)
+@dataclass(frozen=True, slots=True, repr=False)
 class FitResult:
     """Outcome of :func:`fit` (SI units throughout).
 
