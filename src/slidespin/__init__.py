@@ -2,12 +2,16 @@
 
 The friction force and moment are integrated exactly over a finite elliptic contact patch
 for four pressure laws and a full 2×2 friction tensor, and the motion is integrated to its
-finite stop. Source: "About the movement of a solid body on a plane surface in accordance
+finite stop; beyond the paper, the patch may be any footprint (polygons, rectangles, disks,
+rings, several pads) under uniform or linear pressure (MODEL §10). Source: "About the movement of a solid body on a plane surface in accordance
 with elliptic contact area and anisotropic friction"; the model as built, with the paper's
 errata, is documented in docs/model.md.
 """
 
 from .body import Body, State
+from .footprint import Annulus, Disk, Pads, Polygon, Rectangle
+from .footprint_pressure import PressureMap
+from .footprint_wrench import footprint_wrench
 from .friction import FrictionTensor
 from .geometry import Circle, Ellipse
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
@@ -38,6 +42,13 @@ __all__ = [
     "LinearPressure",
     "BoussinesqPressure",
     "HertzPressure",
+    "Polygon",
+    "Rectangle",
+    "Disk",
+    "Annulus",
+    "Pads",
+    "PressureMap",
+    "footprint_wrench",
     "friction_wrench",
     "Wrench",
     "simulate",

@@ -39,6 +39,8 @@ import numpy as np
 from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from ._jit import jit, prange
+from ._footprint_kernel import NGEO
+from ._footprint_kernel import wrench_world as fp_wrench_world
 from ._kernel import WORKSPACE_SHAPE, wrench_constants, wrench_world_fast
 
 _NS = _dop.N_STAGES  # 12
@@ -55,7 +57,14 @@ POLISH_START = 1e-4
 POLISH_MAX_MOVE = 1e-2
 # parameter vector layout
 P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range(11)
-NPAR = 11
+# footprints (MODEL §10): P_SHAPE = SHAPE_FOOTPRINT selects the footprint kernel, which reads
+# the arrays (edges, circles, geo) passed alongside ``par`` (lengths in the footprint's
+# extent); P_CSYM = 1 if the pressure is centrally symmetric about G (pure spin about G is an
+# invariant set), P_RSYM = 1 if it is axisymmetric about G (a centred disk or ring, uniform).
+# For an ellipse these three are 0, the arrays are empty and unused.
+P_SHAPE, P_CSYM, P_RSYM = 11, 12, 13
+NPAR = 14
+SHAPE_ELLIPSE, SHAPE_FOOTPRINT = 0, 1
 
 # integration status codes (indices into slidespin.outcomes.STATUSES; ST_SPIRAL is reported
 # as "stopped" with the ending "spiral")
@@ -87,12 +96,19 @@ def kernel_constants(par):
 
 
 @jit(error_model="numpy", inline="always")
-def accelerations(par, kc, W, u1, u2, u3, phi):
+def accelerations(par, kc, W, fe, fc, geo, u1, u2, u3, phi):
     """A(u, φ) = (Fx, Fy, M/k)/(m g) in natural units, and the wrench status.
 
-    ``kc`` are the kernel constants (:func:`kernel_constants`), ``W`` a kernel workspace.
+    ``kc`` are the kernel constants (:func:`kernel_constants`), ``W`` a kernel workspace;
+    ``fe``, ``fc``, ``geo`` the footprint's edges, circles and constants (natural units, unit
+    load), read only if ``par[P_SHAPE]`` is ``SHAPE_FOOTPRINT`` (one compiled function serves
+    both shapes: a runtime branch). The footprint kernel is exact (status 0).
     """
     k = par[P_K]
+    if par[P_SHAPE] == SHAPE_FOOTPRINT:
+        fx, fy, m = fp_wrench_world(fe, fc, geo, par[P_T00], par[P_T01], par[P_T10],
+                                    par[P_T11], par[P_BODY] != 0.0, phi, u1, u2, u3 / k)
+        return fx, fy, m / k, 0
     fx, fy, m, st = wrench_world_fast(
         int(par[P_LAW]), kc, par[P_T00], par[P_T01], par[P_T10], par[P_T11],
         par[P_BODY] != 0.0, phi, u1, u2, u3 / k, par[P_WTOL], W,
@@ -101,7 +117,7 @@ def accelerations(par, kc, W, u1, u2, u3, phi):
 
 
 @jit(error_model="numpy")
-def _rhs(par, kc, W, y, out):
+def _rhs(par, kc, W, fe, fc, geo, y, out):
     """Right-hand side of the regularised system; returns the wrench status."""
     u1 = y[0]
     u2 = y[1]
@@ -110,7 +126,7 @@ def _rhs(par, kc, W, y, out):
     u1 *= inv
     u2 *= inv
     u3 *= inv
-    ax, ay, am, st = accelerations(par, kc, W, u1, u2, u3, y[7])
+    ax, ay, am, st = accelerations(par, kc, W, fe, fc, geo, u1, u2, u3, y[7])
     ua = u1 * ax + u2 * ay + u3 * am
     out[0] = ax - ua * u1
     out[1] = ay - ua * u2
@@ -127,14 +143,20 @@ def _rhs(par, kc, W, y, out):
 
 
 @jit(error_model="numpy")
-def rhs(par, y, out):
+def rhs(par, fe, fc, geo, y, out):
     """Right-hand side of the regularised system (one call; the integrator keeps its
-    constants and workspace); returns the wrench status."""
-    return _rhs(par, kernel_constants(par), np.empty(WORKSPACE_SHAPE), y, out)
+    constants and workspace); returns the wrench status. ``fe``, ``fc``, ``geo``: the
+    footprint arrays (:func:`no_footprint` for an ellipse)."""
+    return _rhs(par, kernel_constants(par), np.empty(WORKSPACE_SHAPE), fe, fc, geo, y, out)
+
+
+def no_footprint():
+    """The (edges, circles, geo) arguments for an elliptic patch: empty and unused."""
+    return np.empty((0, 4)), np.empty((0, 4)), np.zeros(NGEO)
 
 
 @jit(error_model="numpy", inline="always")
-def tangent_jacobian(par, kc, W, uu, phi, t1, t2, jac, g):
+def tangent_jacobian(par, kc, W, fe, fc, geo, uu, phi, t1, t2, jac, g):
     """Jacobian of the sphere flow G(u) = A − (u·A)u in the tangent plane at the unit vector
     ``uu`` (frozen φ), by central differences; fills the tangent basis ``t1``, ``t2``, the 2×2
     ``jac`` (in that basis) and G(uu) in ``g``.
@@ -165,7 +187,7 @@ def tangent_jacobian(par, kc, W, uu, phi, t1, t2, jac, g):
         sg = 0.0 if m == 0 else (1.0 if m % 2 == 1 else -1.0)
         for i in range(3):
             yp[i] = uu[i] + sg * hd * (t1[i] if j == 0 else t2[i])
-        _rhs(par, kc, W, yp, out)
+        _rhs(par, kc, W, fe, fc, geo, yp, out)
         if m == 0:
             for i in range(3):
                 g[i] = out[i]
@@ -189,7 +211,7 @@ def _lam_max(jac):
 
 
 @jit(error_model="numpy", inline="always")
-def polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist):
+def polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter, max_dist):
     """Newton iteration for the fixed point u* of the sphere flow at frozen φ (MODEL §5–6).
 
     Starts from ``u`` (close to u*); works in the tangent plane of the sphere with the
@@ -211,12 +233,22 @@ def polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist):
     converged = False
     lam = 0.0
     it = 0
+    # footprints: a residual at the round-off of the wrench is a fixed point already; a Newton
+    # step from there is noise over the Jacobian, arbitrary along a neutral direction (e.g.
+    # the circle of pure-sliding fixed points of an isotropic tensor)
+    fp_floor = -1.0
+    if par[P_SHAPE] == SHAPE_FOOTPRINT:
+        fp_floor = 1e-15 * math.sqrt(par[P_T00] ** 2 + par[P_T01] ** 2 + par[P_T10] ** 2
+                                     + par[P_T11] ** 2)
     for it in range(max_iter):
-        tangent_jacobian(par, kc, W, uu, phi, t1, t2, jac, g)
+        tangent_jacobian(par, kc, W, fe, fc, geo, uu, phi, t1, t2, jac, g)
         r0 = g[0] * t1[0] + g[1] * t1[1] + g[2] * t1[2]
         r1 = g[0] * t2[0] + g[1] * t2[1] + g[2] * t2[2]
         det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
         lam = _lam_max(jac)
+        if math.sqrt(r0 * r0 + r1 * r1) <= fp_floor:
+            converged = True
+            break
         if det == 0.0 or not math.isfinite(det):
             break
         d0 = (-r0 * jac[1, 1] + r1 * jac[0, 1]) / det
@@ -257,7 +289,7 @@ def _err_norm(K, h, scale):
 
 
 @jit(error_model="numpy")
-def _equator_point(par, kc, W, u, phi):
+def _equator_point(par, kc, W, fe, fc, geo, u, phi):
     """The pure-sliding fixed point (u₃ = 0) nearest the direction ``u``: Newton's method on
     the tangential component of the flow along the invariant circle u₃ = 0 (pure translation:
     the moment about G vanishes there). Returns (u*, converged)."""
@@ -274,7 +306,7 @@ def _equator_point(par, kc, W, u, phi):
             yp[0] = math.cos(t)
             yp[1] = math.sin(t)
             yp[2] = 0.0
-            _rhs(par, kc, W, yp, out)
+            _rhs(par, kc, W, fe, fc, geo, yp, out)
             gv[m] = -math.sin(t) * out[0] + math.cos(t) * out[1]
         der = (gv[2] - gv[0]) / (2.0 * hd)
         if der == 0.0 or not math.isfinite(der):
@@ -296,12 +328,15 @@ def rotationally_symmetric(par):
     commutes with rotations (fx = fy): every rotation of a fixed point about the vertical is a
     fixed point too, so one tangent eigenvalue vanishes identically (a neutral direction along
     that circle of fixed points, not a marginal one)."""
-    return (par[P_BN] == 1.0 and par[P_XG] == 0.0 and par[P_YG] == 0.0
-            and par[P_T00] == par[P_T11] and par[P_T01] == -par[P_T10])
+    if par[P_SHAPE] == SHAPE_FOOTPRINT:
+        axis = par[P_RSYM] != 0.0
+    else:
+        axis = par[P_BN] == 1.0 and par[P_XG] == 0.0 and par[P_YG] == 0.0
+    return axis and par[P_T00] == par[P_T11] and par[P_T01] == -par[P_T10]
 
 
 @jit(error_model="numpy")
-def _rel_lam(par, kc, W, us, phi):
+def _rel_lam(par, kc, W, fe, fc, geo, us, phi):
     """λ/|u·A| at the unit vector ``us``: the largest real part of the eigenvalues of the
     sphere flow's tangent Jacobian over the decay rate of ln s (MODEL §9). Under rotational
     symmetry (:func:`rotationally_symmetric`) the neutral eigenvalue along the circle of fixed
@@ -310,7 +345,7 @@ def _rel_lam(par, kc, W, us, phi):
     t2 = np.empty(3)
     jac = np.empty((2, 2))
     g = np.empty(3)
-    tangent_jacobian(par, kc, W, us, phi, t1, t2, jac, g)
+    tangent_jacobian(par, kc, W, fe, fc, geo, us, phi, t1, t2, jac, g)
     if rotationally_symmetric(par) and us[0] ** 2 + us[1] ** 2 > ENDING_TOL ** 2:
         lam = jac[0, 0] + jac[1, 1]
     else:
@@ -321,12 +356,12 @@ def _rel_lam(par, kc, W, us, phi):
     yp[2] = us[2]
     yp[7] = phi
     out = np.empty(NY)
-    _rhs(par, kc, W, yp, out)
+    _rhs(par, kc, W, fe, fc, geo, yp, out)
     return lam / max(abs(out[3]), 1e-300)
 
 
 @jit(error_model="numpy")
-def terminal_point(par, kc, W, u, phi, symmetric, max_iter, max_dist):
+def terminal_point(par, kc, W, fe, fc, geo, u, phi, symmetric, max_iter, max_dist):
     """The fixed point of the sphere flow that the direction ``u`` approaches, at frozen φ.
 
     Newton's method first (:func:`polish_fixed_point`); where it fails because the Jacobian
@@ -335,10 +370,10 @@ def terminal_point(par, kc, W, u, phi, symmetric, max_iter, max_dist):
     the equator (pure sliding), accepted only if marginal there. Returns (u*, found, λ/|u·A|,
     right-hand-side calls).
     """
-    us, ok, lam, nit = polish_fixed_point(par, kc, W, u, phi, max_iter, max_dist)
+    us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter, max_dist)
     calls = 5 * nit + 6
     if ok:
-        return us, True, _rel_lam(par, kc, W, us, phi), calls
+        return us, True, _rel_lam(par, kc, W, fe, fc, geo, us, phi), calls
     u12 = math.sqrt(u[0] ** 2 + u[1] ** 2)
     cand = np.zeros(3)
     found = False
@@ -346,17 +381,17 @@ def terminal_point(par, kc, W, u, phi, symmetric, max_iter, max_dist):
         cand[2] = 1.0 if u[2] >= 0.0 else -1.0
         found = True
     elif abs(u[2]) < 0.1:
-        cand, found = _equator_point(par, kc, W, u, phi)
+        cand, found = _equator_point(par, kc, W, fe, fc, geo, u, phi)
         calls += 120
     if found:
-        rel = _rel_lam(par, kc, W, cand, phi)
+        rel = _rel_lam(par, kc, W, fe, fc, geo, cand, phi)
         if abs(rel) < MARGIN:
             return cand, True, rel, calls
     return us, False, math.nan, calls
 
 
 @jit(error_model="numpy")
-def _pure_spin_direction(par, kc, W, u_pre, phi):
+def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi):
     """ϑ* of a pure-spinning ending (MODEL §9), or NaN where the velocity has no limiting
     direction.
 
@@ -372,7 +407,7 @@ def _pure_spin_direction(par, kc, W, u_pre, phi):
     t2 = np.empty(3)
     jac = np.empty((2, 2))
     g = np.empty(3)
-    tangent_jacobian(par, kc, W, pole, phi, t1, t2, jac, g)
+    tangent_jacobian(par, kc, W, fe, fc, geo, pole, phi, t1, t2, jac, g)
     # J in the (u₁, u₂) coordinates: t1 = e_x, t2 = ±e_y
     sy = t2[1]
     a = jac[0, 0]
@@ -387,7 +422,7 @@ def _pure_spin_direction(par, kc, W, u_pre, phi):
     yp[2] = pole[2]
     yp[7] = phi
     out = np.empty(NY)
-    _rhs(par, kc, W, yp, out)
+    _rhs(par, kc, W, fe, fc, geo, yp, out)
     rate = abs(out[3])  # the decay rate of ln s: the scale of every eigenvalue here
     if not math.isfinite(size) or size <= 1e-6 * rate:
         return math.atan2(u_pre[1], u_pre[0])  # J ∝ identity: the direction is frozen
@@ -412,12 +447,26 @@ def _pure_spin_direction(par, kc, W, u_pre, phi):
 
 @jit(error_model="numpy")
 def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+    """:func:`integrate_on` for an elliptic patch (no footprint arrays)."""
+    fe = np.empty((0, 4))
+    fc = np.empty((0, 4))
+    geo = np.zeros(NGEO)
+    return integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max,
+                        record)
+
+
+@jit(error_model="numpy")
+def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     """Integrate the regularised system from ``y0`` to the stop and classify the stop.
 
     Parameters
     ----------
     par : ndarray (NPAR,)
         Body, law and tensor parameters (natural units).
+    fe, fc, geo : ndarray
+        The footprint's edges (n, 4), circles (m, 4) and kernel constants (``NGEO``,) in
+        natural units (lengths in the extent, unit load), read if ``par[P_SHAPE]`` is
+        ``SHAPE_FOOTPRINT``; empty (0, 4) arrays and any ``geo`` for an ellipse.
     y0 : ndarray (9,)
         Initial (u, ln s, t, x, y, φ, ℓ); u need not be normalised.
     rtol, atol : float
@@ -484,7 +533,10 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     # integrator's absolute tolerance: where a pure-spinning ending's ϑ* is read
     thr12 = min(1e-2, max(ENDING_TOL, 1e3 * atol))
     u_dir = y[:3].copy()
-    symmetric = par[P_XG] == 0.0 and par[P_YG] == 0.0
+    if par[P_SHAPE] == SHAPE_FOOTPRINT:
+        symmetric = par[P_CSYM] != 0.0
+    else:
+        symmetric = par[P_XG] == 0.0 and par[P_YG] == 0.0
     K = np.empty((_NS + 1, NY))
     f = np.empty(NY)
     yt = np.empty(NY)
@@ -493,7 +545,7 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     kc = kernel_constants(par)
     W = np.empty(WORKSPACE_SHAPE)
     fails = 0
-    fails += _rhs(par, kc, W, y, f)
+    fails += _rhs(par, kc, W, fe, fc, geo, y, f)
     nrhs = 1
     cap = 256 if record else 1
     rec = np.empty((cap, NY + 1))
@@ -550,14 +602,14 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                     for j in range(st):
                         acc += _A[st, j] * K[j, i]
                     yt[i] = y[i] + h * acc
-                fails += _rhs(par, kc, W, yt, K[st])
+                fails += _rhs(par, kc, W, fe, fc, geo, yt, K[st])
                 nrhs += 1
             for i in range(NY):
                 acc = 0.0
                 for j in range(_NS):
                     acc += _B[j] * K[j, i]
                 ynew[i] = y[i] + h * acc
-            fails += _rhs(par, kc, W, ynew, K[_NS])
+            fails += _rhs(par, kc, W, fe, fc, geo, ynew, K[_NS])
             nrhs += 1
             for i in range(NY):
                 scale[i] = atol + max(abs(y[i]), abs(ynew[i])) * rtol
@@ -626,8 +678,8 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                 # near a hyperbolic fixed point: Newton gives u* to ~1e-13 at once, where the
                 # explicit integrator would take many more steps to converge
                 du_polish = du
-                us, ok, lam, nit = polish_fixed_point(par, kc, W, y[:3], y[7], 12,
-                                                      POLISH_MAX_MOVE)
+                us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, y[:3], y[7],
+                                                      12, POLISH_MAX_MOVE)
                 nrhs += 5 * nit
                 if ok and lam < 0.0:
                     status = ST_STOPPED
@@ -643,7 +695,8 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                 # (exponentially, or algebraically at a boundary) and that the direction has
                 # come to half its distance from (or within 1e-3) is the limit; a direction
                 # that sweeps SPIRAL_ARC with no attracting point near turns for ever
-                us, ok, rel, calls = terminal_point(par, kc, W, y[:3], y[7], symmetric, 40, 0.5)
+                us, ok, rel, calls = terminal_point(par, kc, W, fe, fc, geo, y[:3], y[7],
+                                                    symmetric, 40, 0.5)
                 nrhs += calls
                 attracting = ok and rel <= MARGIN
                 if attracting:
@@ -666,20 +719,22 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     if status == ST_STOPPED:
         # classify the stop from the fixed point and its eigenvalues (MODEL §9)
         u_pre = u_dir
-        us, ok, rel, calls = terminal_point(par, kc, W, y[:3], y[7], symmetric, 60, 0.5)
+        us, ok, rel, calls = terminal_point(par, kc, W, fe, fc, geo, y[:3], y[7], symmetric,
+                                            60, 0.5)
         nrhs += calls
         if ok:
             y[0] = us[0]
             y[1] = us[1]
             y[2] = us[2]
         else:
-            rel = _rel_lam(par, kc, W, y[:3], y[7])
+            rel = _rel_lam(par, kc, W, fe, fc, geo, y[:3], y[7])
         term[2] = rel
         u12 = math.sqrt(y[0] * y[0] + y[1] * y[1])
         if ln_inv3 == ln_inv3 and abs(y[2]) > ENDING_TOL:
             # the spin came back from round-off: what the motion does down to that energy is
             # to approach pure sliding (the invariant set ω = 0)
-            us, ok, lam, nit = polish_fixed_point(par, kc, W, u_inv3, y[7], 40, 0.05)
+            us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, u_inv3, y[7], 40,
+                                                  0.05)
             src = us if ok else u_inv3
             n12 = math.sqrt(src[0] ** 2 + src[1] ** 2)
             y[0] = src[0] / n12
@@ -707,7 +762,7 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
             y[0] = 0.0
             y[1] = 0.0
             y[2] = 1.0 if y[2] >= 0.0 else -1.0
-            term[0] = _pure_spin_direction(par, kc, W, u_pre, y[7])
+            term[0] = _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, y[7])
             nrhs += 5
         else:
             if abs(y[2]) <= ENDING_TOL:
@@ -715,7 +770,7 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
                 y[1] /= u12
                 y[2] = 0.0
             term[0] = math.atan2(y[1], y[0])
-        fails += _rhs(par, kc, W, y, f)
+        fails += _rhs(par, kc, W, fe, fc, geo, y, f)
     # β*/a = k u₁₂/u₃ of the reported direction (computed here, so that simulate() and the
     # batch agree to the last bit)
     u12 = math.hypot(y[0], y[1])
@@ -773,13 +828,22 @@ def stop_direction(yend):
 
 
 @jit(parallel=True, error_model="numpy")
-def integrate_many(pars, init, rtol, atol, utol, s_drop, max_steps):
-    """:func:`integrate` for many independent cases in parallel (no per-step records).
+def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop,
+                   max_steps):
+    """:func:`integrate_on` for many independent cases in parallel (no per-step records).
 
     Parameters
     ----------
     pars : ndarray (N, NPAR)
         One parameter vector per case.
+    edges, circles : ndarray (·, 4)
+        The footprints' edges and circles of all cases, stacked (natural units of each case):
+        case i's are rows ``eidx[i, 0]:eidx[i, 1]`` and ``cidx[i, 0]:cidx[i, 1]`` (cases may
+        share rows).
+    eidx, cidx : ndarray (N, 2) of int64
+        Row ranges into ``edges`` and ``circles`` (all zero for ellipses).
+    geos : ndarray (N, NGEO)
+        The footprints' kernel constants (unused for ellipses).
     init : ndarray (N, 6)
         Initial (vx, vy, ω, x, y, φ) per case in natural units (:func:`initial_state`).
 
@@ -814,8 +878,12 @@ def integrate_many(pars, init, rtol, atol, utol, s_drop, max_steps):
             continue
         # ``no_record`` is False as a variable: a literal False would compile integrate() a
         # second time, specialised, instead of reusing the version simulate() compiled
-        yend, st, ns, nr, nf, rate, rec, term = integrate(
-            pars[i], y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
+        # contiguous copies: the same array types as simulate() passes (one compilation)
+        fe = np.ascontiguousarray(edges[eidx[i, 0]:eidx[i, 1]])
+        fc = np.ascontiguousarray(circles[cidx[i, 0]:cidx[i, 1]])
+        geo = np.ascontiguousarray(geos[i])
+        yend, st, ns, nr, nf, rate, rec, term = integrate_on(
+            pars[i], fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
         )
         for c in range(NY):
             out[i, c] = yend[c]

@@ -155,17 +155,30 @@ def _run(col, inertia, rtol, max_steps) -> StopResults:
         pars[:, _ode.P_BODY] = col["frame"][lo:hi]
         pars[:, _ode.P_K] = np.sqrt(inertia[lo:hi] / col["mass"][lo:hi]) / a
         pars[:, _ode.P_WTOL] = 1e-12
+        pars[:, _ode.P_SHAPE] = _ode.SHAPE_ELLIPSE
+        pars[:, _ode.P_CSYM] = 0.0
+        pars[:, _ode.P_RSYM] = 0.0
         return pars
 
     return _integrate_all(col["a"].size, pars_of, col["a"], col["g"], col, rtol, max_steps)
 
 
-def _integrate_all(n, pars_of, a, g, st, rtol, max_steps) -> StopResults:
+def _no_footprints(n):
+    """Footprint arguments of :func:`slidespin._ode.integrate_many` for n elliptic cases."""
+    empty = np.empty((0, 4))
+    zeros = np.zeros((n, 2), dtype=np.int64)
+    return empty, empty, zeros, zeros, np.zeros((n, _ode.NGEO))
+
+
+def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) -> StopResults:
     """Integrate n cases in chunks of ``CHUNK`` and convert to SI stop results.
 
-    ``pars_of(lo, hi)``: parameter rows of cases lo..hi (natural units); ``a``, ``g``: semi-axis
-    and gravity (arrays of length n, or scalars); ``st``: mapping with the initial ``x, y, phi,
-    vx, vy, omega`` (SI, arrays of length n). Only the results are held for all n cases.
+    ``pars_of(lo, hi)``: parameter rows of cases lo..hi (natural units); ``a``, ``g``: length
+    unit (semi-axis or footprint extent) and gravity (arrays of length n, or scalars); ``st``:
+    mapping with the initial ``x, y, phi, vx, vy, omega`` (SI, arrays of length n);
+    ``footprints_of(lo, hi)``: the footprint arguments (edges, circles, edge row ranges,
+    circle row ranges, geo rows) of :func:`slidespin._ode.integrate_many` for cases lo..hi (None: all
+    ellipses). Only the results are held for all n cases.
     """
     a = np.broadcast_to(np.asarray(a, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
@@ -190,8 +203,9 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps) -> StopResults:
         init[:, 3] = st["x"][lo:hi] / ac
         init[:, 4] = st["y"][lo:hi] / ac
         init[:, 5] = st["phi"][lo:hi]
+        fps = _no_footprints(hi - lo) if footprints_of is None else footprints_of(lo, hi)
         yend, status, steps, _, nf, term = _ode.integrate_many(
-            pars, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
+            pars, *fps, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
         )
         fails += int((nf > 0).sum())
         _stop_values(res, lo, hi, yend, status, steps, term, pars[:, _ode.P_K], ac, t_unit,
@@ -283,7 +297,18 @@ def simulate_many(
         raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
                          "valid range: any finite real number")
     # the parameter vector of simulate() itself, so that the numbers agree to the last bit
-    par = body.kernel_params(friction)
+    par, fe, fc, geo = body.engine_params(friction)
     states = {name: st[:, i] for i, name in enumerate(("x", "y", "phi", "vx", "vy", "omega"))}
+
+    def footprints_of(lo, hi):
+        """One footprint shared by every case: every row range covers all its rows."""
+        m = hi - lo
+        eidx = np.zeros((m, 2), dtype=np.int64)
+        cidx = np.zeros((m, 2), dtype=np.int64)
+        eidx[:, 1] = fe.shape[0]
+        cidx[:, 1] = fc.shape[0]
+        return fe, fc, eidx, cidx, np.repeat(geo[None, :], m, axis=0)
+
     return _integrate_all(st.shape[0], lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
-                          body.patch.a, g, states, rtol, max_steps)
+                          body.length_unit, g, states, rtol, max_steps,
+                          footprints_of if body.is_footprint else None)

@@ -3,6 +3,12 @@
 Paper symbols and code names (MODEL §1): m → ``mass``, I → ``moment_of_inertia`` (about the
 vertical axis through the mass centre G), I* = I/(m a²) → ``inertia_ratio``; the state
 (x, y, φ, ẋ, ẏ, φ̇) of paper eq. 3–4 → ``State(x, y, phi, vx, vy, omega)``.
+
+Beyond the paper (MODEL §10) the patch may be any footprint of :mod:`slidespin.footprint`
+(``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``, ``Pads``) under uniform or linear
+pressure. Its length unit ℓ (:attr:`Body.length_unit`, the footprint's ``extent``: the radius
+of a disk or ring, the half-diagonal of a centred rectangle) plays the role of the ellipse's
+semi-axis a in I* = I/(m ℓ²), β*/ℓ and the natural units of the integrator.
 """
 
 from __future__ import annotations
@@ -13,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _validate as v
+from . import footprint as _fp
 from .friction import FrictionTensor
 from .geometry import Ellipse
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
@@ -28,19 +35,26 @@ class Body:
 
     Parameters
     ----------
-    patch : Ellipse or Circle
-        The contact patch.
+    patch : Ellipse, Circle or a footprint
+        The contact patch: an ellipse or circle (the paper's), or a footprint of
+        :mod:`slidespin.footprint` (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``,
+        ``Pads``; MODEL §10).
     pressure : UniformPressure, LinearPressure, BoussinesqPressure or HertzPressure
         Normal-pressure law on the patch. The mass centre G lies above the pressure
-        centroid: the patch centre, or (ξc, ηc) for the linear law.
+        centroid: the patch centre (the area centroid of a footprint), or (ξc, ηc) for the
+        linear law. Footprints take the uniform and linear laws (the linear law must stay
+        ≥ 0 on the footprint); a user ``PressureMap`` works with
+        :func:`slidespin.footprint_wrench` only (no compiled integration).
     mass : float
         Mass m [kg], in [1e-12, 1e12].
     moment_of_inertia : float or None
-        I about the vertical axis through G [kg m²], with I* = I/(m a²) in [1e-8, 1e8]
-        (docs/errors.md, "Valid ranges"). ``None`` means
-        I = m (a² + b²)/4, the inertia of a uniform plate of the patch's shape about its
-        centre; this is the paper's I* = (1 + κ²)/4 (eq. 7). For the linear law, whose G is
-        off-centre, give I explicitly if the body is not such a plate.
+        I about the vertical axis through G [kg m²], with I* = I/(m ℓ²) in [1e-8, 1e8]
+        (docs/errors.md, "Valid ranges"; ℓ = :attr:`length_unit`). ``None`` means the
+        inertia of a uniform plate of the patch's shape about its centre: I = m (a² + b²)/4
+        for an ellipse, the paper's I* = (1 + κ²)/4 (eq. 7); ``patch.plate_inertia(mass)``
+        for a footprint, about its area centroid (for ``Pads`` a plate covering the pads
+        only, with no mass between them: give I explicitly for a sled or a chair). For the
+        linear law, whose G is off-centre, give I explicitly if the body is not such a plate.
 
     Examples
     --------
@@ -48,54 +62,92 @@ class Body:
     >>> body = Body(Ellipse(0.1, 0.05), UniformPressure(), mass=2.0)
     >>> round(body.inertia_ratio, 4)
     0.3125
+    >>> from slidespin import Annulus
+    >>> ring = Body(Annulus(0.05, 0.06), UniformPressure(), mass=1.0)
+    >>> round(ring.inertia_ratio, 4)  # (R² + r²)/(2 R²) in units of ℓ = R
+    0.8472
     """
 
-    patch: Ellipse
+    patch: object
     pressure: object
     mass: float
     moment_of_inertia: float | None = None
 
     def __post_init__(self) -> None:
-        if not isinstance(self.patch, Ellipse):
+        footprint = _fp.is_footprint(self.patch)
+        if not (footprint or isinstance(self.patch, Ellipse)):
             raise ValueError(
-                f"patch = {self.patch!r} is invalid; valid values: an Ellipse or a Circle"
+                f"patch = {self.patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
+                "footprint (Polygon, Rectangle, Disk, Annulus, Pads)"
             )
-        if not isinstance(self.pressure, _LAWS):
+        if footprint:
+            from .footprint_pressure import pressure_coefficients
+
+            if not isinstance(self.pressure, (UniformPressure, LinearPressure)):
+                raise ValueError(
+                    f"pressure = {self.pressure!r} is invalid on a footprint; valid values: "
+                    "UniformPressure(), LinearPressure(xi_c, eta_c) (Boussinesq and Hertz are "
+                    "defined on ellipses only; a PressureMap works with footprint_wrench only)"
+                )
+            pressure_coefficients(self.patch, self.pressure)  # raises where p < 0
+        elif not isinstance(self.pressure, _LAWS):
             raise ValueError(
                 f"pressure = {self.pressure!r} is invalid; valid values: UniformPressure(), "
                 "LinearPressure(xi_c, eta_c), BoussinesqPressure(), HertzPressure()"
             )
-        self.pressure.check_patch(self.patch)
+        else:
+            self.pressure.check_patch(self.patch)
         m = v.bounded("mass", self.mass, *v.MASS, "kg")
         object.__setattr__(self, "mass", m)
-        a = self.patch.a
+        a = _length_unit(self.patch)
         if self.moment_of_inertia is None:
-            inertia = m * (a**2 + self.patch.b**2) / 4.0
+            if footprint:
+                inertia = self.patch.plate_inertia(m)
+            else:
+                inertia = m * (a**2 + self.patch.b**2) / 4.0
         else:
             inertia = v.positive("moment_of_inertia", self.moment_of_inertia, "kg m^2")
             lo, hi = v.INERTIA_RATIO
             i_star = inertia / m / a / a
             if not lo * (1.0 - 1e-12) <= i_star <= hi * (1.0 + 1e-12):  # round-off of I* m a²
+                unit = "extent" if footprint else "a"
                 raise ValueError(
                     f"moment_of_inertia = {inertia!r} kg m^2 is invalid for mass = {m!r} kg and "
-                    f"a = {a!r} m: I/(m a^2) = {i_star:.6g}; valid range: [{lo:g}, {hi:g}] "
-                    f"m a^2 = [{lo * m * a * a:.6g}, {hi * m * a * a:.6g}] kg m^2"
+                    f"{unit} = {a!r} m: I/(m {unit}^2) = {i_star:.6g}; valid range: "
+                    f"[{lo:g}, {hi:g}] m {unit}^2 = [{lo * m * a * a:.6g}, "
+                    f"{hi * m * a * a:.6g}] kg m^2"
                 )
         object.__setattr__(self, "moment_of_inertia", inertia)
 
     @classmethod
     def from_inertia_ratio(cls, patch, pressure, mass: float, inertia_ratio: float) -> "Body":
-        """Body with I = I* m a² for a given dimensionless inertia I* in [1e-8, 1e8]."""
+        """Body with I = I* m ℓ² for a given dimensionless inertia I* in [1e-8, 1e8] (ℓ = a
+        for an ellipse, the extent of a footprint: :attr:`length_unit`)."""
         i_star = v.bounded("inertia_ratio", inertia_ratio, *v.INERTIA_RATIO)
         m = v.bounded("mass", mass, *v.MASS, "kg")
-        if not isinstance(patch, Ellipse):
-            raise ValueError(f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle")
-        return cls(patch, pressure, m, i_star * m * patch.a**2)
+        if not (isinstance(patch, Ellipse) or _fp.is_footprint(patch)):
+            raise ValueError(
+                f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
+                "footprint (Polygon, Rectangle, Disk, Annulus, Pads)"
+            )
+        return cls(patch, pressure, m, i_star * m * _length_unit(patch) ** 2)
+
+    @property
+    def is_footprint(self) -> bool:
+        """True if the patch is a footprint of :mod:`slidespin.footprint` (not an ellipse)."""
+        return _fp.is_footprint(self.patch)
+
+    @property
+    def length_unit(self) -> float:
+        """ℓ [m]: the semi-axis a of an ellipse, the ``extent`` of a footprint (the largest
+        distance from its area centroid to a point of it: R for a disk or ring). The unit of
+        I* = I/(m ℓ²), of β*/ℓ and of the integrator's natural units."""
+        return _length_unit(self.patch)
 
     @property
     def inertia_ratio(self) -> float:
-        """I* = I/(m a²) (paper §3, appendix)."""
-        return self.moment_of_inertia / (self.mass * self.patch.a**2)
+        """I* = I/(m ℓ²) (paper §3, appendix; ℓ = a for an ellipse)."""
+        return self.moment_of_inertia / (self.mass * self.length_unit**2)
 
     @property
     def radius_of_gyration(self) -> float:
@@ -105,15 +157,59 @@ class Body:
     @property
     def mass_centre(self) -> tuple[float, float]:
         """G in the body frame [m] (the pressure centroid)."""
+        if self.is_footprint:
+            from .footprint_pressure import mass_centre
+
+            return mass_centre(self.patch, self.pressure)
         return self.pressure.centroid
 
     def kernel_params(self, friction: FrictionTensor, wrench_tol: float = 1e-12) -> np.ndarray:
-        """Parameter vector of the compiled engine, in natural units (a = m = g = 1)."""
+        """Parameter vector of the compiled engine, in natural units (a = m = g = 1), for an
+        elliptic patch; raises ``ValueError`` for a footprint (see :meth:`engine_params`), so
+        that code written for ellipses refuses footprints clearly."""
+        if self.is_footprint:
+            raise ValueError(
+                f"patch = {self.patch!r} is a footprint; this function supports elliptic "
+                "patches only (Ellipse, Circle). Footprints work with simulate, simulate_many, "
+                "friction_wrench, terminal_states and terminal_ratio"
+            )
+        return self.engine_params(friction, wrench_tol)[0]
+
+    def engine_params(self, friction: FrictionTensor, wrench_tol: float = 1e-12):
+        """(par, edges, circles, geo): the compiled engine's parameter vector and footprint
+        arrays in natural units (ℓ = m = g = 1, ℓ = :attr:`length_unit`).
+
+        For an ellipse the arrays are empty (0, 4) and ``geo`` is zeros (unused); for a
+        footprint they are :func:`slidespin.footprint_pressure.scaled_arrays` and
+        :func:`~slidespin.footprint_pressure.kernel_geometry` in units of ℓ, unit load, and
+        ``par`` carries the shape flag and the symmetry flags of
+        :func:`slidespin.footprint_pressure.symmetry` (MODEL §9–10).
+        """
         from . import _ode
 
+        t = friction.matrix
+        if self.is_footprint:
+            from .footprint_pressure import kernel_geometry, scaled_arrays, symmetry
+
+            ell = self.length_unit
+            arrays = self.patch.to_arrays()
+            sc = scaled_arrays(arrays, ell)
+            geo = kernel_geometry(self.patch, self.pressure, arrays, length=ell)
+            central, axial = symmetry(self.patch, self.pressure)
+            par = np.zeros(_ode.NPAR)
+            par[_ode.P_BN] = 1.0  # (the ellipse kernel's constants: valid, unused)
+            par[_ode.P_T00], par[_ode.P_T01] = t[0]
+            par[_ode.P_T10], par[_ode.P_T11] = t[1]
+            par[_ode.P_BODY] = 1.0 if friction.frame == "body" else 0.0
+            par[_ode.P_K] = self.radius_of_gyration / ell
+            par[_ode.P_WTOL] = wrench_tol
+            par[_ode.P_SHAPE] = _ode.SHAPE_FOOTPRINT
+            par[_ode.P_CSYM] = 1.0 if central else 0.0
+            par[_ode.P_RSYM] = 1.0 if axial else 0.0
+            return (par, np.ascontiguousarray(sc.edges), np.ascontiguousarray(sc.circles),
+                    np.ascontiguousarray(geo))
         a = self.patch.a
         xg, yg = self.mass_centre
-        t = friction.matrix
         par = np.empty(_ode.NPAR)
         par[_ode.P_BN] = self.patch.b / a
         par[_ode.P_LAW] = self.pressure.code
@@ -124,7 +220,15 @@ class Body:
         par[_ode.P_BODY] = 1.0 if friction.frame == "body" else 0.0
         par[_ode.P_K] = self.radius_of_gyration / a
         par[_ode.P_WTOL] = wrench_tol
-        return par
+        par[_ode.P_SHAPE] = _ode.SHAPE_ELLIPSE
+        par[_ode.P_CSYM] = 0.0
+        par[_ode.P_RSYM] = 0.0
+        return (par,) + _ode.no_footprint()
+
+
+def _length_unit(patch) -> float:
+    """ℓ: the semi-axis a of an ellipse, the extent of a footprint [m]."""
+    return float(patch.extent) if _fp.is_footprint(patch) else patch.a
 
 
 @dataclass(frozen=True, slots=True)

@@ -44,6 +44,7 @@ __all__ = [
     "mass_centre",
     "pressure_coefficients",
     "scaled_arrays",
+    "symmetry",
 ]
 
 #: Gauss–Legendre order per triangle side and per ring direction of :func:`area_rule`
@@ -368,3 +369,38 @@ def scaled_arrays(arrays: FootprintArrays, length: float) -> FootprintArrays:
     circles[:, :3] /= length
     return FootprintArrays(np.ascontiguousarray(arrays.edges / length), circles,
                            arrays.frame / length)
+
+
+def symmetry(footprint, pressure, rtol: float = 1e-12) -> tuple[bool, bool]:
+    """(central, axial): whether the pressure on the footprint is centrally symmetric about G
+    (invariant under r → 2G − r), and whether it is axisymmetric about G.
+
+    Decided conservatively, from the arrays: only a uniform pressure (p₁ = p₂ = 0 exactly;
+    a linear law centred on the area centroid is uniform) qualifies; central symmetry needs
+    every reflected edge and circle to match one of the footprint's to ``rtol`` × extent (a
+    rectangle, a disk, a ring, a centred regular polygon, symmetric pads); axial symmetry
+    needs no edges and every circle centred on G (a centred disk or ring). Under central
+    symmetry pure spin about G is an invariant set of the motion; under axial symmetry (and
+    an isotropic tensor) every rotation of a terminal motion is one too (MODEL §9).
+    """
+    _check_footprint(footprint)
+    if isinstance(pressure, PressureMap):
+        return False, False
+    _, p1, p2 = pressure_coefficients(footprint, pressure, 1.0)
+    if p1 != 0.0 or p2 != 0.0:
+        return False, False
+    arrays = footprint.to_arrays()
+    gx, gy = mass_centre(footprint, pressure)
+    tol = rtol * float(arrays.frame[2])
+    e, c = arrays.edges, arrays.circles
+    axial = e.shape[0] == 0 and all(math.hypot(x - gx, y - gy) <= tol for x, y, _, _ in c)
+    refl_e = np.column_stack((2 * gx - e[:, 0], 2 * gy - e[:, 1], 2 * gx - e[:, 2],
+                              2 * gy - e[:, 3]))
+    refl_c = np.column_stack((2 * gx - c[:, 0], 2 * gy - c[:, 1], c[:, 2], c[:, 3]))
+
+    def matched(refl, orig):
+        return all(orig.shape[0] and np.min(np.max(np.abs(orig - r), axis=1)) <= tol
+                   for r in refl)
+
+    central = matched(refl_e, e) and matched(refl_c, c)
+    return bool(central), bool(axial)

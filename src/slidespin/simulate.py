@@ -25,6 +25,7 @@ import numpy as np
 
 from . import _ode
 from . import _validate as v
+from ._footprint_kernel import wrench_array as fp_wrench_array
 from ._kernel import wrench_array
 from .body import Body, State
 from .friction import FrictionTensor
@@ -178,8 +179,9 @@ class Trajectory:
 
     @property
     def beta_stop_ratio(self) -> float:
-        """β*/a, the terminal ratio in units of the semi-axis a (as in the paper's tables)."""
-        return self.beta_stop / self.body.patch.a
+        """β*/ℓ, the terminal ratio in units of the semi-axis a (as in the paper's tables), or
+        of the extent of a footprint (:attr:`slidespin.Body.length_unit`)."""
+        return self.beta_stop / self.body.length_unit
 
     def summary(self) -> dict:
         """The stop results as a JSON-ready dict (SI units).
@@ -254,7 +256,8 @@ def simulate(
     Parameters
     ----------
     body : Body
-        Patch, pressure law, mass and moment of inertia.
+        Patch (an ellipse, or any footprint of :mod:`slidespin.footprint`), pressure law,
+        mass and moment of inertia.
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).
     initial_state : State
@@ -304,10 +307,10 @@ def simulate(
     rtol, max_steps = check_solver_options(rtol, max_steps)
     h_max = math.inf if max_step is None else v.positive("max_step", max_step)
 
-    a = body.patch.a
+    a = body.length_unit  # the semi-axis, or a footprint's extent
     t_unit = math.sqrt(a / g)
     v_unit = math.sqrt(a * g)
-    par = body.kernel_params(friction)
+    par, fe, fc, geo = body.engine_params(friction)
     k = par[_ode.P_K]
     s0 = initial_state
     vxn, vyn, wn = s0.vx / v_unit, s0.vy / v_unit, s0.omega * t_unit
@@ -327,8 +330,8 @@ def simulate(
         [vxn / speed0, vyn / speed0, k * wn / speed0, math.log(speed0), 0.0,
          s0.x / a, s0.y / a, s0.phi, 0.0]
     )
-    yend, status, nsteps, nrhs, fails, rate, rec, term = _ode.integrate(
-        par, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
+    yend, status, nsteps, nrhs, fails, rate, rec, term = _ode.integrate_on(
+        par, fe, fc, geo, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
     )
     if fails:  # pragma: no cover - guard, not reached in tests
         raise RuntimeError(
@@ -337,11 +340,17 @@ def simulate(
     rows = np.vstack([rec[:, 1:], yend[None, :]])
     u1, u2, u3 = rows[:, 0], rows[:, 1], rows[:, 2]
     s = np.exp(rows[:, 3])  # 0 at the stop
-    fx, fy, mm, _ = wrench_array(
-        par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-        par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0, rows[:, 7].copy(), u1.copy(), u2.copy(), u3 / k, 1e-12,
-    )
+    if body.is_footprint:
+        fx, fy, mm = fp_wrench_array(
+            fe, fc, geo, par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
+            par[_ode.P_BODY] != 0.0, rows[:, 7].copy(), u1.copy(), u2.copy(), u3 / k,
+        )
+    else:
+        fx, fy, mm, _ = wrench_array(
+            par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
+            par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
+            par[_ode.P_BODY] != 0.0, rows[:, 7].copy(), u1.copy(), u2.copy(), u3 / k, 1e-12,
+        )
     load = body.mass * g
     u12 = np.hypot(u1, u2)
     theta = np.arctan2(u2, u1)

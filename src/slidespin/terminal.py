@@ -48,6 +48,8 @@ from scipy.optimize import brentq, root
 
 from . import _ode
 from . import _validate as v
+from ._footprint_kernel import wrench_array as fp_wrench_array
+from ._footprint_kernel import wrench_world as fp_wrench_world
 from ._kernel import STATUS_OK, wrench_array, wrench_world
 from .body import Body, State
 from .friction import FrictionTensor
@@ -109,8 +111,35 @@ def _check_bracket(bracket, a: float) -> tuple[float, float]:
     return lo, hi
 
 
+class _Par(np.ndarray):
+    """The engine's parameter vector, carrying the footprint arrays (``fp``: (edges, circles,
+    geo) in natural units, or None for an ellipse) to the wrench wrappers below."""
+
+    fp = None
+
+
+def _params(body, friction, tol=_WRENCH_TOL):
+    """:meth:`slidespin.Body.engine_params` as one :class:`_Par` (natural units, ℓ = 1)."""
+    par, fe, fc, geo = body.engine_params(friction, tol)
+    p = par.view(_Par)
+    p.fp = (fe, fc, geo) if body.is_footprint else None
+    return p
+
+
+def _fp_world(par, phi, vx, vy, omega):
+    """(Fx, Fy, M) per unit load on a footprint (exact kernel), arrays or scalars."""
+    fe, fc, geo = par.fp
+    args = (fe, fc, geo, par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
+            par[_ode.P_BODY] != 0.0)
+    if np.ndim(vx) == 0:
+        return fp_wrench_world(*args, float(phi), float(vx), float(vy), float(omega))
+    return fp_wrench_array(*args, phi, vx, vy, omega)
+
+
 def _wrench_nat(par, phi, vx, vy, omega):
     """(Fx, Fy, M) per unit load, a = 1, for a velocity of G (vx, vy) and spin ω."""
+    if getattr(par, "fp", None) is not None:
+        return _fp_world(par, phi, vx, vy, omega)
     fx, fy, m, st = wrench_world(
         par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
@@ -134,6 +163,9 @@ def _acc_array(par, phi, u1, u2, u3):
     shape = np.shape(u1)
     u1, u2, u3 = (np.ascontiguousarray(np.ravel(x), dtype=float) for x in (u1, u2, u3))
     ph = np.full(u1.size, float(phi))
+    if getattr(par, "fp", None) is not None:
+        fx, fy, m = _fp_world(par, ph, u1, u2, u3 / k)
+        return fx.reshape(shape), fy.reshape(shape), (m / k).reshape(shape)
     fx, fy, m, st = wrench_array(
         par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
@@ -182,7 +214,8 @@ def terminal_ratio(
     Parameters
     ----------
     body : Body
-        Patch, pressure law and inertia (I* = I/(m a²) enters eq. 16).
+        Patch (an ellipse or any footprint), pressure law and inertia (I* = I/(m a²) enters
+        eq. 16; for a footprint a is its extent, :attr:`slidespin.Body.length_unit`).
     friction : FrictionTensor
         Friction tensor.
     phi : float
@@ -197,8 +230,8 @@ def terminal_ratio(
     Returns
     -------
     float
-        β [m] (same length unit as the patch; divide by ``body.patch.a`` for the paper's
-        units). ``inf`` if eq. 16 has no root because β grows without bound (the spin dies
+        β [m] (same length unit as the patch; divide by ``body.length_unit`` for the
+        paper's units). ``inf`` if eq. 16 has no root because β grows without bound (the spin dies
         first: β M_Cζ > I* F_τ for every β), ``0.0`` if it shrinks to zero (the sliding
         dies first). If there are several roots, the smallest one that attracts the motion
         along the imposed direction (dβ/dt, which has the sign of β M_Cζ − I* F_τ, changes
@@ -221,9 +254,9 @@ def terminal_ratio(
     _check_body_friction(body, friction)
     phi = v.finite("phi", phi)
     theta = v.finite("theta", theta)
-    par = body.kernel_params(friction, _WRENCH_TOL)
+    par = _params(body, friction)
     h = _eq16_residual(par, body.inertia_ratio, phi, theta)
-    a = body.patch.a
+    a = body.length_unit
     if bracket is not None:
         lo, hi = (x / a for x in _check_bracket(bracket, a))
         if h(lo) * h(hi) > 0.0:
@@ -394,7 +427,13 @@ def _make_state(par, phi, u, a_len, *, continuum=False, jac=None, e1=None, e2=No
 
 def _rotationally_symmetric(body, friction) -> bool:
     """Circle, centred pressure and an isotropic symmetric part: the flow commutes with
-    rotations about the spin axis, so fixed points off the poles come in circles."""
+    rotations about the spin axis, so fixed points off the poles come in circles. For a
+    footprint: a centred disk or ring under uniform pressure
+    (:func:`slidespin.footprint_pressure.symmetry`)."""
+    if body.is_footprint:
+        from .footprint_pressure import symmetry
+
+        return bool(symmetry(body.patch, body.pressure)[1] and friction.fx == friction.fy)
     patch = body.patch
     centred = body.mass_centre == (0.0, 0.0)
     return bool(patch.a == patch.b and centred and friction.fx == friction.fy)
@@ -532,7 +571,8 @@ def terminal_states(body: Body, friction: FrictionTensor, phi: float) -> tuple:
     Parameters
     ----------
     body : Body
-        Patch, pressure law, mass and inertia.
+        Patch (an ellipse or any footprint; β*/a is then in units of its extent), pressure
+        law, mass and inertia.
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).
     phi : float
@@ -569,8 +609,8 @@ def terminal_states(body: Body, friction: FrictionTensor, phi: float) -> tuple:
     """
     _check_body_friction(body, friction)
     phi = v.finite("phi", phi)
-    par = body.kernel_params(friction, _WRENCH_TOL)
-    a_len = body.patch.a
+    par = _params(body, friction)
+    a_len = body.length_unit
     symmetric = _rotationally_symmetric(body, friction)
     states = []
     states += _equator_points(par, body, friction, phi, a_len)
@@ -656,15 +696,35 @@ def _check_table2(pressure, friction):
         )
 
 
-def _circle_params(pressure, friction):
-    body = Body(Circle(1.0), pressure, 1.0)
-    return body.kernel_params(friction, _WRENCH_TOL)
+def _circle_params(pressure, friction, patch=None):
+    """Engine parameters of the round patch of Table 2 in units of its radius: the unit
+    Circle, or a centred Disk or Annulus (scaled to outer radius 1)."""
+    if patch is None or isinstance(patch, Circle):
+        body = Body(Circle(1.0), pressure, 1.0)
+        return _params(body, friction)
+    from .footprint import Annulus, is_footprint
+    from .footprint_pressure import symmetry
+
+    ok = isinstance(patch, Annulus) and is_footprint(patch)
+    if ok:
+        ring = Annulus(patch.inner_radius / patch.outer_radius, 1.0)
+        body = Body(ring, pressure, 1.0)
+        ok = symmetry(ring, pressure)[1] and patch.centre == (0.0, 0.0)
+    if not ok:
+        raise ValueError(
+            f"patch = {patch!r} is invalid for Table 2; valid values: None or a Circle, or a "
+            "centred Disk or Annulus under uniform pressure (an axisymmetric footprint)"
+        )
+    return _params(body, friction)
 
 
 def _j_values(par, beta):
     """J(β) = β M_Cζ/F_τ at ϑ = 0, φ = 0, ω = 1 for an array of β (units of a)."""
     beta = np.ascontiguousarray(np.ravel(beta), dtype=float)
     n = beta.size
+    if getattr(par, "fp", None) is not None:
+        fx, fy, m = _fp_world(par, np.zeros(n), beta, np.zeros(n), np.ones(n))
+        return beta * (-m) / (-fx)
     fx, fy, m, st = wrench_array(
         par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
         par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
@@ -675,7 +735,7 @@ def _j_values(par, beta):
     return beta * (-m) / (-fx)
 
 
-def inertia_for_ratio(pressure, friction: FrictionTensor, ratio):
+def inertia_for_ratio(pressure, friction: FrictionTensor, ratio, patch=None):
     """J(β): the inertia ratio I* whose terminal ratio is β = v/(a ω) (circle, MODEL §6).
 
     Parameters
@@ -687,6 +747,9 @@ def inertia_for_ratio(pressure, friction: FrictionTensor, ratio):
         low-friction axis OX (ϑ* = 0).
     ratio : float or array_like
         β/a = v/(a ω), in [1e-9, 1e9].
+    patch : Circle, Disk or Annulus, optional
+        The round patch (default a circle); a centred ``Annulus`` under uniform pressure
+        gives the ring's J(β), with a its outer radius.
 
     Returns
     -------
@@ -695,7 +758,7 @@ def inertia_for_ratio(pressure, friction: FrictionTensor, ratio):
     """
     _check_table2(pressure, friction)
     arr = v.real_array("ratio", ratio, *v.RATIO)
-    out = _j_values(_circle_params(pressure, friction), arr).reshape(arr.shape)
+    out = _j_values(_circle_params(pressure, friction, patch), arr).reshape(arr.shape)
     return float(out) if out.ndim == 0 else out
 
 
@@ -709,7 +772,7 @@ def _richardson(values, factor):
     return (q4 * r2 - r1) / (q4 - 1.0)
 
 
-def inertia_intervals(pressure, friction: FrictionTensor) -> InertiaIntervals:
+def inertia_intervals(pressure, friction: FrictionTensor, patch=None) -> InertiaIntervals:
     """Boundaries (I₁, I₂, I₃) of Table 2, computed numerically from J(β) (MODEL §6).
 
     Parameters
@@ -718,6 +781,11 @@ def inertia_intervals(pressure, friction: FrictionTensor) -> InertiaIntervals:
         Pressure law on a circular patch.
     friction : FrictionTensor
         Orthotropic friction (f = 0, principal axes along OX, OY) with μ = fy − fx ≥ 0.
+    patch : Circle, Disk or Annulus, optional
+        The round patch: a circle by default; a centred ``Annulus(r, R)`` (or ``Disk``)
+        under uniform pressure gives the ring's boundaries, with I* = I/(m R²). For isotropic
+        friction they are I₁ = (R² + r²)/(4R²), I₃ = (2/3)(R² + Rr + r²)/R² (from the
+        small- and large-β limits of the wrench), and a thin ring has I₂ → 1 (MODEL §10).
 
     Returns
     -------
@@ -738,7 +806,7 @@ def inertia_intervals(pressure, friction: FrictionTensor) -> InertiaIntervals:
     [0.25, 0.333333, 0.666667]
     """
     _check_table2(pressure, friction)
-    par = _circle_params(pressure, friction)
+    par = _circle_params(pressure, friction, patch)
     big = _j_values(par, np.array([100.0, 200.0, 400.0]))
     small = _j_values(par, np.array([1e-2, 5e-3, 2.5e-3]))
     i2 = float(_j_values(par, np.array([1.0]))[0])
@@ -774,12 +842,14 @@ def paper_inertia_intervals(pressure, friction: FrictionTensor) -> InertiaInterv
     return InertiaIntervals(*vals)
 
 
-def circle_terminal_ratio(pressure, friction: FrictionTensor, inertia_ratio: float) -> float:
+def circle_terminal_ratio(pressure, friction: FrictionTensor, inertia_ratio: float,
+                          patch=None) -> float:
     """Terminal ratio k = v/(a ω) of a circular patch with inertia ratio I* (J⁻¹, MODEL §6).
 
     Returns ``inf`` for I* ≤ I₁ (pure sliding) and ``0.0`` for I* ≥ I₃ (pure spinning);
     otherwise the root of J(k) = I*, along the low-friction axis (ϑ* = 0). ``inertia_ratio``
-    must lie in [1e-8, 1e8], the range of :class:`slidespin.Body`.
+    must lie in [1e-8, 1e8], the range of :class:`slidespin.Body`. ``patch``: as in
+    :func:`inertia_intervals` (a centred ring gives v/(R ω)).
 
     Examples
     --------
@@ -789,7 +859,7 @@ def circle_terminal_ratio(pressure, friction: FrictionTensor, inertia_ratio: flo
     """
     _check_table2(pressure, friction)
     i_star = v.bounded("inertia_ratio", inertia_ratio, *v.INERTIA_RATIO)
-    par = _circle_params(pressure, friction)
+    par = _circle_params(pressure, friction, patch)
 
     def g(log_beta):
         return float(_j_values(par, np.array([math.exp(log_beta)]))[0]) - i_star
@@ -848,9 +918,11 @@ def _dense_curve(par, y0, s_end, points):
     from scipy.integrate import solve_ivp
 
     out = np.empty(_ode.NY)
+    fe, fc, geo = par.fp if getattr(par, "fp", None) is not None else _ode.no_footprint()
+    plain = np.asarray(par).copy()
 
     def f(tau, y):
-        _ode.rhs(par, y, out)
+        _ode.rhs(plain, fe, fc, geo, y, out)
         return out.copy()
 
     def reached(tau, y):
@@ -916,8 +988,8 @@ def phase_portrait(
     theta = v.finite("theta", theta)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     k = body.radius_of_gyration
-    a = body.patch.a
-    par = body.kernel_params(friction)
+    a = body.length_unit
+    par = _params(body, friction, 1e-12)
     kn = par[_ode.P_K]  # k/a
     v_unit, t_unit = math.sqrt(a * g), math.sqrt(a / g)
     spins, speeds, betas, endings = [], [], [], []

@@ -102,7 +102,7 @@ def friction_wrench(
     Parameters
     ----------
     body : Body
-        Patch, pressure law, mass and inertia.
+        Patch (an ellipse or any footprint), pressure law, mass and inertia.
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).
     vx, vy : float or array_like
@@ -124,6 +124,10 @@ def friction_wrench(
 
     Notes
     -----
+    For a footprint patch (:mod:`slidespin.footprint`) this is
+    :func:`slidespin.footprint_wrench` with the load m g: exact (closed forms, MODEL §10) for
+    every motion state, and ``tol`` is not used.
+
     The wrench depends only on the direction of (vx, vy, a ω): it is homogeneous of degree 0
     (MODEL §2). That direction is formed after scaling by the largest magnitude, so states
     of any finite size (1e-300 … 1e300) give the same wrench as their unit-size copies. At rest (v = ω = 0) static friction is undetermined and a zero wrench is
@@ -143,6 +147,11 @@ def friction_wrench(
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     tol = v.bounded("tol", tol, *v.WRENCH_TOL)
+    if body.is_footprint:  # the exact footprint kernel (MODEL §10); ``tol`` is not needed
+        from .footprint_wrench import footprint_wrench
+
+        return footprint_wrench(body.patch, body.pressure, friction, vx, vy, omega, phi,
+                                load=body.mass * g)
     arrays = [_check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
     scalar = all(a.ndim == 0 for a in arrays)
     try:

@@ -1,0 +1,200 @@
+"""Motion of bodies on footprints (issue #12 item 4): simulate, the batch engine, terminal
+states, against independent truth.
+
+Truth used here: closed forms (pure translation of any footprint, t_stop = v0/(μ g) and
+distance v0²/(2 μ g); the pure-spin torque of a uniform ring (2/3) μ m g (R³ − r³)/(R² − r²)),
+the existing ellipse engine on a ``Circle`` (a ``Disk`` footprint must stop the same way;
+β*/a = 0.653 for I* = 1/2, the published value), the energy balance with the friction power
+integrated from the slow independent reference ``tests/footprint_reference.py``, and the limit
+of a thin uniform ring with I* = 1 (v/(Rω) → 1, MODEL §10).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import simpson
+
+import slidespin as ss
+from footprint_reference import reference_wrench
+from slidespin.batch import simulate_many
+from slidespin.footprint import Annulus, Disk, Pads, Polygon, Rectangle
+
+G = 9.81
+ARROW = [(0.0, 0.0), (0.2, 0.08), (0.0, 0.16), (0.05, 0.08)]  # non-convex
+L_SHAPE = [(0.0, 0.0), (0.3, 0.0), (0.3, 0.1), (0.1, 0.1), (0.1, 0.25), (0.0, 0.25)]
+
+TRANSLATION_CASES = {
+    "rectangle": (Rectangle(0.3, 0.1, angle=0.4), ss.UniformPressure()),
+    "arrow": (Polygon(ARROW), ss.UniformPressure()),
+    "l_shape_linear": (Polygon(L_SHAPE), ss.LinearPressure(0.1, 0.08)),
+    "runners": (Pads([Rectangle(0.8, 0.02, centre=(0.0, -0.2)),
+                      Rectangle(0.8, 0.02, centre=(0.0, 0.2))]), ss.UniformPressure()),
+    "ring": (Annulus(0.05, 0.06, centre=(0.01, 0.0)), ss.UniformPressure()),
+}
+
+
+@pytest.mark.parametrize("name", sorted(TRANSLATION_CASES))
+def test_pure_translation_closed_form(name):
+    """Isotropic μ, no spin: the force is −μ m g v̂ and its moment about G vanishes (G is the
+    pressure centroid), so the body slides straight and stops at t = v0/(μ g) after
+    v0²/(2 μ g), whatever the footprint."""
+    fp, law = TRANSLATION_CASES[name]
+    mu, v0, theta = 0.35, 1.7, 0.6
+    body = ss.Body(fp, law, mass=2.5)
+    tr = ss.simulate(body, ss.FrictionTensor(mu, mu), ss.State.from_speed(v0, 0.0, theta, 0.3))
+    assert tr.status == "stopped" and tr.ending == "pure_sliding"
+    assert tr.t_stop == pytest.approx(v0 / (mu * G), rel=1e-9)
+    assert tr.distance == pytest.approx(v0**2 / (2 * mu * G), rel=1e-9)
+    assert tr.stop_state.x == pytest.approx(tr.distance * math.cos(theta), rel=1e-9)
+    assert tr.stop_state.y == pytest.approx(tr.distance * math.sin(theta), rel=1e-9)
+    assert tr.stop_state.phi == pytest.approx(0.3, abs=1e-12)
+    assert tr.theta_stop == pytest.approx(theta, abs=1e-9)
+    assert tr.beta_stop == math.inf
+
+
+@pytest.mark.parametrize("inner", [0.0, 0.02, 0.055])
+def test_ring_pure_spin_stop(inner):
+    """Pure spin about the centre of a uniform ring: constant torque (2/3) μ m g (R³ − r³)/
+    (R² − r²), so t_stop = I ω0 / torque and the body turns by I ω0²/(2 torque)."""
+    R, m, mu, w0 = 0.06, 1.3, 0.25, 30.0
+    fp = Disk(R) if inner == 0.0 else Annulus(inner, R)
+    body = ss.Body(fp, ss.UniformPressure(), mass=m)
+    torque = 2.0 / 3.0 * mu * m * G * (R**3 - inner**3) / (R**2 - inner**2)
+    inertia = m * (R**2 + inner**2) / 2.0  # the uniform plate (the default)
+    assert body.moment_of_inertia == pytest.approx(inertia, rel=1e-12)
+    tr = ss.simulate(body, ss.FrictionTensor(mu, mu), ss.State(omega=w0))
+    assert tr.status == "stopped" and tr.ending == "pure_spinning"
+    assert tr.t_stop == pytest.approx(inertia * w0 / torque, rel=1e-9)
+    assert tr.stop_state.phi == pytest.approx(inertia * w0**2 / (2.0 * torque), rel=1e-9)
+    assert abs(tr.stop_state.x) < 1e-12 and abs(tr.stop_state.y) < 1e-12
+
+
+def test_disk_footprint_stops_like_the_circle():
+    """The footprint engine on a Disk and the ellipse engine on a Circle: the same motion
+    (independent kernels), and the published β*/a = 0.653 of the uniform disk, I* = 1/2."""
+    fr = ss.FrictionTensor(0.3, 0.3)
+    s0 = ss.State.from_speed(1.0, 20.0, 0.3, 0.1)
+    a = ss.simulate(ss.Body(Disk(0.1), ss.UniformPressure(), mass=1.0), fr, s0)
+    b = ss.simulate(ss.Body(ss.Circle(0.1), ss.UniformPressure(), mass=1.0), fr, s0)
+    assert a.status == b.status == "stopped" and a.ending == b.ending == "mixed"
+    for name in ("t_stop", "distance", "beta_stop"):
+        assert getattr(a, name) == pytest.approx(getattr(b, name), rel=1e-8), name
+    for name in ("x", "y", "phi"):
+        assert getattr(a.stop_state, name) == pytest.approx(getattr(b.stop_state, name),
+                                                            rel=1e-8, abs=1e-10), name
+    # a uniform disk under isotropic friction slides straight (F_n = 0 by symmetry); the
+    # ellipse engine's ϑ* on the Circle drifts by ~1e-4 along its neutral circle of fixed
+    # points (reported to the lead), so ϑ* is checked against the exact value here
+    assert a.theta_stop == pytest.approx(0.3, abs=1e-8)
+    assert a.beta_stop_ratio == pytest.approx(0.653, abs=5e-4)
+
+
+def test_disk_footprint_orthotropic_matches_circle():
+    """Orthotropic body-fixed friction and an off-centre linear law: Disk == Circle."""
+    fr = ss.FrictionTensor(0.25, 0.4, 0.05, frame="body")
+    s0 = ss.State.from_speed(0.8, -12.0, 1.1, 0.4)
+    law = ss.LinearPressure(0.02, -0.015)
+    a = ss.simulate(ss.Body(Disk(0.1), law, mass=1.0, moment_of_inertia=0.004), fr, s0)
+    b = ss.simulate(ss.Body(ss.Circle(0.1), law, mass=1.0, moment_of_inertia=0.004), fr, s0)
+    assert a.ending == b.ending
+    assert a.t_stop == pytest.approx(b.t_stop, rel=1e-8)
+    assert a.stop_state.x == pytest.approx(b.stop_state.x, rel=1e-8, abs=1e-10)
+    assert a.stop_state.y == pytest.approx(b.stop_state.y, rel=1e-8, abs=1e-10)
+    assert a.stop_state.phi == pytest.approx(b.stop_state.phi, rel=1e-8, abs=1e-10)
+
+
+def test_energy_balance_with_reference_power():
+    """Kinetic energy lost = −∫ (F·v + M ω) dt, the power from the independent reference
+    wrench along the trajectory (non-convex polygon, linear pressure, skew plane tensor), over
+    the first 200 recorded steps (the reference is slow)."""
+    fp = Polygon(L_SHAPE)
+    law = ss.LinearPressure(0.1, 0.08)
+    body = ss.Body(fp, law, mass=2.0)
+    tensor = np.array([[0.3, 0.06], [-0.06, 0.45]])
+    fr = ss.FrictionTensor(0.3, 0.45, 0.06)
+    assert np.allclose(fr.matrix, tensor)
+    s0 = ss.State.from_speed(1.2, 9.0, 0.4, 0.2)
+    tr = ss.simulate(body, fr, s0, max_step=0.05)
+    assert tr.status == "stopped" and tr.t.size > 400
+    n = 201
+    power = np.empty(n)
+    for i in range(n):
+        fx, fy, m = reference_wrench(fp, ("linear", 0.1, 0.08), tensor, tr.vx[i], tr.vy[i],
+                                     tr.omega[i], tr.phi[i], "plane", body.mass * G, tol=1e-10)
+        power[i] = fx * tr.vx[i] + fy * tr.vy[i] + m * tr.omega[i]
+
+    def energy(i):
+        return 0.5 * body.mass * (tr.vx[i] ** 2 + tr.vy[i] ** 2) + 0.5 * (
+            body.moment_of_inertia * tr.omega[i] ** 2)
+
+    lost = energy(0) - energy(n - 1)
+    assert lost > 0.3 * energy(0)
+    assert -simpson(power, x=tr.t[:n]) == pytest.approx(lost, rel=1e-7)
+
+
+def test_thin_ring_terminal_ratio_tends_to_one():
+    """A thin uniform ring with I* = 1 stops with v/(Rω) → 1 (MODEL §10); the deviation
+    shrinks with the width."""
+    R = 0.1
+    dev = []
+    for width in (1e-2, 1e-3):
+        body = ss.Body.from_inertia_ratio(Annulus(R * (1 - width), R), ss.UniformPressure(),
+                                          1.0, 1.0)
+        assert body.length_unit == R
+        tr = ss.simulate(body, ss.FrictionTensor(0.2, 0.2), ss.State.from_speed(0.5, 8.0))
+        assert tr.status in ("stopped", "marginal") and tr.ending == "mixed"
+        dev.append(abs(tr.beta_stop_ratio - 1.0))
+    assert dev[1] < 2e-3
+    assert dev[1] < dev[0] / 3.0
+
+
+def test_body_validation_and_refusals():
+    with pytest.raises(ValueError, match="turns negative"):
+        ss.Body(Rectangle(0.2, 0.1), ss.LinearPressure(0.09, 0.0), mass=1.0)
+    with pytest.raises(ValueError, match="pressure = "):
+        ss.Body(Rectangle(0.2, 0.1), ss.HertzPressure(), mass=1.0)
+    with pytest.raises(ValueError, match="patch = "):
+        ss.Body("square", ss.UniformPressure(), mass=1.0)
+    body = ss.Body(Rectangle(0.2, 0.1), ss.UniformPressure(), mass=1.0)
+    with pytest.raises(ValueError, match="elliptic patches only"):
+        body.kernel_params(ss.FrictionTensor(0.3, 0.3))
+    # the default inertia is the uniform plate: m (L² + W²)/12; ℓ = the half-diagonal
+    assert body.moment_of_inertia == pytest.approx((0.04 + 0.01) / 12.0, rel=1e-12)
+    assert body.length_unit == pytest.approx(math.hypot(0.1, 0.05), rel=1e-12)
+
+
+def test_friction_wrench_on_footprint_is_the_reference():
+    fp = Polygon(ARROW, centre=(0.01, -0.02), angle=0.3)
+    body = ss.Body(fp, ss.UniformPressure(), mass=1.5)
+    fr = ss.FrictionTensor(0.3, 0.5, 0.1, frame="body")
+    w = ss.friction_wrench(body, fr, 0.2, -0.1, 3.0, phi=0.7)
+    ref = reference_wrench(fp, ("uniform",), fr.matrix, 0.2, -0.1, 3.0, 0.7, "body", 1.5 * G)
+    assert (w.force_x, w.force_y, w.moment) == pytest.approx(ref, abs=1e-9 * 1.5 * G)
+
+
+def test_simulate_many_footprint_is_simulate_bit_for_bit():
+    """The batch engine on one footprint body gives simulate()'s numbers to the last bit."""
+    fp = Pads([Rectangle(0.6, 0.03, centre=(0.0, -0.15)), Rectangle(0.6, 0.03, centre=(0.0, 0.15),
+                                                                    angle=0.05)])
+    body = ss.Body(fp, ss.LinearPressure(0.02, 0.01), mass=3.0, moment_of_inertia=0.2)
+    fr = ss.FrictionTensor(0.2, 0.35, 0.03, angle=0.2)
+    rng = np.random.default_rng(7)
+    states = np.column_stack((rng.normal(size=6), rng.normal(size=6), rng.uniform(-3, 3, 6),
+                              rng.normal(size=6), rng.normal(size=6), rng.normal(0, 8, 6)))
+    states[0, 3:] = 0.0  # at rest
+    states[1, 5] = 0.0  # pure sliding
+    states[2, 3:5] = 0.0  # pure spinning
+    res = simulate_many(body, fr, states)
+    for i, row in enumerate(states):
+        tr = ss.simulate(body, fr, ss.State(*row))
+        assert res.status[i] == tr.status and res.ending[i] == tr.ending
+        for got, want in ((res.t_stop[i], tr.t_stop), (res.x_stop[i], tr.stop_state.x),
+                          (res.y_stop[i], tr.stop_state.y), (res.phi_stop[i], tr.stop_state.phi),
+                          (res.path_length[i], tr.distance), (res.beta_stop[i], tr.beta_stop),
+                          (res.theta_stop[i], tr.theta_stop)):
+            assert got == want or (np.isnan(got) and np.isnan(want))
+    assert res.ending[0] == "at_rest"
+    assert res.ending[1] == "pure_sliding"
