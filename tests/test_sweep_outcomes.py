@@ -48,6 +48,7 @@ def fake_engine(fields, rtol=1e-10):
         "t_stop": 1.0 + mu, "beta_stop": beta, "theta_stop": mu, "phi_stop": istar,
         "x_stop": np.zeros(n), "y_stop": np.zeros(n), "path_length": np.ones(n),
         "ending": ending.astype(object), "status": status.astype(object),
+        "saddle_energy": np.where(status == "saddle", 1e-20, np.nan),
         "n_steps": np.full(n, 10, dtype=np.int64),
     })
 

@@ -80,7 +80,7 @@ _EXCLUSIVE = (("b", "e", "aspect"), ("fy", "mu"), ("I_star", "moment_of_inertia"
 _TOP_KEYS = {"name", "description", "kind", "chunk_size", "rtol", "fixed", "vary", "random"}
 RESULT_COLUMNS = (
     "t_stop", "beta_stop", "theta_stop", "phi_stop", "x_stop", "y_stop", "path_length",
-    "ending", "status", "n_steps",
+    "ending", "status", "saddle_energy", "n_steps",
 )
 MANIFEST = "manifest.json"
 #: smallest number of cases per task sent to an executor (Dask or concurrent.futures)
