@@ -416,3 +416,22 @@ def test_wrapped_tracker_angles_fit_like_unwrapped_ones():
         assert b.estimates[name] == pytest.approx(a.estimates[name], rel=1e-6)
         assert b.std_errors[name] == pytest.approx(a.std_errors[name], rel=1e-4)
     assert abs(b.residuals[0]["phi"]).max() < 6 * SIGMA["phi"]
+
+
+def test_table_with_columns_like_a_dataframe():
+    """Anything with ``columns`` and item access (a pandas DataFrame) is a run."""
+
+    class Table:
+        def __init__(self, data):
+            self.data = data
+            self.columns = list(data)
+
+        def __getitem__(self, key):
+            return self.data[key]
+
+    t = np.linspace(0.0, 0.2, 30)
+    table = Table({"t": t, "x": 1.0 * t - 0.5 * 0.4 * G * t**2})
+    res = fit(table, plate(), ss.FrictionTensor(0.3, 0.3), free=("fx",), sigma={"x": 1e-6})
+    assert res.estimates["fx"] == pytest.approx(0.4, rel=1e-5)
+    with pytest.raises(ValueError, match="unknown column 'run'"):
+        as_runs(Table({"t": t, "x": t, "run": t}))

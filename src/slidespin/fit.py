@@ -134,6 +134,9 @@ def _as_run(obj, where: str) -> dict:
     elif isinstance(obj, Mapping):
         names = tuple(obj)
         get = obj.__getitem__
+    elif hasattr(obj, "columns") and hasattr(obj, "__getitem__"):  # a pandas DataFrame
+        names = tuple(str(c) for c in obj.columns)
+        get = obj.__getitem__
     else:
         raise ValueError(
             f"{where} = {type(obj).__name__} is invalid; valid values: a mapping (dict) or a "
@@ -175,7 +178,7 @@ def as_runs(data) -> list[dict]:
 
     Parameters
     ----------
-    data : mapping, structured array, or a list of them
+    data : mapping, structured array, DataFrame, or a list of them
         One run, or several. A run has the times ``t`` [s] (finite, strictly increasing) and
         any of ``x``, ``y`` [m] (position of G) and ``phi`` [rad] (body angle), one value per
         time; NaN marks a missing value.
@@ -185,7 +188,7 @@ def as_runs(data) -> list[dict]:
     ValueError
         Naming the run, the column and the row.
     """
-    if isinstance(data, (Mapping, np.ndarray)) and not (
+    if (isinstance(data, (Mapping, np.ndarray)) or hasattr(data, "columns")) and not (
         isinstance(data, np.ndarray) and data.dtype.names is None
     ):
         return [_as_run(data, "data")]
