@@ -198,3 +198,68 @@ def test_simulate_many_footprint_is_simulate_bit_for_bit():
             assert got == want or (np.isnan(got) and np.isnan(want))
     assert res.ending[0] == "at_rest"
     assert res.ending[1] == "pure_sliding"
+
+
+@pytest.mark.parametrize("inner", [0.0, 0.3, 0.8])
+def test_ring_inertia_intervals_closed_forms(inner):
+    """Isotropic friction on a uniform ring r ≤ ρ ≤ R (units of R): I₁ = J(∞) = ⟨ρ²⟩/2 =
+    (1 + r²)/4 (far ICR: M ≈ μ P ⟨(v̂·r)²⟩ ω/v) and I₃ = J(0⁺) = (2/3)(1 + r + r²) (pure-spin
+    torque (2/3) μ P (1 − r³)/(1 − r²) over F_τ ≈ μ P β ⟨1/ρ⟩/2, ⟨1/ρ⟩ = 2/(1 + r))."""
+    patch = Disk(0.2) if inner == 0.0 else Annulus(0.2 * inner, 0.2)
+    iv = ss.inertia_intervals(ss.UniformPressure(), ss.FrictionTensor(0.3, 0.3), patch=patch)
+    assert iv.i1 == pytest.approx((1 + inner**2) / 4, abs=1e-9)
+    assert iv.i3 == pytest.approx(2.0 / 3.0 * (1 + inner + inner**2), abs=1e-9)
+    assert iv.i1 < iv.i2 < iv.i3
+    if inner == 0.0:  # the disk: Table 2's uniform row with μ = 0
+        assert iv.i2 == pytest.approx(1.0 / 3.0, abs=1e-9)
+
+
+def test_thin_ring_inertia_interval_and_ratio():
+    """A thin ring: I₂ = J(1) → 1 (v = Rω at I* = 1) as the width w → 0 (measured: 1 − I₂ ≈
+    3.5 w, J is steep at β = 1 where the ICR is on the ring), and the terminal ratio from J⁻¹
+    agrees with the simulated stop of the same ring (two independent paths)."""
+    fr = ss.FrictionTensor(0.3, 0.3)
+    ring = Annulus(0.09999, 0.1)
+    iv = ss.inertia_intervals(ss.UniformPressure(), fr, patch=ring)
+    assert iv.i2 == pytest.approx(1.0, abs=1e-3)
+    k = ss.circle_terminal_ratio(ss.UniformPressure(), fr, 1.0, patch=ring)
+    assert k == pytest.approx(1.0, abs=1e-4)
+    body = ss.Body.from_inertia_ratio(ring, ss.UniformPressure(), 1.0, 1.0)
+    tr = ss.simulate(body, fr, ss.State.from_speed(0.5, 3.0))
+    assert tr.beta_stop_ratio == pytest.approx(k, abs=1e-8)
+
+
+def test_inertia_intervals_refuse_other_footprints():
+    with pytest.raises(ValueError, match="patch = "):
+        ss.inertia_intervals(ss.UniformPressure(), ss.FrictionTensor(0.3, 0.3),
+                             patch=Rectangle(0.2, 0.1))
+    with pytest.raises(ValueError, match="patch = "):
+        ss.inertia_intervals(ss.UniformPressure(), ss.FrictionTensor(0.3, 0.3),
+                             patch=Annulus(0.05, 0.1, centre=(0.01, 0.0)))
+
+
+def test_terminal_states_disk_footprint_is_the_circle():
+    fr = ss.FrictionTensor(0.3, 0.3)
+    disk = ss.Body.from_inertia_ratio(Disk(0.1), ss.UniformPressure(), 1.0, 0.5)
+    best = ss.terminal_states(disk, fr, 0.0)[0]
+    assert best.ending == "mixed" and best.stable and best.continuum
+    assert best.beta_ratio == pytest.approx(0.653, abs=5e-4)
+    assert ss.terminal_ratio(disk, fr, 0.0) / 0.1 == pytest.approx(best.beta_ratio, rel=1e-9)
+    circ = ss.Body.from_inertia_ratio(ss.Circle(0.1), ss.UniformPressure(), 1.0, 0.5)
+    assert ss.terminal_ratio(circ, fr, 0.0) == pytest.approx(ss.terminal_ratio(disk, fr, 0.0),
+                                                             rel=1e-9)
+
+
+def test_terminal_states_rectangle_agree_with_simulate():
+    """The stop of a simulated rectangle is one of the attracting fixed points that
+    terminal_states finds at the final body angle (two independent paths: integration with
+    Newton polishing vs a grid scan refined by Powell's method)."""
+    body = ss.Body.from_inertia_ratio(Rectangle(0.3, 0.1), ss.UniformPressure(), 1.0, 0.4)
+    fr = ss.FrictionTensor(0.25, 0.4, frame="body")
+    tr = ss.simulate(body, fr, ss.State.from_speed(1.0, 15.0, 0.4, 0.2))
+    assert tr.status == "stopped" and tr.ending == "mixed"
+    states = ss.terminal_states(body, fr, tr.stop_state.phi)
+    near = [s for s in states if s.stable and s.ending == "mixed"
+            and abs(s.beta - tr.beta_stop) < 1e-6 * abs(tr.beta_stop)
+            and abs(math.remainder(s.theta - tr.theta_stop, 2 * math.pi)) < 1e-6]
+    assert len(near) == 1
