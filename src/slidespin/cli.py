@@ -19,7 +19,6 @@ never straight into the working directory.
 from __future__ import annotations
 
 import argparse
-import errno
 import importlib
 import json
 import math
@@ -171,13 +170,9 @@ def write_outputs(files) -> None:
 
 
 def _write_failure(exc: OSError, path) -> str:
-    what = {
-        errno.ENOSPC: "disk full",
-        getattr(errno, "EDQUOT", -1): "disk quota exceeded",
-        errno.EACCES: "permission denied",
-        errno.EPERM: "permission denied",
-        errno.EROFS: "read-only file system",
-    }.get(exc.errno, "cannot write")
+    from ._io import os_error_kind
+
+    what = os_error_kind(exc)
     return f"{what} while writing {str(path)!r} ({exc.strerror}); nothing was written"
 
 

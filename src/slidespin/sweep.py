@@ -464,15 +464,9 @@ STATUS_ORDER = ("stopped", "at_rest", "marginal", "saddle", "max_steps", "step_t
 
 def _os_error(exc: OSError, path, resumable: bool = True) -> SweepError:
     """A one-line :class:`SweepError` saying what went wrong while writing ``path``."""
-    import errno
+    from ._io import os_error_kind
 
-    what = {
-        errno.ENOSPC: "disk full",
-        getattr(errno, "EDQUOT", -1): "disk quota exceeded",
-        errno.EACCES: "permission denied",
-        errno.EPERM: "permission denied",
-        errno.EROFS: "read-only file system",
-    }.get(exc.errno, exc.strerror or type(exc).__name__)
+    what = os_error_kind(exc)
     tail = ("; the finished chunks are kept: free the problem and rerun with --resume "
             "(resume=True) to finish the sweep") if resumable else ""
     return SweepError(f"{what} while writing {str(path)!r} ({exc.strerror}){tail}")
