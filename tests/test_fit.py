@@ -435,3 +435,22 @@ def test_table_with_columns_like_a_dataframe():
     assert res.estimates["fx"] == pytest.approx(0.4, rel=1e-5)
     with pytest.raises(ValueError, match="unknown column 'run'"):
         as_runs(Table({"t": t, "x": t, "run": t}))
+
+
+def test_compare_frames_prefers_the_frame_the_data_were_made_with():
+    from dataclasses import replace
+
+    from slidespin.fit import compare_frames, frame_score
+
+    rng = np.random.default_rng(31)
+    for frame in ("body", "plane"):
+        fr = ss.FrictionTensor(0.3, 0.6, 0.0, frame=frame)
+        runs = synthetic(fr, STATES[:2], 80, SIGMA, rng)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", FitWarning)
+            best, scores, fits = compare_frames(runs, plate(), replace(fr, frame="plane"),
+                                                free=("fx", "fy"))
+        assert best.friction.frame == frame
+        assert scores[frame] < min(scores.values()) + 1e-12
+        assert scores == {k: frame_score(v) for k, v in fits.items()}
+        assert abs(best.estimates["fy"] - 0.6) < 3 * best.std_errors["fy"]

@@ -221,3 +221,16 @@ def test_help_lists_the_free_parameters(capsys):
     assert cli.main(["fit", "--help"]) == 0
     out = capsys.readouterr().out
     assert "moment_of_inertia" in out and "--sigma" in out
+
+
+def test_frame_best_reports_both_scores(tmp_path, capsys):
+    rng = np.random.default_rng(5)
+    data = tmp_path / "d.csv"
+    write_csv(data, small_runs(rng, [ss.State.from_speed(1.0, 6.0, 0.6, 0.2)]))
+    case = tmp_path / "c.toml"
+    case.write_text(CASE_TEXT)
+    assert cli.main(["fit", str(data), "--case", str(case), "--frame", "best", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert set(out["frame_scores"]) == {"plane", "body"}
+    assert out["frame"] == "plane"  # the data were made with a plane tensor
+    assert out["frame_scores"]["plane"] < out["frame_scores"]["body"]

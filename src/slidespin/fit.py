@@ -22,8 +22,9 @@ name                   meaning                                         bounds
 ``moment_of_inertia``  I about G [kg m²]                               > 0
 =====================  ==============================================  ===================
 
-The tensor's ``frame`` (plane or body) is discrete and is not fitted: it is taken from the
-``friction`` given; to choose between frames, fit once with each and compare ``chi2``.
+The tensor's ``frame`` (plane or body) is discrete and is not fitted by :func:`fit`: it is
+taken from the ``friction`` given. :func:`compare_frames` fits both frames and returns the
+better by the likelihood (:func:`frame_score`).
 
 Each run has its own start state (x, y, φ, vx, vy, ω) at its first measured time. A position
 channel present in a run makes that run's position and velocity along it free (x → x, vx;
@@ -75,7 +76,9 @@ __all__ = [
     "FitWarning",
     "IdentifiabilityWarning",
     "as_runs",
+    "compare_frames",
     "fit",
+    "frame_score",
     "read_runs",
     "trajectory_at",
 ]
@@ -866,7 +869,7 @@ def _check_free(free, body):
         if p not in PARAMETERS:
             raise ValueError(
                 f"free parameter {p!r} is unknown; valid names: {', '.join(PARAMETERS)} "
-                "(the tensor's frame is discrete: fit once per frame and compare chi2)"
+                "(the tensor's frame is discrete: compare_frames, or --frame best, fits both)"
             )
     dup = sorted({p for p in free if free.count(p) > 1})
     if dup:
@@ -1187,3 +1190,51 @@ def fit(
         warnings=tuple(caught),
         seconds=time.perf_counter() - t_start,
     )
+
+
+def frame_score(result: FitResult) -> float:
+    """−2 log-likelihood (up to a constant shared by fits of the same data) of a fit.
+
+    With σ given for every channel it is χ²; with σ estimated it is the profile
+    Σ_c n_c ln(SS_c/n_c) over the channels (SS_c the sum of squared residuals). Fits of the
+    same data with the same number of parameters compare by this number: lower is better.
+    """
+    if not any(result.sigma_estimated.values()):
+        return float(result.chi2)
+    score = 0.0
+    for c, estimated in result.sigma_estimated.items():
+        r = np.concatenate([res[c][np.isfinite(res[c])] for res in result.residuals if c in res])
+        if estimated:
+            score += r.size * math.log(max(float(np.mean(r * r)), 1e-300))
+        else:
+            score += float(np.sum(r * r)) / result.sigma[c] ** 2
+    return score
+
+
+def compare_frames(data, body: Body, friction: FrictionTensor, free=("fx", "fy", "f"),
+                   **kwargs):
+    """Fit with the tensor fixed to the plane and to the body; return the better fit.
+
+    The frame is discrete, so it is chosen by fitting both (same free parameters, same
+    options as :func:`fit`) and comparing :func:`frame_score` (−2 log-likelihood; both fits
+    have the same number of parameters).
+
+    Returns
+    -------
+    best : FitResult
+        The fit with the lower score.
+    scores : dict
+        ``{"plane": score, "body": score}``.
+    fits : dict
+        Both fits.
+    """
+    from dataclasses import replace
+
+    if not isinstance(friction, FrictionTensor):
+        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    fits, scores = {}, {}
+    for frame in ("plane", "body"):
+        fits[frame] = fit(data, body, replace(friction, frame=frame), free, **kwargs)
+        scores[frame] = frame_score(fits[frame])
+    best = min(scores, key=scores.get)
+    return fits[best], scores, fits

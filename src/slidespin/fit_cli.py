@@ -3,12 +3,14 @@
 Usage::
 
     slidespin fit DATA.csv --case CASE.toml [--free fx,fy,f] [--sigma x=1e-3,y=1e-3,phi=0.01]
-                  [--loss linear|soft_l1|huber|cauchy|arctan] [--fixed-start]
+                  [--loss linear|soft_l1|huber|cauchy|arctan] [--frame case|plane|body|best]
+                  [--fixed-start]
                   [--json] [--plot OUT.png]
 
 ``DATA.csv`` has the columns ``t,x,y,phi`` (any of x, y, phi may be absent) and an optional
 ``run`` column; the case file (the format of ``slidespin simulate``) gives the body, the
-friction tensor (the start guess of the free parameters, and the frame) and ``[solver] g``.
+friction tensor (the start guess of the free parameters, and the frame unless ``--frame``
+says otherwise; ``best`` fits both frames and keeps the likelier) and ``[solver] g``.
 Its ``[initial]`` table is optional: with ``--fixed-start`` it is the known start state of
 every run (at the run's first time); otherwise each run's start is fitted and ``[initial]``
 only supplies the start components the data do not give.
@@ -24,6 +26,7 @@ before any work. This module follows the plugin contract of :mod:`slidespin.cli`
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import sys
 import warnings
@@ -44,7 +47,8 @@ def configure(parser) -> None:
     parser.epilog = (
         "DATA.csv columns: t [s], x, y [m], phi [rad] (any of x, y, phi may be absent; an empty "
         "cell is a missing value) and an optional run label column 'run'. Free parameters: "
-        + ", ".join(PARAMETERS) + ". The tensor's frame is taken from the case file."
+        + ", ".join(PARAMETERS) + ". The tensor's frame is taken from the case file unless "
+        "--frame says otherwise."
     )
     parser.add_argument("data", metavar="DATA.csv", help="tracked runs (CSV)")
     parser.add_argument("--case", required=True, metavar="CASE.toml",
@@ -56,6 +60,9 @@ def configure(parser) -> None:
                         "residuals")
     parser.add_argument("--loss", default="linear", choices=LOSSES,
                         help="least-squares loss; a robust one limits outliers (default linear)")
+    parser.add_argument("--frame", default="case", choices=("case", "plane", "body", "best"),
+                        help="frame of the tensor: as in the case file (default), plane, body, "
+                        "or best: fit both and keep the likelier")
     parser.add_argument("--fixed-start", action="store_true",
                         help="the case's [initial] state is the known start of every run")
     parser.add_argument("--json", action="store_true", help="print the results as JSON")
@@ -124,7 +131,7 @@ def _free(text: str, body):
 def run(args) -> int:
     """Run ``slidespin fit``; returns the exit status."""
     from .cli import check_figure_path, write_outputs
-    from .fit import fit, read_runs
+    from .fit import compare_frames, fit, read_runs
 
     if args.plot:
         check_figure_path(args.plot, "--plot")
@@ -136,15 +143,24 @@ def run(args) -> int:
     runs, labels = read_runs(args.data, labels=True)
     kw = {"starts": case.initial_state} if args.fixed_start else {
         "start_guess": case.initial_state}
+    friction = case.friction
+    if args.frame in ("plane", "body"):
+        friction = dataclasses.replace(friction, frame=args.frame)
+    scores = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            res = fit(runs, case.body, case.friction, free, sigma=sigma, loss=args.loss,
-                      g=case.g, **kw)
+            if args.frame == "best":
+                res, scores, _ = compare_frames(runs, case.body, friction, free, sigma=sigma,
+                                                loss=args.loss, g=case.g, **kw)
+            else:
+                res = fit(runs, case.body, friction, free, sigma=sigma, loss=args.loss,
+                          g=case.g, **kw)
         except ValueError as exc:
             raise ValueError(f"{args.data}: {exc}") from None
-    for w in caught:
-        print(f"slidespin: warning: {w.message}", file=sys.stderr)
+    del caught  # the chosen fit's own warnings are in res.warnings (not the other frame's)
+    for message in res.warnings:
+        print(f"slidespin: warning: {message}", file=sys.stderr)
     files = []
     if args.plot:
         import io
@@ -157,12 +173,18 @@ def run(args) -> int:
     if args.json:
         out = res.summary()
         out["runs"] = labels
+        if scores is not None:
+            out["frame_scores"] = scores
         out["data"] = str(args.data)
         out["case"] = str(args.case)
         print(json.dumps(out, indent=2))
     else:
         print(f"data        : {args.data} ({len(runs)} run(s): {', '.join(labels)})")
-        print(f"case        : {case.name or args.case} (frame {case.friction.frame})")
+        print(f"case        : {case.name or args.case} (frame {res.friction.frame})")
+        if scores is not None:
+            other = "body" if res.friction.frame == "plane" else "plane"
+            print(f"frame       : {res.friction.frame} is likelier than {other}: -2 log L "
+                  f"lower by {scores[other] - scores[res.friction.frame]:.4g}")
         print(res.table(labels))
     if files:
         write_outputs(files)
