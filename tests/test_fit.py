@@ -232,6 +232,7 @@ def test_robust_loss_resists_outliers():
 # -- identifiability ----------------------------------------------------------------------------
 
 
+@pytest.mark.filterwarnings("ignore:the fit ended at a bound:slidespin.fit.FitWarning")
 def test_run_sliding_only_along_x_cannot_tell_fy():
     """Closed-form pure translation along x (y and phi measured as noise around 0)."""
     rng = np.random.default_rng(3)

@@ -12,15 +12,16 @@ not given), the correlation matrix, and an honest verdict on identifiability.
 
 Parameters that may be fitted (``free``), with their code names:
 
-=====================  ==============================================  ===================
+=====================  ==============================================  =========================
 name                   meaning                                         bounds
-=====================  ==============================================  ===================
-``fx``, ``fy``         principal coefficients of 𝔽 (paper eq. 2)       > 0 (dissipative)
-``f``                  skew coefficient of 𝔽                           any
+=====================  ==============================================  =========================
+``fx``, ``fy``         principal coefficients of 𝔽 (paper eq. 2)       > 0 (dissipative), within
+                                                                       FrictionTensor's range
+``f``                  skew coefficient of 𝔽                           FrictionTensor's range
 ``angle``              angle of 𝔽's principal axes [rad]               any
 ``xi_c``, ``eta_c``    linear law's pressure centroid = G [m] (eq. 10)  |ξc| ≤ a/4, |ηc| ≤ b/4
-``moment_of_inertia``  I about G [kg m²]                               > 0
-=====================  ==============================================  ===================
+``moment_of_inertia``  I about G [kg m²]                               [1e-4, 1e4] × the guess
+=====================  ==============================================  =========================
 
 The tensor's ``frame`` (plane or body) is discrete and is not fitted by :func:`fit`: it is
 taken from the ``friction`` given. :func:`compare_frames` fits both frames and returns the
