@@ -263,3 +263,136 @@ def test_terminal_states_rectangle_agree_with_simulate():
             and abs(s.beta - tr.beta_stop) < 1e-6 * abs(tr.beta_stop)
             and abs(math.remainder(s.theta - tr.theta_stop, 2 * math.pi)) < 1e-6]
     assert len(near) == 1
+
+
+# ------------------------------------------------------------------------------------------
+# TOML cases and the shipped examples
+# ------------------------------------------------------------------------------------------
+from pathlib import Path  # noqa: E402
+
+from slidespin.case import case_from_dict, load_case  # noqa: E402
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+
+def _case(patch, pressure=None):
+    return {"patch": patch, "pressure": pressure or {"law": "uniform"},
+            "friction": {"fx": 0.3, "fy": 0.3}, "body": {"mass": 1.0},
+            "initial": {"speed": 1.0, "omega": 2.0}}
+
+
+def test_case_footprints_build_the_objects():
+    c = case_from_dict(_case({"shape": "polygon", "vertices": [[0, 0], [0.2, 0], [0, 0.1]],
+                              "centre": [0.01, 0.02], "angle_deg": 90.0}))
+    assert c.body.patch == Polygon([(0, 0), (0.2, 0), (0, 0.1)], centre=(0.01, 0.02),
+                                   angle=math.pi / 2)
+    c = case_from_dict(_case({"shape": "rectangle", "length": 0.3, "width": 0.1}))
+    assert c.body.patch == Rectangle(0.3, 0.1)
+    c = case_from_dict(_case({"shape": "annulus", "inner_radius": 0.05, "outer_radius": 0.06}))
+    assert c.body.patch == Annulus(0.05, 0.06)
+    c = case_from_dict(_case({"shape": "disk", "radius": 0.05}))
+    assert isinstance(c.body.patch, Disk) and c.body.patch.outer_radius == 0.05
+    c = case_from_dict(_case({"shape": "pads", "pads": [
+        {"shape": "disk", "radius": 0.01, "centre": [-0.1, 0.0]},
+        {"shape": "rectangle", "length": 0.02, "width": 0.02, "centre": [0.1, 0.0]}]},
+        {"law": "linear", "xi_c": 0.01, "eta_c": 0.0}))
+    assert c.body.patch == Pads([Disk(0.01, centre=(-0.1, 0.0)),
+                                 Rectangle(0.02, 0.02, centre=(0.1, 0.0))])
+    assert c.body.mass_centre == (0.01, 0.0)
+
+
+@pytest.mark.parametrize("patch, pressure, message", [
+    ({"shape": "rectangle", "length": 0.3}, None, "[patch] is missing the required key 'width'"),
+    ({"shape": "rectangle", "length": 0.3, "width": 0.1, "radius": 1.0}, None,
+     "[patch] shape 'rectangle' does not take 'radius'"),
+    ({"shape": "polygon", "vertices": [[0, 0], [1, 0]]}, None, "vertices has 2 point(s)"),
+    ({"shape": "polygon", "vertices": [[0, 0], [1, 0], "x"]}, None, "[patch] vertices[2] = "),
+    ({"shape": "polygon", "vertices": [[0, 0], [1, 1], [1, 0], [0, 1]]}, None, "[patch] "),
+    ({"shape": "annulus", "inner_radius": 0.2, "outer_radius": 0.1}, None, "outer_radius"),
+    ({"shape": "disk", "radius": 0.1, "centre": [0, 0, 0]}, None, "[patch] centre = "),
+    ({"shape": "pads", "pads": [{"shape": "disk", "radius": 0.1},
+                                {"shape": "disk", "radius": 0.1, "centre": [0.1, 0.0]}]},
+     None, "overlap"),
+    ({"shape": "pads", "pads": [{"shape": "pads"}]}, None, "[patch.pads[0]] shape = "),
+    ({"shape": "pads", "pads": [{"shape": "disk", "radius": 0.1, "width": 1.0}]}, None,
+     "[patch.pads[0]] shape 'disk' does not take 'width'"),
+    ({"shape": "pads"}, None, "[patch] is missing the required key 'pads'"),
+    ({"shape": "hexagon"}, None, "[patch] shape = "),
+    ({"shape": "rectangle", "length": 0.3, "width": 0.1}, {"law": "hertz"}, "[body] pressure"),
+    ({"shape": "rectangle", "length": 0.3, "width": 0.1},
+     {"law": "linear", "xi_c": 0.14, "eta_c": 0.0}, "turns negative"),
+])
+def test_case_footprint_errors_name_the_key(patch, pressure, message):
+    with pytest.raises(ValueError) as exc:
+        case_from_dict(_case(patch, pressure))
+    text = str(exc.value)
+    assert message in text and "\n" not in text
+
+
+def _example(name):
+    c = load_case(EXAMPLES / f"{name}.toml")
+    tr = ss.simulate(c.body, c.friction, c.initial_state, g=c.g, rtol=c.rtol, max_step=0.05)
+    assert tr.status == "stopped"
+    return c, tr
+
+
+def test_example_curling_stone():
+    """The running band of a real stone; the stone spins on after it has stopped sliding:
+    its I* = I/(m R²) = 2.47 exceeds the ring's I₃ = (2/3)(1 + r + r²) (r = r_in/R), and the
+    distance is a little more than v0²/(2 μ g) (spin lowers the resistance to sliding)."""
+    c, tr = _example("curling_stone")
+    band = c.body.patch
+    r = band.inner_radius / band.outer_radius
+    assert c.body.inertia_ratio > 2.0 / 3.0 * (1 + r + r * r)
+    assert tr.ending == "pure_spinning"
+    v0, mu = c.initial_state.speed, c.friction.fx
+    assert v0**2 / (2 * mu * c.g) < tr.distance < 1.01 * v0**2 / (2 * mu * c.g)
+    assert tr.distance == pytest.approx(27.938936414, rel=1e-8)  # printed: distance
+
+
+def test_example_box():
+    c, tr = _example("box")
+    assert tr.ending == "mixed"
+    # |F| ≤ μ m g and |M| ≤ μ m g ρ_max under isotropic friction: neither v nor ω can die
+    # sooner than under those bounds
+    assert tr.t_stop > c.initial_state.speed / (0.35 * c.g)
+    rho_max = math.hypot(0.2, 0.15)
+    assert tr.t_stop > c.body.moment_of_inertia * 4.0 / (0.35 * c.body.mass * c.g * rho_max)
+    assert tr.t_stop == pytest.approx(0.49532653080, rel=1e-8)  # printed: stop time
+
+
+def test_example_sled():
+    """Runners resist sideways slip: the sled ends sliding along a principal axis of the
+    body-fixed tensor (the runners), pure sliding."""
+    c, tr = _example("sled")
+    assert tr.ending == "pure_sliding"
+    assert math.remainder(tr.theta_stop - tr.stop_state.phi, math.pi) == pytest.approx(0.0,
+                                                                                      abs=1e-6)
+    assert tr.distance == pytest.approx(7.7711269995, rel=1e-8)  # printed: distance
+
+
+def test_example_robot_part():
+    c, tr = _example("robot_part")
+    assert tr.ending == "mixed"
+    assert tr.distance == pytest.approx(0.090205691, rel=1e-7)  # printed: distance
+
+
+def test_plot_draws_the_footprint_outline(tmp_path):
+    """The path panel draws every outline of the footprint (both runners) along the path."""
+    pytest.importorskip("matplotlib")
+    from slidespin.plotting import outline_world, plot_trajectory
+
+    c, tr = _example("sled")
+    ol = outline_world(c.body, 1.0, 2.0, 0.5)
+    pieces = np.split(ol, np.flatnonzero(np.isnan(ol[:, 0])))
+    assert len(pieces) == 2  # two runners
+    # each runner's outline is its rectangle turned by 0.5 about G and moved to (1, 2)
+    corners = np.array([[-0.5, -0.215], [0.5, -0.215], [0.5, -0.185], [-0.5, -0.185]])
+    c5, s5 = math.cos(0.5), math.sin(0.5)
+    want = np.column_stack((1 + c5 * corners[:, 0] - s5 * corners[:, 1],
+                            2 + s5 * corners[:, 0] + c5 * corners[:, 1]))
+    got = pieces[0][:4]
+    assert np.allclose(np.sort(got, axis=0), np.sort(want, axis=0), atol=1e-12)
+    fig = plot_trajectory(tr, title=c.name)
+    fig.savefig(tmp_path / "sled.png", dpi=50)
+    assert (tmp_path / "sled.png").stat().st_size > 1000

@@ -1,7 +1,12 @@
 """Cases described in TOML files (``slidespin simulate CASE.toml``).
 
 A case file has the tables ``[patch]``, ``[pressure]``, ``[friction]``, ``[body]``,
-``[initial]`` and optionally ``[solver]`` (see ``examples/*.toml``). Every key is checked:
+``[initial]`` and optionally ``[solver]`` (see ``examples/*.toml``). The patch is an ellipse
+or a circle (the paper's), or a footprint (MODEL §10): ``shape = "polygon"`` (``vertices =
+[[xi, eta], ...]``), ``"rectangle"`` (``length``, ``width``), ``"annulus"`` (``inner_radius``,
+``outer_radius``), ``"disk"`` (``radius``), each optionally placed by ``centre = [xi, eta]``
+and ``angle``/``angle_deg``, or ``"pads"`` with one ``[[patch.pads]]`` table per pad (any of
+the four footprint shapes). Every key is checked:
 an unknown key (a typo) or a missing required key is an error naming the table and the key,
 never silently ignored. Angles are in radians unless the key ends in ``_deg``.
 
@@ -45,8 +50,19 @@ MAX_DEPTH = 6
 MAX_STEPS_LIMIT = 1_000_000_000
 _INT64 = 2**63 - 1
 
+#: keys of each footprint shape in [patch] (and in every [[patch.pads]] entry)
+_FOOTPRINT_KEYS = {
+    "polygon": {"vertices"},
+    "rectangle": {"length", "width"},
+    "annulus": {"inner_radius", "outer_radius"},
+    "disk": {"radius"},
+}
+_PLACEMENT = {"centre", "angle", "angle_deg"}
+_SHAPES = ("ellipse", "circle", *_FOOTPRINT_KEYS, "pads")
+
 _TABLES = {
-    "patch": {"shape", "a", "b", "eccentricity", "radius"},
+    "patch": {"shape", "a", "b", "eccentricity", "radius", "vertices", "length", "width",
+              "inner_radius", "outer_radius", "centre", "angle", "angle_deg", "pads"},
     "pressure": {"law", "xi_c", "eta_c"},
     "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg"},
     "body": {"mass", "moment_of_inertia", "inertia_ratio"},
@@ -118,14 +134,20 @@ def case_from_dict(data: dict) -> Case:
                 )
 
     p = data["patch"]
-    shape = v.choice("[patch] shape", p.get("shape", "ellipse"), ("ellipse", "circle"))
-    if shape == "circle":
+    shape = v.choice("[patch] shape", p.get("shape", "ellipse"), _SHAPES)
+    if shape in _FOOTPRINT_KEYS or shape == "pads":
+        patch = _footprint(p, "patch")
+    elif shape == "circle":
         extra = sorted(set(p) - {"shape", "radius"})
         if extra:
             raise ValueError(f"[patch] shape 'circle' takes only 'radius', not {extra[0]!r}")
         patch = _in("patch", Circle,
                     v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
     else:
+        extra = sorted(set(p) - {"shape", "a", "b", "eccentricity", "radius"})
+        if extra:
+            raise ValueError(f"[patch] shape 'ellipse' takes a and b or eccentricity, not "
+                             f"{extra[0]!r}")
         if "radius" in p:
             raise ValueError("[patch] 'radius' is for shape = 'circle'; an ellipse takes a and b or eccentricity")
         a = v.positive("[patch] a", _need(p, "patch", "a"), "m")
@@ -189,6 +211,51 @@ def case_from_dict(data: dict) -> Case:
                          f"integer >= 1 and <= {MAX_STEPS_LIMIT}")
     name = check_name(data.get("name", ""))
     return Case(body, friction, state, g, rtol, max_steps, name)
+
+
+def _footprint(p: dict, where: str, nested: bool = False):
+    """A footprint from a [patch] table (or one [[patch.pads]] entry, ``nested``)."""
+    from .footprint import Annulus, Disk, Pads, Polygon, Rectangle
+
+    shape = v.choice(f"[{where}] shape", _need(p, where, "shape"),
+                     tuple(_FOOTPRINT_KEYS) if nested else (*_FOOTPRINT_KEYS, "pads"))
+    allowed = {"shape", "pads"} if shape == "pads" else (
+        {"shape"} | _FOOTPRINT_KEYS[shape] | _PLACEMENT)
+    for key in p:
+        if key not in allowed:
+            raise ValueError(f"[{where}] shape {shape!r} does not take {key!r}; valid keys: "
+                             + ", ".join(sorted(allowed)))
+    if shape == "pads":
+        pads = _need(p, where, "pads")
+        if not isinstance(pads, list) or not pads or not all(isinstance(x, dict) for x in pads):
+            raise ValueError(f"[{where}] pads must be one or more [[{where}.pads]] tables")
+        items = [_footprint(x, f"{where}.pads[{i}]", nested=True) for i, x in enumerate(pads)]
+        return _in(where, Pads, items)
+    place = {"centre": _pair(p.get("centre", (0.0, 0.0)), where, "centre"),
+             "angle": _angle(p, where, "angle")}
+    if shape == "polygon":
+        verts = _need(p, where, "vertices")
+        if not isinstance(verts, list):
+            raise ValueError(f"[{where}] vertices = {_short(verts)} is invalid; valid values: "
+                             "an array of at least 3 pairs [xi, eta] in m")
+        pts = [_pair(x, where, f"vertices[{i}]") for i, x in enumerate(verts)]
+        return _in(where, Polygon, pts, **place)
+    if shape == "rectangle":
+        return _in(where, Rectangle, _need(p, where, "length"), _need(p, where, "width"),
+                   **place)
+    if shape == "annulus":
+        return _in(where, Annulus, _need(p, where, "inner_radius"),
+                   _need(p, where, "outer_radius"), **place)
+    return _in(where, Disk, _need(p, where, "radius"), **place)
+
+
+def _pair(value, where: str, key: str) -> tuple[float, float]:
+    """[xi, eta] of real numbers [m]."""
+    if (not isinstance(value, (list, tuple)) or len(value) != 2
+            or not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value)):
+        raise ValueError(f"[{where}] {key} = {_short(value)} is invalid; valid values: a pair "
+                         "[xi, eta] of real numbers in m")
+    return (v.finite(f"[{where}] {key}[0]", value[0]), v.finite(f"[{where}] {key}[1]", value[1]))
 
 
 def check_name(name, key: str = "name") -> str:

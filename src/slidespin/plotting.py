@@ -34,8 +34,20 @@ def _plt():
 
 
 def outline_world(body, x, y, phi, n: int = 121) -> np.ndarray:
-    """Patch outline in the fixed frame with G at (x, y) and body angle φ; shape (n, 2) [m]."""
-    pts = body.patch.outline(n) - np.asarray(body.mass_centre)
+    """Patch outline in the fixed frame with G at (x, y) and body angle φ; shape (·, 2) [m].
+
+    For a footprint every closed curve of ``patch.outlines()`` (each pad, a ring's two
+    circles) is included, separated by a row of NaN (matplotlib breaks the line there).
+    """
+    if getattr(body, "is_footprint", False):
+        parts = []
+        for curve in body.patch.outlines(n):
+            parts.append(np.asarray(curve, dtype=float))
+            parts.append(np.full((1, 2), np.nan))
+        pts = np.vstack(parts[:-1])
+    else:
+        pts = body.patch.outline(n)
+    pts = pts - np.asarray(body.mass_centre)
     c, s = math.cos(phi), math.sin(phi)
     return np.column_stack((x + c * pts[:, 0] - s * pts[:, 1], y + s * pts[:, 0] + c * pts[:, 1]))
 
@@ -47,9 +59,9 @@ def draw_path(ax, traj, n_outlines: int = 9, color: str = "C0", label: str | Non
     a times the angle turned), so that they spread over the whole path rather than crowd
     where the body is slow; their shade darkens with time.
     """
-    scale, unit = (1e2, "cm") if traj.body.patch.a < 0.5 else (1.0, "m")
+    a = traj.body.length_unit  # the semi-axis a, or a footprint's extent
+    scale, unit = (1e2, "cm") if a < 0.5 else (1.0, "m")
     ax.plot(traj.x * scale, traj.y * scale, color=color, lw=1.6, label=label, zorder=3)
-    a = traj.body.patch.a
     progress = traj.path_length + a * np.concatenate(([0.0], np.cumsum(np.abs(np.diff(traj.phi)))))
     if progress[-1] > 0.0:
         times = np.interp(np.linspace(0.0, progress[-1], n_outlines), progress, traj.t)
@@ -65,7 +77,7 @@ def draw_path(ax, traj, n_outlines: int = 9, color: str = "C0", label: str | Non
         ax.plot(ol[:, 0], ol[:, 1], color=shade, lw=0.9, zorder=2)
         # a tick along the body axis ξ shows the orientation
         c, s = math.cos(pi), math.sin(pi)
-        a = traj.body.patch.a * scale
+        a = traj.body.length_unit * scale
         ax.plot([xi * scale, xi * scale + a * c], [yi * scale, yi * scale + a * s],
                 color=shade, lw=0.9, zorder=2)
     ax.plot(traj.x[0] * scale, traj.y[0] * scale, "o", color=color, ms=5, zorder=4, label="start")
@@ -106,9 +118,10 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     ax_path.set_title("path of the mass centre", fontsize=10)
 
     t = traj.t
-    a = traj.body.patch.a
+    a = traj.body.length_unit
     draw_beta(ax_beta, t, traj.beta / a, traj.beta_stop / a)
-    ax_beta.set_ylabel("β/a = v/(aω)")
+    ax_beta.set_ylabel("β/ℓ = v/(ℓω), ℓ = extent" if traj.body.is_footprint
+                       else "β/a = v/(aω)")
     ax_beta.set_title("distance to the centre of rotation", fontsize=10)
 
     draw_angle(ax_theta, t, traj.theta, traj.theta_stop, "ϑ*")
