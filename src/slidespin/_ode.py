@@ -23,6 +23,16 @@ new attempt each time |du/dτ| has halved) until |du/dτ| < ``utol``. The remain
 added in closed form (t += s/|u·A|, x += s² u₁/(2|u·A|), ...); its error is
 O(s·|u − u*|/|u·A|), below 1e-12 s₀ in t since s < 1e-8 s₀ and |u − u*| ≲ 1e-4/|λ|.
 
+Footprints (MODEL §10): the same integrator serves every patch. ``par[P_SHAPE]`` selects
+the wrench at run time: the ellipse kernel (:mod:`slidespin._kernel`) or the exact footprint
+kernel (:func:`slidespin._footprint_kernel.wrench_world`), which reads the footprint's edges,
+circles and constants (``fe``, ``fc``, ``geo``) passed alongside ``par`` through every
+function here (empty (0, 4) arrays for an ellipse, so one compiled integrator serves both).
+For a footprint the length unit a is its extent, and the classification of MODEL §9 uses
+the flags ``P_CSYM`` (pure spin about G is invariant: a centrally symmetric pressure) and
+``P_RSYM`` (axisymmetric: a centred disk or ring under uniform pressure) in place of the
+ellipse's tests on b/a and G.
+
 Speed: the wrench kernel's per-body constants and its workspace are set up once per
 trajectory (:func:`slidespin._kernel.wrench_constants`, :func:`~slidespin._kernel.workspace`),
 so a right-hand side costs one call of the kernel's inner function; the batch
