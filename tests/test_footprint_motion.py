@@ -396,3 +396,36 @@ def test_plot_draws_the_footprint_outline(tmp_path):
     fig = plot_trajectory(tr, title=c.name)
     fig.savefig(tmp_path / "sled.png", dpi=50)
     assert (tmp_path / "sled.png").stat().st_size > 1000
+
+
+def test_symmetry_flags():
+    """Central symmetry about G (pure spin is invariant) and axial symmetry (a centred disk or
+    ring under uniform pressure), decided conservatively."""
+    from slidespin.footprint_pressure import symmetry
+
+    u = ss.UniformPressure()
+    assert symmetry(Rectangle(0.3, 0.1, centre=(0.05, 0.02), angle=0.3), u) == (True, False)
+    assert symmetry(Annulus(0.05, 0.06, centre=(0.01, 0.0)), u) == (True, True)
+    assert symmetry(Disk(0.05), u) == (True, True)
+    assert symmetry(Polygon(L_SHAPE), u) == (False, False)
+    assert symmetry(Polygon(ARROW), u) == (False, False)
+    assert symmetry(Rectangle(0.3, 0.1), ss.LinearPressure(0.02, 0.0)) == (False, False)
+    runners = Pads([Rectangle(0.8, 0.02, centre=(0.0, -0.2)),
+                    Rectangle(0.8, 0.02, centre=(0.0, 0.2))])
+    assert symmetry(runners, u) == (True, False)
+    # three feet: symmetric under a turn of 120°, not under a half turn
+    feet = Pads([Disk(0.02, centre=(0.1 * math.cos(t), 0.1 * math.sin(t)))
+                 for t in (0.0, 2 * math.pi / 3, 4 * math.pi / 3)])
+    assert symmetry(feet, u) == (False, False)
+
+
+def test_phase_portrait_on_a_ring():
+    """The portrait's curves end on the ring's terminal ratio, which every trajectory
+    reaches (an isotropic ring with I* between I₁ and I₃ has one attracting ratio)."""
+    body = ss.Body(Annulus(0.05, 0.1), ss.UniformPressure(), mass=1.0)
+    fr = ss.FrictionTensor(0.3, 0.3)
+    pp = ss.phase_portrait(body, fr, n=3, points=50)
+    k = ss.circle_terminal_ratio(ss.UniformPressure(), fr, body.inertia_ratio,
+                                 patch=body.patch)
+    assert np.allclose(pp.beta_stop, k, rtol=1e-7)
+    assert all(s[-1] == 0.0 for s in pp.speed)
