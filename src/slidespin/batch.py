@@ -1,8 +1,10 @@
 """Many trajectories at once: the compiled engine run in parallel over all cores.
 
 ``simulate_many`` integrates one body under one friction tensor from N initial states;
-``simulate_cases`` takes every parameter per case (patch, law, tensor, inertia, g, state),
-which is what parameter sweeps need. Both return a :class:`StopResults` of arrays.
+``simulate_bodies`` one body object per case (any patches: ellipses and footprints mixed,
+e.g. a sweep over a ring's width); ``simulate_cases`` takes every parameter per case (patch,
+law, tensor, inertia, g, state) as columns, which is what parameter sweeps need. All return
+a :class:`StopResults` of arrays.
 
 Memory: no per-step data is kept. The cases run in chunks of ``CHUNK`` through
 :func:`slidespin._ode.integrate_many` (``prange`` over the cases of a chunk), so besides the
@@ -24,7 +26,7 @@ from ._cases import CASE_FIELDS, validated_columns
 from .outcomes import ENDINGS, STATUSES
 from .simulate import ENDING_TOL, check_solver_options
 
-__all__ = ["StopResults", "simulate_many", "simulate_cases", "CASE_FIELDS"]
+__all__ = ["StopResults", "simulate_many", "simulate_bodies", "simulate_cases", "CASE_FIELDS"]
 
 #: cases per call of the parallel engine (bounds the temporary arrays of a batch)
 CHUNK = 1 << 16
@@ -177,8 +179,8 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
     unit (semi-axis or footprint extent) and gravity (arrays of length n, or scalars); ``st``:
     mapping with the initial ``x, y, phi, vx, vy, omega`` (SI, arrays of length n);
     ``footprints_of(lo, hi)``: the footprint arguments (edges, circles, edge row ranges,
-    circle row ranges, geo rows) of :func:`slidespin._ode.integrate_many` for cases lo..hi (None: all
-    ellipses). Only the results are held for all n cases.
+    circle row ranges, geo rows) of :func:`slidespin._ode.integrate_many` for cases lo..hi
+    (None: all ellipses). Only the results are held for all n cases.
     """
     a = np.broadcast_to(np.asarray(a, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
@@ -312,3 +314,95 @@ def simulate_many(
     return _integrate_all(st.shape[0], lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
                           body.length_unit, g, states, rtol, max_steps,
                           footprints_of if body.is_footprint else None)
+
+
+def simulate_bodies(
+    bodies,
+    friction,
+    initial_states,
+    g: float = 9.81,
+    rtol: float = 1e-10,
+    max_steps: int = 200_000,
+) -> StopResults:
+    """Integrate N cases, one :class:`~slidespin.Body` per case, in parallel.
+
+    The bodies may rest on any patches, ellipses and footprints mixed (e.g. rings of
+    different widths, rectangles of different aspects: a sweep over footprint parameters);
+    every footprint's arrays go to the compiled engine stacked, each case reading its own rows.
+
+    Parameters
+    ----------
+    bodies : sequence of Body, length N
+    friction : FrictionTensor or sequence of N FrictionTensor
+    initial_states : array_like, shape (N, 6)
+        Rows (x, y, phi, vx, vy, omega) in SI units.
+    g, rtol, max_steps
+        As in :func:`simulate_many` (g shared by all cases).
+
+    Returns
+    -------
+    StopResults
+        The same numbers as :func:`slidespin.simulate` case by case, to the last bit.
+    """
+    bodies = list(bodies) if not isinstance(bodies, Body) else None
+    if bodies is None or not bodies or not all(isinstance(b, Body) for b in bodies):
+        raise ValueError("bodies must be a non-empty sequence of slidespin.Body")
+    n = len(bodies)
+    if isinstance(friction, FrictionTensor):
+        frictions = [friction] * n
+    else:
+        frictions = list(friction)
+        if len(frictions) != n or not all(isinstance(f, FrictionTensor) for f in frictions):
+            raise ValueError(f"friction must be a FrictionTensor or a sequence of {n} "
+                             "FrictionTensor (one per body)")
+    try:
+        st = np.asarray(initial_states, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("initial_states must be an (N, 6) array of real numbers "
+                         "(x, y, phi, vx, vy, omega)") from None
+    if st.shape != (n, 6):
+        raise ValueError(f"initial_states has shape {st.shape}; valid: ({n}, 6), one row "
+                         "(x, y, phi, vx, vy, omega) per body")
+    rtol, max_steps = check_solver_options(rtol, max_steps)
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    bad = ~np.isfinite(st)
+    if bad.any():
+        i, j = (int(x[0]) for x in np.nonzero(bad))
+        name = ("x", "y", "phi", "vx", "vy", "omega")[j]
+        raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
+                         "valid range: any finite real number")
+    # each distinct (body, friction) once; the parameter vectors of simulate() itself
+    cache: dict = {}
+    engines = []
+    for b, f in zip(bodies, frictions):
+        key = (id(b), id(f))
+        if key not in cache:
+            cache[key] = b.engine_params(f)
+        engines.append(cache[key])
+    pars = np.array([e[0] for e in engines])
+    length = np.array([b.length_unit for b in bodies])
+    states = {name: st[:, i] for i, name in enumerate(("x", "y", "phi", "vx", "vy", "omega"))}
+
+    def footprints_of(lo, hi):
+        """The footprints of cases lo..hi stacked, with each case's row ranges."""
+        es, cs = [], []
+        eidx = np.zeros((hi - lo, 2), dtype=np.int64)
+        cidx = np.zeros((hi - lo, 2), dtype=np.int64)
+        ne = nc = 0
+        rows: dict = {}
+        for j, (par, fe, fc, geo) in enumerate(engines[lo:hi]):
+            key = (id(fe), id(fc))
+            if key not in rows:  # a shared body's arrays are stored once
+                rows[key] = ((ne, ne + fe.shape[0]), (nc, nc + fc.shape[0]))
+                es.append(fe)
+                cs.append(fc)
+                ne += fe.shape[0]
+                nc += fc.shape[0]
+            eidx[j], cidx[j] = rows[key]
+        edges = np.ascontiguousarray(np.vstack(es).reshape(-1, 4))
+        circles = np.ascontiguousarray(np.vstack(cs).reshape(-1, 4))
+        geos = np.ascontiguousarray(np.array([e[3] for e in engines[lo:hi]]))
+        return edges, circles, eidx, cidx, geos
+
+    return _integrate_all(n, lambda lo, hi: pars[lo:hi], length, g, states, rtol, max_steps,
+                          footprints_of)
