@@ -429,3 +429,32 @@ def test_phase_portrait_on_a_ring():
                                  patch=body.patch)
     assert np.allclose(pp.beta_stop, k, rtol=1e-7)
     assert all(s[-1] == 0.0 for s in pp.speed)
+
+
+def test_simulate_bodies_mixed_patches_bit_for_bit():
+    """One body per case, ellipses and footprints mixed (a sweep over a ring's width and a
+    rectangle's aspect): simulate()'s numbers to the last bit."""
+    from slidespin.batch import simulate_bodies
+
+    law = ss.UniformPressure()
+    bodies = [ss.Body(Annulus(w, 0.1), law, mass=1.0) for w in (0.0, 0.05, 0.09)]
+    bodies += [ss.Body(Rectangle(0.2, 0.2 / r), law, mass=1.0) for r in (1.0, 2.0, 4.0)]
+    bodies += [ss.Body(ss.Ellipse(0.1, 0.05), law, mass=1.0),
+               ss.Body(Polygon(L_SHAPE), ss.LinearPressure(0.1, 0.08), mass=1.0)]
+    bodies.append(bodies[1])  # a shared body
+    fr = [ss.FrictionTensor(0.3, 0.4, frame="body")] * 8 + [ss.FrictionTensor(0.2, 0.2)]
+    rng = np.random.default_rng(5)
+    states = np.column_stack((np.zeros(9), np.zeros(9), rng.uniform(-3, 3, 9),
+                              rng.normal(size=9), rng.normal(size=9), rng.normal(0, 10, 9)))
+    res = simulate_bodies(bodies, fr, states)
+    for i, (b, f, row) in enumerate(zip(bodies, fr, states)):
+        tr = ss.simulate(b, f, ss.State(*row))
+        assert res.status[i] == tr.status and res.ending[i] == tr.ending
+        for got, want in ((res.t_stop[i], tr.t_stop), (res.x_stop[i], tr.stop_state.x),
+                          (res.phi_stop[i], tr.stop_state.phi), (res.beta_stop[i], tr.beta_stop),
+                          (res.theta_stop[i], tr.theta_stop), (res.path_length[i], tr.distance)):
+            assert got == want or (np.isnan(got) and np.isnan(want))
+    with pytest.raises(ValueError, match="initial_states has shape"):
+        simulate_bodies(bodies, fr, states[:3])
+    with pytest.raises(ValueError, match="friction must be"):
+        simulate_bodies(bodies, fr[:2], states)
