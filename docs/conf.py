@@ -1,0 +1,255 @@
+"""Sphinx configuration of the slidespin documentation site.
+
+Build (from the README's test environment, ``.venv/bin/pip install -e ".[test]"``)::
+
+    .venv/bin/python -m sphinx -W --keep-going -b html docs docs/_build/html
+
+Warnings are errors (``-W``): a broken cross-reference, a dead internal link, a page missing
+from the tables of contents or a failing gallery script fails the build. The gallery
+(``docs/gallery/plot_*.py``) is executed on every build by sphinx-gallery; its output goes to
+``docs/auto_examples/`` (generated, not tracked). The front page's animation is made at the
+start of the build into ``docs/_generated/`` (generated, not tracked).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import warnings
+from pathlib import Path
+
+import slidespin
+
+HERE = Path(__file__).resolve().parent
+
+project = "slidespin"
+author = "slidespin developers"
+copyright = "slidespin developers"  # noqa: A001 - Sphinx's name
+release = slidespin.__version__
+version = release
+
+extensions = [
+    "myst_parser",
+    "sphinx.ext.autodoc",
+    "sphinx.ext.mathjax",
+    "numpydoc",
+    "sphinx_gallery.gen_gallery",
+]
+
+source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+root_doc = "index"
+exclude_patterns = [
+    "_build",
+    "_generated",
+    "Thumbs.db",
+    ".DS_Store",
+    "auto_examples/*.ipynb",
+    "auto_examples/*.py",
+    "auto_examples/*.zip",
+    "auto_examples/*.json",
+    "auto_examples/*.md5",
+    "gallery/GALLERY_HEADER.rst",
+]
+
+# -- Markdown (the existing docs/*.md pages) ----------------------------------------------
+myst_enable_extensions = ["dollarmath", "colon_fence"]
+# links such as model.md#91-what-slidespin-reports-at-the-stop resolve to heading anchors
+myst_heading_anchors = 3
+
+# -- API reference ------------------------------------------------------------------------
+autodoc_default_options: dict[str, object] = {}  # each api/*.rst page says :members:
+autodoc_member_order = "bysource"
+autodoc_typehints = "none"  # numpydoc's Parameters sections carry the types and units
+# numpydoc renders the docstrings; it does not validate them (the docstrings follow the
+# project's numpydoc habit, but numpydoc's full validation also flags stylistic choices)
+numpydoc_validation_checks: set[str] = set()
+numpydoc_show_class_members = False  # members are documented by autodoc itself
+numpydoc_class_members_toctree = False
+numpydoc_xref_param_type = False
+nitpicky = False
+
+# -- Gallery ------------------------------------------------------------------------------
+sphinx_gallery_conf = {
+    "examples_dirs": "gallery",
+    "gallery_dirs": "auto_examples",
+    "filename_pattern": r"plot_",
+    "within_subsection_order": "FileNameSortKey",
+    "download_all_examples": False,
+    "write_computation_times": False,
+    "remove_config_comments": True,
+    "abort_on_example_error": True,
+    "only_warn_on_example_error": False,
+    "image_scrapers": ("matplotlib",),
+    "reset_modules": ("matplotlib",),
+    "show_memory": False,
+    "capture_repr": (),
+    # execute every script on every build (a stale cache must not hide a broken example)
+    "run_stale_examples": True,
+}
+os.environ.setdefault("MPLBACKEND", "Agg")
+# matplotlib's note that Agg cannot show figures is noise here, not a documentation error
+warnings.filterwarnings("ignore", message="FigureCanvasAgg is non-interactive")
+
+# -- HTML ---------------------------------------------------------------------------------
+html_theme = "alabaster"
+html_title = f"slidespin {release}"
+html_theme_options = {
+    "description": "a flat body sliding and spinning under anisotropic dry friction",
+    "fixed_sidebar": True,
+    "page_width": "1100px",
+    "sidebar_width": "250px",
+}
+html_static_path: list[str] = []
+html_extra_path: list[str] = []
+
+
+# -- Docstrings written for the terminal as well as for Sphinx ------------------------------
+# The docstrings use |x| for absolute values and norms, which reStructuredText reads as
+# substitution references, and a few simple tables whose first column overflows its border.
+# Both are fixed here, on the way into Sphinx, instead of in the source: ``|`` outside
+# inline literals and tables is escaped, and a simple table that docutils would reject is
+# shown as preformatted text.
+_BORDER = re.compile(r"^(\s*)(=+)(\s+=+)+\s*$")
+
+
+def _escape_bars(line: str, inside: bool = False) -> tuple[str, bool]:
+    """Escape ``|`` outside inline literals; ``inside``: a literal is open at the start."""
+    parts = line.split("``")
+    for i in range(1 if inside else 0, len(parts), 2):  # outside ``inline literals``
+        parts[i] = re.sub(r"(?<!\\)\|", r"\\|", parts[i])
+    return "``".join(parts), inside ^ (len(parts) % 2 == 0)
+
+
+def _table_ok(block: list[str], border: str) -> bool:
+    gaps = [i for i, ch in enumerate(border) if ch == " " and i > len(border) - len(
+        border.lstrip())]
+    last_start = border.rstrip().rfind(" ") + 1
+    gaps = [i for i in gaps if i < last_start]
+    for row in block:
+        if _BORDER.match(row) or not row.strip():
+            continue
+        if any(i < len(row) and row[i] != " " for i in gaps):
+            return False
+    return True
+
+
+def _indent(line: str) -> int:
+    return len(line) - len(line.lstrip())
+
+
+def _fix_docstring(lines: list[str]) -> list[str]:
+    out: list[str] = []
+    i, literal_indent, inside = 0, None, False
+    while i < len(lines):
+        line = lines[i]
+        indent = len(line) - len(line.lstrip())
+        if literal_indent is not None and line.strip() and indent <= literal_indent:
+            literal_indent = None
+        m = _BORDER.match(line)
+        if m and literal_indent is None:
+            # a simple table: up to the border that closes it (two or three borders)
+            j, borders = i + 1, 1
+            while j < len(lines) and lines[j].strip():
+                if _BORDER.match(lines[j]):
+                    borders += 1
+                j += 1
+            block = lines[i:j]
+            if _table_ok(block, line):
+                last = line.rstrip().rfind(" ") + 1  # the last column may hold bars
+                out.extend(b if _BORDER.match(b) else b[:last] + _escape_bars(b[last:])[0]
+                           for b in block)
+            else:
+                out.extend(["", m.group(1) + "::", ""])
+                out.extend("    " + b for b in block)
+                out.append("")
+            i = j
+            continue
+        if (literal_indent is None and line.rstrip().endswith(",") and i + 2 < len(lines)
+                and lines[i + 1].strip() and _indent(lines[i + 1]) == indent
+                and _indent(lines[i + 2]) > indent and lines[i + 2].strip()):
+            # a definition-list term broken over two lines: join them
+            lines = lines[:i] + [line.rstrip() + " " + lines[i + 1].strip()] + lines[i + 2:]
+            continue
+        if not line.strip():
+            inside = False  # an inline literal never crosses a paragraph
+        if literal_indent is None:
+            escaped, inside = _escape_bars(line, inside)
+            out.append(escaped)
+            if line.rstrip().endswith("::"):
+                literal_indent = indent
+        else:
+            out.append(line)
+        i += 1
+    return out
+
+
+def _process_docstring(app, what, name, obj, options, lines) -> None:
+    lines[:] = _fix_docstring(lines)
+
+
+# -- Public constants without a doc comment --------------------------------------------------
+# autodoc documents module data only when it has a ``#:`` doc comment. So that every name of
+# a module's ``__all__`` is in the reference anyway, each api/<module>.rst page includes
+# _generated/api/<module>.rst, written here with an ``autodata`` entry for each such name
+# (an empty file once every constant has its doc comment).
+API_MODULES = (
+    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.terminal",
+    "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
+    "slidespin.loaded", "slidespin.limit_surface", "slidespin.footprint",
+    "slidespin.footprint_pressure", "slidespin.footprint_wrench", "slidespin.pressure",
+    "slidespin.friction", "slidespin.geometry", "slidespin.animate", "slidespin.plotting",
+    "slidespin.case", "slidespin.cli", "slidespin.paper",
+)
+
+
+def _undocumented_data(module: str) -> list[str]:
+    import importlib
+    import inspect
+
+    from sphinx.pycode import ModuleAnalyzer
+
+    mod = importlib.import_module(module)
+    try:
+        attr_docs = ModuleAnalyzer.for_module(module).find_attr_docs()
+    except Exception:  # no source: nothing to add
+        return []
+    names = []
+    for name in getattr(mod, "__all__", ()):
+        obj = getattr(mod, name, None)
+        if name.startswith("__") or inspect.isclass(obj) or inspect.isroutine(obj) \
+                or inspect.ismodule(obj) or ("", name) in attr_docs:
+            continue
+        names.append(name)
+    return names
+
+
+def _api_constants(app) -> None:
+    out = HERE / "_generated" / "api"
+    out.mkdir(parents=True, exist_ok=True)
+    for module in API_MODULES:
+        lines = [f".. currentmodule:: {module}", ""]
+        for name in _undocumented_data(module):
+            lines += [f".. autodata:: {name}", ""]
+        text = "\n".join(lines) + "\n"
+        path = out / f"{module}.rst"
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+
+
+def _front_page_animation(app) -> None:
+    """Write ``_generated/demo.gif`` (the demo as an animation) for the front page."""
+    out = HERE / "_generated" / "demo.gif"
+    out.parent.mkdir(exist_ok=True)
+    from slidespin import simulate
+    from slidespin.animate import animate
+    from slidespin.cli import demo_case
+
+    case = demo_case()
+    traj = simulate(case.body, case.friction, case.initial_state)
+    animate(traj, out, fps=20, frames=60, title="slidespin demo")
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", _process_docstring)
+    app.connect("builder-inited", _api_constants)
+    app.connect("builder-inited", _front_page_animation)
