@@ -269,14 +269,20 @@ def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float
             f"pressure = {pressure!r} is invalid here; valid values: UniformPressure(), "
             "LinearPressure(xi_c, eta_c) (a PressureMap is not linear)"
         )
-    arrays = footprint.to_arrays()
-    rc = np.array(rc)
-    rg = np.array([pressure.xi_c, pressure.eta_c])
-    g = np.linalg.solve(jm, a * (rg - rc))
-    p0 = load / a * (1.0 - g @ rc)
-    p1, p2 = load / a * g
-    _check_nonnegative(arrays, (p0, p1, p2), pressure, load / a)
-    return float(p0), float(p1), float(p2)
+
+    def make():
+        arrays = footprint.to_arrays()
+        rcv = np.array(rc)
+        rg = np.array([pressure.xi_c, pressure.eta_c])
+        g = np.linalg.solve(jm, a * (rg - rcv))
+        p0 = load / a * (1.0 - g @ rcv)
+        p1, p2 = load / a * g
+        _check_nonnegative(arrays, (p0, p1, p2), pressure, load / a)
+        return float(p0), float(p1), float(p2)
+
+    # computed once per footprint, law and load (the objects are immutable); a law that
+    # turns negative raises every time (nothing is cached then)
+    return footprint._cached(("linear", pressure.xi_c, pressure.eta_c, load), make)
 
 
 def _check_nonnegative(arrays: FootprintArrays, coef, pressure, mean: float) -> None:
