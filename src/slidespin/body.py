@@ -120,7 +120,7 @@ class Body:
         object.__setattr__(self, "moment_of_inertia", inertia)
 
     @classmethod
-    def from_inertia_ratio(cls, patch, pressure, mass: float, inertia_ratio: float) -> "Body":
+    def from_inertia_ratio(cls, patch, pressure, mass: float, inertia_ratio: float) -> Body:
         """Body with I = I* m ℓ² for a given dimensionless inertia I* in [1e-8, 1e8] (ℓ = a
         for an ellipse, the extent of a footprint: :attr:`length_unit`)."""
         i_star = v.bounded("inertia_ratio", inertia_ratio, *v.INERTIA_RATIO)
@@ -272,7 +272,7 @@ class State:
     def from_speed(
         cls, speed: float, omega: float, theta: float = 0.0, phi: float = 0.0,
         x: float = 0.0, y: float = 0.0,
-    ) -> "State":
+    ) -> State:
         """State from the paper's variables: speed v in [0, 1e8] m/s in direction ϑ, spin ω.
 
         ``theta`` and ``phi`` are in radians (``math.radians(45)``, not 45).
