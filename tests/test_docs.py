@@ -101,3 +101,44 @@ def test_front_page_animation(site):
         assert im.n_frames == 60
     assert gifs[0].stat().st_size < 1_000_000
     assert gifs[0].name in (site / "index.html").read_text(encoding="utf-8")
+
+
+def _undocumented(module: str) -> tuple[list[str], list[str]]:
+    """(functions and classes, members and constants) of ``module`` without documentation."""
+    import inspect
+
+    from sphinx.pycode import ModuleAnalyzer
+
+    mod = importlib.import_module(module)
+    attr_docs = ModuleAnalyzer.for_module(module).find_attr_docs()
+    top, rest = [], []
+    for name in _public(module):
+        obj = getattr(mod, name)
+        if inspect.isclass(obj) or inspect.isroutine(obj):
+            if not (obj.__doc__ or "").strip():
+                top.append(f"{module}.{name}")
+            if inspect.isclass(obj):
+                for k, member in vars(obj).items():
+                    if k.startswith("_") or not (inspect.isfunction(member)
+                                                 or isinstance(member, property)):
+                        continue
+                    if not (member.__doc__ or "").strip():
+                        rest.append(f"{module}.{name}.{k}")
+        elif not inspect.ismodule(obj) and ("", name) not in attr_docs:
+            rest.append(f"{module}.{name}")
+    return top, rest
+
+
+def test_public_functions_and_classes_have_docstrings():
+    missing = [n for m in PUBLIC_MODULES for n in _undocumented(m)[0]]
+    assert not missing, f"no docstring: {missing}"
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "constants without a '#:' doc comment (CASE_FIELDS, sweep.PARAMETERS, STATUS_MESSAGES, "
+    "fit.CHANNELS/LOSSES/PARAMETERS, LOAD_FRAMES, LOADED_ENDINGS, footprint.Footprint) and "
+    "members without a docstring (LinearPressure.centroid/check_patch, SweepSpec.name/"
+    "n_chunks), in modules owned by others: reported to the lead; drop this mark once fixed"))
+def test_public_constants_and_members_are_documented():
+    missing = [n for m in PUBLIC_MODULES for n in _undocumented(m)[1]]
+    assert not missing, f"undocumented: {missing}"
