@@ -93,6 +93,9 @@ EPS_INVARIANT = 1e-9
 # arc of SPIRAL_ARC [rad] (one and a half turns of a great circle), it turns for ever: the
 # ω-limit set of the flow on the sphere is a closed orbit (Poincaré–Bendixson), a spiral stop
 LN_S_WINDOW = 30.0
+#: [rad] a pure-spinning ending's ϑ* needs the body to have turned less than this after the
+#: vanishing velocity fell below 1e-6 of s (see :func:`_pure_spin_direction`)
+PHI_RESOLVED = 0.05
 SPIRAL_ARC = 3.0 * math.pi
 
 
@@ -332,6 +335,51 @@ def _equator_point(par, kc, W, fe, fc, geo, u, phi):
     return us, ok
 
 
+@jit(error_model="numpy")
+def _meridian_point(par, kc, W, fe, fc, geo, u, phi, max_dist):
+    """Under rotational symmetry, the fixed point on the meridian through ``u`` (the great
+    circle through the pole and u): Newton's method on the flow's component along the
+    meridian, at the fixed azimuth of u. Every rotation of a fixed point about the vertical is
+    one too, so the azimuth (the direction of the velocity) is kept exactly instead of being
+    left to an iteration whose Jacobian is singular along it. Returns (u*, converged)."""
+    th = math.atan2(u[1], u[0])
+    ct = math.cos(th)
+    sn = math.sin(th)
+    al0 = math.atan2(u[2], math.hypot(u[0], u[1]))
+    al = al0
+    yp = np.zeros(NY)
+    yp[7] = phi
+    out = np.empty(NY)
+    hd = 1e-7
+    ok = False
+    gv = np.empty(3)
+    for _ in range(40):
+        for m in range(3):
+            a = al + (m - 1) * hd
+            ca = math.cos(a)
+            sa = math.sin(a)
+            yp[0] = ca * ct
+            yp[1] = ca * sn
+            yp[2] = sa
+            _rhs(par, kc, W, fe, fc, geo, yp, out)
+            gv[m] = -sa * ct * out[0] - sa * sn * out[1] + ca * out[2]
+        der = (gv[2] - gv[0]) / (2.0 * hd)
+        if der == 0.0 or not math.isfinite(der):
+            break
+        step = gv[1] / der
+        al -= step
+        if not abs(al - al0) <= max_dist:
+            break
+        if abs(step) < 1e-14:
+            ok = True
+            break
+    us = np.zeros(3)
+    us[0] = math.cos(al) * ct
+    us[1] = math.cos(al) * sn
+    us[2] = math.sin(al)
+    return us, ok
+
+
 @jit(error_model="numpy", inline="always")
 def rotationally_symmetric(par):
     """True for a circular patch with a centred, axisymmetric pressure under a tensor that
@@ -374,17 +422,23 @@ def _rel_lam(par, kc, W, fe, fc, geo, us, phi):
 def terminal_point(par, kc, W, fe, fc, geo, u, phi, symmetric, max_iter, max_dist):
     """The fixed point of the sphere flow that the direction ``u`` approaches, at frozen φ.
 
-    Newton's method first (:func:`polish_fixed_point`); where it fails because the Jacobian
-    is singular (a marginal fixed point), the invariant sets on which Table 2's boundaries
+    Newton's method first (:func:`polish_fixed_point`, or :func:`_meridian_point` under
+    rotational symmetry); where it fails because the Jacobian is singular (a marginal fixed
+    point), the invariant sets on which Table 2's boundaries
     lie: the pole (pure spin about G, a fixed point for a centrally symmetric pressure) and
     the equator (pure sliding), accepted only if marginal there. Returns (u*, found, λ/|u·A|,
     right-hand-side calls).
     """
-    us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter, max_dist)
-    calls = 5 * nit + 6
+    u12 = math.sqrt(u[0] ** 2 + u[1] ** 2)
+    if rotationally_symmetric(par) and u12 > 1e-3:
+        us, ok = _meridian_point(par, kc, W, fe, fc, geo, u, phi, max_dist)
+        calls = 120 + 6
+    else:
+        us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter,
+                                              max_dist)
+        calls = 5 * nit + 6
     if ok:
         return us, True, _rel_lam(par, kc, W, fe, fc, geo, us, phi), calls
-    u12 = math.sqrt(u[0] ** 2 + u[1] ** 2)
     cand = np.zeros(3)
     found = False
     if symmetric and u12 < 0.1:
@@ -401,18 +455,14 @@ def terminal_point(par, kc, W, fe, fc, geo, u, phi, symmetric, max_iter, max_dis
 
 
 @jit(error_model="numpy")
-def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi):
-    """ϑ* of a pure-spinning ending (MODEL §9), or NaN where the velocity has no limiting
-    direction.
-
-    Near the pole u* = (0, 0, ±1) the vanishing velocity direction (u₁, u₂) obeys the linear
-    flow of the 2×2 tangent Jacobian J. Complex eigenvalues: it keeps turning (NaN). J ∝ the
-    identity: it is frozen, so the direction reached by the integration (``u_pre``) is the limit.
-    Real distinct eigenvalues: it tends to the eigenvector of the slower (larger) one, on the
-    side given by the component of ``u_pre`` along it (left eigenvector).
-    """
+def _pole_eigen(par, kc, W, fe, fc, geo, sign, phi, out_v):
+    """The linearised flow of the velocity direction (u₁, u₂) at the pole u = (0, 0, sign),
+    frozen at φ: returns 0 where its Jacobian J is a multiple of the identity (the direction is
+    frozen), 1 where the eigenvalues are complex (it keeps turning), 2 where they are real and
+    distinct, with the eigenvector of the slower (larger) one in ``out_v[0:2]`` and the left
+    eigenvector in ``out_v[2:4]``."""
     pole = np.zeros(3)
-    pole[2] = 1.0 if u_pre[2] >= 0.0 else -1.0
+    pole[2] = sign
     t1 = np.empty(3)
     t2 = np.empty(3)
     jac = np.empty((2, 2))
@@ -429,29 +479,69 @@ def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi):
     p = 0.5 * (a - d)
     size = math.sqrt(p * p + b * b + c * c)
     yp = np.zeros(NY)
-    yp[2] = pole[2]
+    yp[2] = sign
     yp[7] = phi
     out = np.empty(NY)
     _rhs(par, kc, W, fe, fc, geo, yp, out)
     rate = abs(out[3])  # the decay rate of ln s: the scale of every eigenvalue here
     if not math.isfinite(size) or size <= 1e-6 * rate:
-        return math.atan2(u_pre[1], u_pre[0])  # J ∝ identity: the direction is frozen
+        return 0
     disc = p * p + b * c
     if disc < -1e-12 * rate * rate:
-        return math.nan  # complex eigenvalues: the direction keeps turning
+        return 1
     lam = half + math.sqrt(max(disc, 0.0))
-    # right eigenvector of λ, and left eigenvector for the component along it
     if abs(b) + abs(lam - a) >= abs(c) + abs(lam - d):
-        vx, vy = b, lam - a
+        out_v[0], out_v[1] = b, lam - a
     else:
-        vx, vy = lam - d, c
+        out_v[0], out_v[1] = lam - d, c
     if abs(c) + abs(lam - a) >= abs(b) + abs(lam - d):  # wᵀ(J − λ) = 0
-        wx, wy = c, lam - a
+        out_v[2], out_v[3] = c, lam - a
     else:
-        wx, wy = lam - d, b
-    comp = (wx * u_pre[0] + wy * u_pre[1]) / (wx * vx + wy * vy)
-    if comp < 0.0:
-        vx, vy = -vx, -vy
+        out_v[2], out_v[3] = lam - d, b
+    return 2
+
+
+@jit(error_model="numpy")
+def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_pre, phi):
+    """ϑ* of a pure-spinning ending (MODEL §9), or NaN where the velocity has no limiting
+    direction.
+
+    Near the pole u* = (0, 0, ±1) the vanishing velocity direction (u₁, u₂) obeys the linear
+    flow of the 2×2 tangent Jacobian J (:func:`_pole_eigen`). Complex eigenvalues: it keeps
+    turning (NaN). J ∝ the identity: it is frozen. Real distinct eigenvalues: it tends to the
+    eigenvector of the slower one, on the side of the component along it of the direction
+    ``u_pre`` that the integration reached at the body angle ``phi_pre`` (read while |u₁₂| was
+    still far above round-off). If the body turned by more than ``PHI_RESOLVED`` after that,
+    the side is not resolved (NaN); below, the eigenvector is followed continuously from
+    ``phi_pre`` to the final angle ``phi`` (steps of 0.02 rad).
+    """
+    if not abs(phi - phi_pre) <= PHI_RESOLVED:
+        # the spin was still turning the body (and with it the field that steers the
+        # vanishing velocity) when |u₁₂| fell below what the integration resolves: which side
+        # of the eigenvector the velocity ends on is not determined
+        return math.nan
+    sign = 1.0 if u_pre[2] >= 0.0 else -1.0
+    ev = np.empty(4)
+    vx = u_pre[0]
+    vy = u_pre[1]
+    kind = _pole_eigen(par, kc, W, fe, fc, geo, sign, phi_pre, ev)
+    if kind == 1:
+        return math.nan  # complex eigenvalues: the direction keeps turning
+    if kind == 2:
+        comp = (ev[2] * u_pre[0] + ev[3] * u_pre[1]) / (ev[2] * ev[0] + ev[3] * ev[1])
+        vx, vy = ev[0], ev[1]
+        if comp < 0.0:
+            vx, vy = -vx, -vy
+    n = int(abs(phi - phi_pre) / 0.02) + 1 if phi != phi_pre else 0
+    for i in range(1, n + 1):
+        kind = _pole_eigen(par, kc, W, fe, fc, geo, sign, phi_pre + (phi - phi_pre) * i / n, ev)
+        if kind == 1:
+            return math.nan
+        if kind == 2:
+            if ev[0] * vx + ev[1] * vy < 0.0:
+                vx, vy = -ev[0], -ev[1]
+            else:
+                vx, vy = ev[0], ev[1]
     return math.atan2(vy, vx)
 
 
@@ -541,8 +631,11 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     eps_inv = max(EPS_INVARIANT, 10.0 * atol)
     # the last direction whose velocity part is still well above round-off and the
     # integrator's absolute tolerance: where a pure-spinning ending's ϑ* is read
-    thr12 = min(1e-2, max(ENDING_TOL, 1e3 * atol))
+    thr12 = ENDING_TOL
     u_dir = y[:3].copy()
+    phi_dir = y[7]
+    u_sad12 = y[:3].copy()
+    phi_sad12 = y[7]
     if par[P_SHAPE] == SHAPE_FOOTPRINT:
         symmetric = par[P_CSYM] != 0.0
     else:
@@ -595,6 +688,10 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     # windows of LN_S_WINDOW in ln s once s < s_drop s₀: fixed-point search and spiral test
     ln_s_win = math.inf
     arc = 0.0  # arc swept by u since the tail began or an attracting point was last seen
+    u3_max = 0.0  # largest |u₃| over that arc, and over the arc before
+    u3_max_prev = math.inf
+    extra_arcs = 0
+    spiral_slides = False
     tau_arc = 0.0
     us_prev = np.zeros(3)  # the attracting fixed point found at the last window
     d_ref = math.inf  # distance from it when first found
@@ -623,6 +720,9 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
             nrhs += 1
             for i in range(NY):
                 scale[i] = atol + max(abs(y[i]), abs(ynew[i])) * rtol
+            # the body angle to an absolute tolerance: relative to |φ| it would loosen with
+            # every turn, and β*, ϑ* at the frozen final φ inherit its error
+            scale[7] = atol
             en = _err_norm(K, h, scale)
             if not math.isfinite(en):
                 status = ST_NON_FINITE
@@ -668,6 +768,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
             u_dir[0] = y[0]
             u_dir[1] = y[1]
             u_dir[2] = y[2]
+            phi_dir = y[7]
         if spin0 and (abs(y[2]) < eps_inv or y[2] * sign3 < 0.0) and ln_inv3 != ln_inv3:
             ln_inv3 = y[3]
         if ln_inv3 == ln_inv3 and abs(y[2]) < 1e-3 and du < du_inv3:
@@ -676,6 +777,9 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                 u_inv3[i] = y[i]
         if symmetric and slide0 and u12 < eps_inv and ln_inv12 != ln_inv12:
             ln_inv12 = y[3]
+            for i in range(3):  # the last direction well above round-off, for ϑ*
+                u_sad12[i] = u_dir[i]
+            phi_sad12 = phi_dir
         if ln_inv12 == ln_inv12 and u12 < 1e-3 and du < du_inv12:
             du_inv12 = du
             for i in range(3):
@@ -696,9 +800,11 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                     break
             arc += du * (tau - tau_arc)
             tau_arc = tau
+            u3_max = max(u3_max, abs(y[2]))
             if ln_s_win == math.inf:
                 ln_s_win = y[3] - LN_S_WINDOW
                 arc = 0.0
+                u3_max = abs(y[2])
             elif y[3] < ln_s_win:
                 # s fell by another e^LN_S_WINDOW: t, x, y, φ have converged far below
                 # rounding and only the direction's limit is open. A fixed point that attracts
@@ -722,9 +828,26 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                         status = ST_STOPPED
                         break
                     arc = 0.0
+                    u3_max = abs(y[2])
+                    u3_max_prev = math.inf
                 elif arc > SPIRAL_ARC:
-                    status = ST_SPIRAL
-                    break
+                    # no attracting point, and the direction keeps turning. Over those turns
+                    # the spin stayed below ENDING_TOL: it dies out on the orbit (β* = ∞);
+                    # it is still shrinking: watch more turns (at most 20 more arcs); else
+                    # the orbit is off the equator and keeps it (β* NaN)
+                    if u3_max <= ENDING_TOL:
+                        spiral_slides = True
+                        status = ST_SPIRAL
+                        break
+                    if extra_arcs < 20 and (u3_max < 0.7 * u3_max_prev
+                                            or abs(y[2]) < 0.5 * u3_max):
+                        extra_arcs += 1
+                        u3_max_prev = u3_max
+                        arc = 0.0
+                        u3_max = abs(y[2])
+                    else:
+                        status = ST_SPIRAL
+                        break
                 ln_s_win = y[3] - LN_S_WINDOW
     if status == ST_STOPPED:
         # classify the stop from the fixed point and its eigenvalues (MODEL §9)
@@ -753,10 +876,11 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
             status = ST_SADDLE
             term[1] = ln_inv3 - ln_s0
         elif ln_inv12 == ln_inv12 and u12 > ENDING_TOL:
-            y[0] = u_inv12[0]
-            y[1] = u_inv12[1]
+            y[0] = 0.0
+            y[1] = 0.0
             y[2] = 1.0 if u_inv12[2] >= 0.0 else -1.0
-            u_pre = u_inv12.copy()
+            u_pre = u_sad12
+            phi_dir = phi_sad12
             status = ST_SADDLE
             term[1] = ln_inv12 - ln_s0
         elif rel > -MARGIN:
@@ -772,7 +896,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
             y[0] = 0.0
             y[1] = 0.0
             y[2] = 1.0 if y[2] >= 0.0 else -1.0
-            term[0] = _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, y[7])
+            term[0] = _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_dir, y[7])
             nrhs += 5
         else:
             if abs(y[2]) <= ENDING_TOL:
@@ -785,6 +909,8 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     # batch agree to the last bit)
     u12 = math.hypot(y[0], y[1])
     term[3] = math.inf if y[2] == 0.0 else par[P_K] * u12 / y[2]
+    if status == ST_SPIRAL:
+        term[3] = math.inf if spiral_slides else math.nan
     if status != ST_STOPPED and status != ST_MARGINAL and status != ST_SADDLE:
         term[0] = math.atan2(y[1], y[0])  # not converged: the direction as reached
     # closed-form tail: ln s decays at the rate |u·A| once u has converged

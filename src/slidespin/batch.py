@@ -231,7 +231,7 @@ def _stop_values(res, lo, hi, yend, status, steps, term, k, a, t_unit, st):
     beta = term[:, 3].copy()
     beta = np.where(converged & (ending == 1), np.inf, beta)
     beta = np.where(converged & (ending == 2), 0.0, beta)
-    beta = np.where(spiral, np.where(np.abs(u3) > ENDING_TOL, np.nan, np.inf), beta)
+    # (a spiral's β* is decided in the integrator: inf if the spin dies out, else NaN)
     theta = term[:, 0]
     ending = np.where(spiral, 4, ending)
     # a body at rest stays where it is

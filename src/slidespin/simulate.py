@@ -395,7 +395,7 @@ def _terminal_values(status, u12, u3, theta_star, beta_nat):
     status = int(status)
     if status == _ode.ST_SPIRAL:
         # the direction of motion turns for ever while the body stops: no terminal direction
-        return "spiral", (math.inf if abs(u3) <= ENDING_TOL else math.nan), math.nan
+        return "spiral", float(beta_nat), math.nan  # inf if the spin dies out, else NaN
     ending = classify_ending(u12, u3)
     if status in (_ode.ST_STOPPED, _ode.ST_MARGINAL, _ode.ST_SADDLE):
         if ending == "pure_sliding":
