@@ -40,13 +40,18 @@ for k in range(st.t.size):
     xw = st.x[k] + c * outline[:, 0] - s * outline[:, 1]
     yw = st.y[k] + s * outline[:, 0] + c * outline[:, 1]
     ax.plot(xw, yw, color=plt.cm.viridis(k / (st.t.size - 1)), lw=1.2)
-    ax.quiver(st.x[k], st.y[k], st.vx[k], st.vy[k], angles="xy", scale_units="xy", scale=8,
+    ax.quiver(st.x[k], st.y[k], st.vx[k], st.vy[k], angles="xy", scale_units="xy", scale=25,
               color="C1", width=0.004)
+    if st.omega[k] != 0.0:  # the ICR, where it lies near the plate
+        ix, iy = st.x[k] - st.vy[k] / st.omega[k], st.y[k] + st.vx[k] / st.omega[k]
+        if abs(ix - st.x[k]) < 0.15 and abs(iy - st.y[k]) < 0.15:
+            ax.plot(ix, iy, "x", color=plt.cm.viridis(k / (st.t.size - 1)), ms=7, mew=2)
 ax.plot(traj.x, traj.y, color="0.5", lw=0.8)
 ax.set_aspect("equal")
 ax.set_xlabel("x [m]")
 ax.set_ylabel("y [m]")
-ax.set_title("8 frames of the demo, from start (purple) to stop (yellow)", fontsize=10)
+ax.set_title("8 frames of the demo, start (purple) to stop (yellow); arrows: velocity of "
+             "G, crosses: ICR", fontsize=9)
 
 # %%
 # The last frame is the stop itself. The one number: the plate's rotation at the stop [rad].
