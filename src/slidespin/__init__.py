@@ -14,8 +14,12 @@ from .footprint_pressure import PressureMap
 from .footprint_wrench import footprint_wrench
 from .friction import FrictionTensor
 from .geometry import Circle, Ellipse
+from .limit_surface import LimitSurface, limit_surface
+from .loaded import LoadedTrajectory, simulate_loaded
+from .loads import Incline, Load
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
 from .simulate import Trajectory, simulate
+from .statics import can_stick, critical_tilt, load_factor, onset
 from .terminal import (
     InertiaIntervals,
     PhasePortrait,
@@ -64,4 +68,14 @@ __all__ = [
     "phase_portrait",
     "PhasePortrait",
     "__version__",
+    "Load",
+    "Incline",
+    "simulate_loaded",
+    "LoadedTrajectory",
+    "can_stick",
+    "load_factor",
+    "onset",
+    "critical_tilt",
+    "limit_surface",
+    "LimitSurface",
 ]

@@ -24,7 +24,7 @@ from .friction import FrictionTensor
 from .geometry import Ellipse
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
 
-__all__ = ["Body", "State"]
+__all__ = ["Body", "State", "check_body_friction"]
 
 _LAWS = (UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure)
 
@@ -289,3 +289,19 @@ class State:
     def as_array(self) -> np.ndarray:
         """(x, y, phi, vx, vy, omega) as a float array."""
         return np.array([self.x, self.y, self.phi, self.vx, self.vy, self.omega])
+
+
+def check_body_friction(body, friction, *, elliptic_only: str | None = None) -> None:
+    """Raise ``ValueError`` unless ``body`` is a :class:`Body` and ``friction`` a
+    :class:`~slidespin.FrictionTensor`; with ``elliptic_only`` (the name of the feature), also
+    unless the body rests on an ellipse or a circle (the feature does not take footprints yet).
+    """
+    if not isinstance(body, Body):
+        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
+    if not isinstance(friction, FrictionTensor):
+        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    if elliptic_only and body.is_footprint:
+        raise ValueError(
+            f"body.patch = {type(body.patch).__name__}(...) is not supported by {elliptic_only} "
+            "yet; valid values: an Ellipse or a Circle patch"
+        )

@@ -27,6 +27,7 @@ import sys
 from dataclasses import dataclass
 
 from . import _validate as v
+from .loads import INCLINE_KEYS, LOAD_KEYS, Incline, Load, incline_from_table, load_from_table
 from .body import Body, State
 from .friction import FrictionTensor
 from .geometry import Circle, Ellipse
@@ -69,7 +70,9 @@ _TABLES = {
     "initial": {
         "x", "y", "phi", "phi_deg", "vx", "vy", "omega", "speed", "theta", "theta_deg",
     },
-    "solver": {"g", "rtol", "max_steps"},
+    "solver": {"g", "rtol", "max_steps", "t_end"},
+    "load": set(LOAD_KEYS),
+    "incline": set(INCLINE_KEYS),
 }
 _TOP = {"name", "description"}
 
@@ -85,6 +88,14 @@ class Case:
     rtol: float = 1e-10
     max_steps: int = 200_000
     name: str = ""
+    load: Load | None = None
+    incline: Incline | None = None
+    t_end: float | None = None
+
+    @property
+    def loaded(self) -> bool:
+        """True if the case has applied loads, a tilt or a time bound (MODEL §11)."""
+        return self.load is not None or self.incline is not None or self.t_end is not None
 
 
 def _angle(table: dict, where: str, key: str, default: float = 0.0) -> float:
@@ -210,7 +221,12 @@ def case_from_dict(data: dict) -> Case:
         raise ValueError(f"[solver] max_steps = {max_steps!r} is invalid; valid range: "
                          f"integer >= 1 and <= {MAX_STEPS_LIMIT}")
     name = check_name(data.get("name", ""))
-    return Case(body, friction, state, g, rtol, max_steps, name)
+    load = load_from_table(data["load"]) if "load" in data else None
+    incline = incline_from_table(data["incline"]) if "incline" in data else None
+    t_end = None
+    if "t_end" in so:
+        t_end = v.in_range("[solver] t_end", so["t_end"], 0.0, 1e9, lo_open=True)
+    return Case(body, friction, state, g, rtol, max_steps, name, load, incline, t_end)
 
 
 def _footprint(p: dict, where: str, nested: bool = False):

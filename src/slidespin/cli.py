@@ -180,7 +180,8 @@ def _print_summary(case, traj, out) -> None:
     from .outcomes import status_message
 
     s = traj.summary()
-    a = case.body.patch.a
+    a = case.body.length_unit
+    unit = "extent" if case.body.is_footprint else "a"
 
     def deg(x):
         return f"{math.degrees(x):.6g} deg" if math.isfinite(x) else "undefined"
@@ -199,7 +200,7 @@ def _print_summary(case, traj, out) -> None:
         f"distance    : {traj.distance:.10g} m  (G ends at x = {traj.stop_state.x:.6g} m, "
         f"y = {traj.stop_state.y:.6g} m)",
         f"rotation    : {traj.stop_state.phi - case.initial_state.phi:.10g} rad",
-        f"beta_stop   : {traj.beta_stop:.10g} m  (beta/a = {traj.beta_stop / a:.10g})",
+        f"beta_stop   : {traj.beta_stop:.10g} m  (beta/{unit} = {traj.beta_stop / a:.10g})",
         f"theta_stop  : {traj.theta_stop:.10g} rad  ({deg(traj.theta_stop)})",
         f"ending      : {traj.ending}",
     ]
@@ -222,6 +223,8 @@ def _run_case(case, args) -> int:
     if args.csv:
         check_output_path(args.csv, "--csv")
     _distinct((args.plot, "--plot"), (args.csv, "--csv"))
+    if case.loaded:
+        return _run_loaded_case(case, args)
     # the same recorded points whatever the outputs asked for (CSV rows never depend on --plot)
     traj = simulate(
         case.body, case.friction, case.initial_state, g=case.g, rtol=case.rtol,
@@ -245,6 +248,30 @@ def _run_case(case, args) -> int:
         if args.plot:
             print(f"figure      : {args.plot}")
     return _exit_status(traj.status)
+
+
+def _run_loaded_case(case, args) -> int:
+    """A case with ``[load]``, ``[incline]`` or ``[solver] t_end``: the stick-slip engine."""
+    from .simulate import simulate
+
+    if args.plot:
+        raise ValueError("--plot is not available for cases with [load], [incline] or t_end "
+                         "yet; valid: --json, --csv")
+    traj = simulate(case.body, case.friction, case.initial_state, g=case.g, rtol=case.rtol,
+                    max_steps=case.max_steps, load=case.load, incline=case.incline,
+                    t_end=case.t_end)
+    if args.csv:
+        write_outputs([(args.csv, traj.to_csv().encode("utf-8"))])
+    summary = traj.summary()
+    if args.json:
+        print(json.dumps(summary, indent=2))
+    else:
+        print(f"case        : {case.name or '(unnamed)'}")
+        for key, value in summary.items():
+            print(f"{key:<12}: {value}")
+        if args.csv:
+            print(f"trajectory  : {args.csv}  ({traj.t.size} rows)")
+    return 0 if traj.status == "ok" else 1
 
 
 def _cmd_demo(args) -> int:

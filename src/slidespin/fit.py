@@ -65,7 +65,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate as v
-from .body import Body, State
+from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .pressure import LinearPressure
 
@@ -982,10 +982,7 @@ def fit(
     from scipy.optimize import least_squares
 
     t_start = time.perf_counter()
-    if not isinstance(body, Body):
-        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    check_body_friction(body, friction, elliptic_only="fit")
     runs = as_runs(data)
     free = _check_free(free, body)
     loss = v.choice("loss", loss, LOSSES)

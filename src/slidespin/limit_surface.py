@@ -32,7 +32,7 @@ import numpy as np
 from scipy.optimize import nnls
 
 from . import _validate as v
-from .body import Body
+from .body import Body, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline
 from .statics import StaticSupport
@@ -258,10 +258,7 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
     >>> round(float(ls.dissipation_gap.max()), 10)  # isotropic: maximum dissipation
     0.0
     """
-    if not isinstance(body, Body):
-        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    check_body_friction(body, friction, elliptic_only="limit_surface")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 10:
         raise ValueError(f"n = {n!r} is invalid; valid range: integer >= 10")
     if (isinstance(quartic_directions, bool)

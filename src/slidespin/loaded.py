@@ -54,7 +54,7 @@ from scipy.optimize import brentq
 from . import _ode
 from . import _validate as v
 from ._kernel import STATUS_OK, wrench_world
-from .body import Body, State
+from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline, Load
 from .statics import StaticSupport, _load_factor_nat, _onset_from_par, _onset_nat
@@ -375,10 +375,7 @@ def simulate_loaded(
     >>> tr.ending, bool(abs(tr.x[-1] - a / 2) < 1e-9)
     ('moving_at_t_end', True)
     """
-    if not isinstance(body, Body):
-        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    check_body_friction(body, friction, elliptic_only="loads and inclines")
     if not isinstance(initial_state, State):
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State")

@@ -250,7 +250,10 @@ def simulate(
     *,
     max_steps: int = 200_000,
     max_step: float | None = None,
-) -> Trajectory:
+    load=None,
+    incline=None,
+    t_end: float | None = None,
+):
     """Integrate the motion of ``body`` from ``initial_state`` until it stops.
 
     Parameters
@@ -278,9 +281,19 @@ def simulate(
         0.05, about 1000 points), not more accuracy. By default only the integrator's own
         steps are recorded (about 40 for the demo), which is enough for the stop values.
 
+    load : Load, optional
+        Applied force and torque (constant or functions of time; :mod:`slidespin.loads`).
+    incline : Incline, optional
+        A tilted plane: normal load m g cos α, downhill pull m g sin α.
+    t_end : float, optional
+        Time bound [s]; a loaded body need not stop.
+
     Returns
     -------
-    Trajectory
+    Trajectory, or LoadedTrajectory
+        A :class:`~slidespin.loaded.LoadedTrajectory` (with stick and slip phases and the
+        energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
+        :func:`slidespin.loaded.simulate_loaded` (ellipses and circles for now).
 
     Notes
     -----
@@ -303,6 +316,13 @@ def simulate(
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
         )
+    if load is not None or incline is not None or t_end is not None:
+        # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11)
+        from .loaded import simulate_loaded
+
+        return simulate_loaded(body, friction, initial_state, load=load, incline=incline,
+                               t_end=t_end, g=g, rtol=rtol, max_steps=max_steps,
+                               max_step=max_step)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol, max_steps = check_solver_options(rtol, max_steps)
     h_max = math.inf if max_step is None else v.positive("max_step", max_step)

@@ -56,7 +56,7 @@ from scipy.optimize import minimize, root
 from . import _ode
 from . import _validate as v
 from ._kernel import STATUS_OK, wrench_world
-from .body import Body
+from .body import Body, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline
 
@@ -123,10 +123,7 @@ class StaticSupport:
 
 
 def _check(body, friction):
-    if not isinstance(body, Body):
-        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    check_body_friction(body, friction, elliptic_only="static friction")
 
 
 def _wrench3(name, w):

@@ -51,7 +51,7 @@ from . import _validate as v
 from ._footprint_kernel import wrench_array as fp_wrench_array
 from ._footprint_kernel import wrench_world as fp_wrench_world
 from ._kernel import STATUS_OK, wrench_array, wrench_world
-from .body import Body, State
+from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .geometry import Circle
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
@@ -76,11 +76,7 @@ _FP_TOL = 1e-9  # |du/dτ| below which a refined point is accepted as a fixed po
 # ------------------------------------------------------------------------------------------
 # input checks and the compiled wrench in natural units (a = m = g = 1)
 # ------------------------------------------------------------------------------------------
-def _check_body_friction(body, friction) -> None:
-    if not isinstance(body, Body):
-        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+_check_body_friction = check_body_friction
 
 
 def _missed(par) -> str:
