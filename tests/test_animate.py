@@ -180,3 +180,44 @@ def test_main_cli_exit_status_2_and_nothing_written(tmp_path, capsys, monkeypatc
                      "--frames", "5"]) == 0
     with Image.open(gif) as im:
         assert im.n_frames == 5
+
+
+SPINNING_PUCK_ON_SLOPE = """
+name = "spinning puck on a slope"
+[patch]
+shape = "circle"
+radius = 0.04
+[pressure]
+law = "uniform"
+[friction]
+fx = 0.3
+fy = 0.3
+[body]
+mass = 0.2
+[initial]
+speed = 0.0
+omega = 30.0
+[incline]
+angle_deg = 20.0
+downhill_deg = 0.0
+[solver]
+t_end = 1.0
+"""
+
+
+def test_cli_loaded_case_animates_up_to_t_end(tmp_path, capsys):
+    case = tmp_path / "slope.toml"
+    case.write_text(SPINNING_PUCK_ON_SLOPE)
+    out = tmp_path / "slope.gif"
+    assert _cli([str(case), "--out", str(out), "--frames", "7"]) == 0
+    with Image.open(out) as im:
+        assert im.n_frames == 7
+    # the frames span the whole run, 0 to t_end, sliding downhill (+x) while it spins
+    from slidespin.case import load_case
+
+    c = load_case(str(case))
+    tr = ss.simulate(c.body, c.friction, c.initial_state, load=c.load, incline=c.incline,
+                     t_end=c.t_end)
+    st = anim.frame_states(tr, 7)
+    assert st.t[-1] == pytest.approx(1.0) and st.x[0] == 0.0
+    assert np.all(np.diff(st.x) > 0) and abs(st.phi[-1]) > 0.1

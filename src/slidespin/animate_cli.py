@@ -1,7 +1,9 @@
 """``slidespin animate CASE.toml --out run.gif``: an animated GIF of a case's motion.
 
-Reads a case file (:func:`slidespin.case.load_case`), simulates it to the stop with the same
-settings as ``slidespin simulate`` and writes the GIF of :func:`slidespin.animate.animate`.
+Reads a case file (:func:`slidespin.case.load_case`), simulates it with the same settings as
+``slidespin simulate`` (to the stop, or through stick and slip up to ``t_end`` for a case with
+``[load]``, ``[incline]`` or ``[solver] t_end``) and writes the GIF of
+:func:`slidespin.animate.animate`.
 The output path, its format (``.gif``), ``--fps`` and ``--frames`` are checked before the case
 is read or anything is computed. Plugin of :mod:`slidespin.cli` (``configure(parser)``,
 ``run(args)``).
@@ -54,8 +56,16 @@ def run(args) -> int:
     from .simulate import simulate
 
     case = load_case(args.case)
-    traj = simulate(case.body, case.friction, case.initial_state, g=case.g, rtol=case.rtol,
-                    max_steps=case.max_steps, max_step=CLI_MAX_STEP)
+    if getattr(case, "loaded", False):
+        # [load], [incline] or t_end: the stick-slip engine, as `slidespin simulate` runs it
+        traj = simulate(case.body, case.friction, case.initial_state, g=case.g,
+                        rtol=case.rtol, max_steps=case.max_steps, load=case.load,
+                        incline=case.incline, t_end=case.t_end)
+        status = 0 if traj.status == "ok" else 1
+    else:
+        traj = simulate(case.body, case.friction, case.initial_state, g=case.g,
+                        rtol=case.rtol, max_steps=case.max_steps, max_step=CLI_MAX_STEP)
+        status = _exit_status(traj.status)
     if default:
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
     animate(traj, out, fps=args.fps, frames=args.frames, title=case.name or None)
@@ -63,4 +73,4 @@ def run(args) -> int:
     print(f"status      : {traj.status}  (ending {traj.ending}, t_stop {traj.t_stop:.6g} s)")
     print(f"animation   : {out}  ({args.frames} frames at {args.fps} fps, "
           f"{os.path.getsize(out) / 1024:.0f} KiB)")
-    return _exit_status(traj.status)
+    return status
