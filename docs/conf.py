@@ -187,11 +187,14 @@ def _process_docstring(app, what, name, obj, options, lines) -> None:
     lines[:] = _fix_docstring(lines)
 
 
-# -- Public constants without a doc comment --------------------------------------------------
-# autodoc documents module data only when it has a ``#:`` doc comment. So that every name of
-# a module's ``__all__`` is in the reference anyway, each api/<module>.rst page includes
-# _generated/api/<module>.rst, written here with an ``autodata`` entry for each such name
-# (an empty file once every constant has its doc comment).
+# -- API pages -----------------------------------------------------------------------------
+# Each docs/api/<module>.rst page includes _generated/api/<module>.rst, written here:
+# * ``automodule`` with every member of ``__all__``; autodoc documents module data only when
+#   it has a ``#:`` doc comment, so each constant without one gets an ``autodata`` entry, and
+#   every public name is in the reference;
+# * a module whose name the package hides (``slidespin.limit_surface`` is also the function
+#   re-exported at the top level) cannot be declared under that name a second time: its page
+#   shows the module docstring and lists its members one by one.
 API_MODULES = (
     "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.terminal",
     "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
@@ -202,7 +205,29 @@ API_MODULES = (
 )
 
 
-def _undocumented_data(module: str) -> list[str]:
+def _public_names(mod) -> list[str]:
+    import inspect
+
+    names = getattr(mod, "__all__", None)
+    if names is None:
+        names = [n for n, o in vars(mod).items() if not n.startswith("_")
+                 and (inspect.isclass(o) or inspect.isroutine(o))
+                 and getattr(o, "__module__", None) == mod.__name__]
+    return [n for n in names if not n.startswith("__")]
+
+
+def shadowed(module: str) -> bool:
+    """True if ``slidespin.<name>`` is not this module (a re-exported function hides it)."""
+    import importlib
+
+    parent, _, short = module.rpartition(".")
+    if not parent:
+        return False
+    mod = importlib.import_module(module)
+    return getattr(importlib.import_module(parent), short, mod) is not mod
+
+
+def _api_page(module: str) -> str:
     import importlib
     import inspect
 
@@ -211,26 +236,37 @@ def _undocumented_data(module: str) -> list[str]:
     mod = importlib.import_module(module)
     try:
         attr_docs = ModuleAnalyzer.for_module(module).find_attr_docs()
-    except Exception:  # no source: nothing to add
-        return []
-    names = []
-    for name in getattr(mod, "__all__", ()):
+    except Exception:  # no source
+        attr_docs = {}
+    hidden = shadowed(module)
+    if hidden:
+        short = module.rpartition(".")[2]
+        lines = [f".. note:: ``slidespin.{short}`` is the function of the same name; import "
+                 f"this module with ``import {module}``.", "",
+                 f".. automodule:: {module}", "   :no-index:", "",
+                 f".. currentmodule:: {module}", ""]
+    else:
+        lines = [f".. automodule:: {module}", "   :members:", "   :undoc-members:", ""]
+    for name in _public_names(mod):
         obj = getattr(mod, name, None)
-        if name.startswith("__") or inspect.isclass(obj) or inspect.isroutine(obj) \
-                or inspect.ismodule(obj) or ("", name) in attr_docs:
+        if inspect.ismodule(obj):
             continue
-        names.append(name)
-    return names
+        if inspect.isclass(obj):
+            if hidden:
+                lines += [f".. autoclass:: {name}", "   :members:", "   :undoc-members:", ""]
+        elif inspect.isroutine(obj):
+            if hidden:
+                lines += [f".. autofunction:: {name}", ""]
+        elif hidden or ("", name) not in attr_docs:
+            lines += [f".. autodata:: {name}", ""]
+    return "\n".join(lines) + "\n"
 
 
-def _api_constants(app) -> None:
+def _api_pages(app) -> None:
     out = HERE / "_generated" / "api"
     out.mkdir(parents=True, exist_ok=True)
     for module in API_MODULES:
-        lines = [f".. currentmodule:: {module}", ""]
-        for name in _undocumented_data(module):
-            lines += [f".. autodata:: {name}", ""]
-        text = "\n".join(lines) + "\n"
+        text = _api_page(module)
         path = out / f"{module}.rst"
         if not path.exists() or path.read_text() != text:
             path.write_text(text)
@@ -251,5 +287,5 @@ def _front_page_animation(app) -> None:
 
 def setup(app):
     app.connect("autodoc-process-docstring", _process_docstring)
-    app.connect("builder-inited", _api_constants)
+    app.connect("builder-inited", _api_pages)
     app.connect("builder-inited", _front_page_animation)

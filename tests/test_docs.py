@@ -69,7 +69,11 @@ def test_every_public_name_is_in_the_api_reference(site):
     missing = [f"{m}.{n}" for m in PUBLIC_MODULES for n in _public(m)
                if f"{m}.{n}" not in documented]
     assert not missing, f"not in the API reference: {missing}"
-    assert all(m in documented for m in PUBLIC_MODULES if m != "slidespin.footprint_wrench")
+    # a module hidden by a re-exported function of its name has no module entry of its own
+    hidden = {m for m in PUBLIC_MODULES if "." in m and getattr(
+        importlib.import_module("slidespin"), m.rpartition(".")[2]) is not
+        importlib.import_module(m)}
+    assert all(m in documented for m in PUBLIC_MODULES if m not in hidden)
 
 
 def test_pages_of_the_site(site):
