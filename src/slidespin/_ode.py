@@ -48,9 +48,9 @@ import math
 import numpy as np
 from scipy.integrate._ivp import dop853_coefficients as _dop
 
-from ._jit import jit, prange
 from ._footprint_kernel import NGEO
 from ._footprint_kernel import wrench_world as fp_wrench_world
+from ._jit import jit, prange
 from ._kernel import WORKSPACE_SHAPE, wrench_constants, wrench_world_fast
 
 _NS = _dop.N_STAGES  # 12

@@ -20,13 +20,16 @@ import numpy as np
 
 from . import _ode
 from . import _validate as v
+from ._cases import CASE_FIELDS, validated_columns
 from .body import Body
 from .friction import FrictionTensor
-from ._cases import CASE_FIELDS, validated_columns
 from .outcomes import ENDINGS, STATUSES
 from .simulate import ENDING_TOL, check_solver_options
 
 __all__ = ["StopResults", "simulate_many", "simulate_bodies", "simulate_cases", "CASE_FIELDS"]
+
+#: per-case inputs of :func:`simulate_cases` and their defaults (None: required)
+CASE_FIELDS = CASE_FIELDS
 
 #: cases per call of the parallel engine (bounds the temporary arrays of a batch)
 CHUNK = 1 << 16

@@ -225,6 +225,7 @@ def bench_trajectory(quick):
     """Demo trajectory: compiled integration (no records) per trajectory, the Python call
     ``simulate`` and its overhead beyond its compiled part, at rtol 1e-10 and 1e-8."""
     import slidespin as ss
+
     from . import _ode
     from ._kernel import wrench_array
 
@@ -435,6 +436,7 @@ def bench_accuracy(quick):
     import warnings
 
     import slidespin as ss
+
     from .pressure import pressure_law_from_name
 
     out = {}
@@ -561,8 +563,9 @@ def _naive_problem(body, friction, st, g, wrench):
 
 def bench_naive(seconds):
     """The naive route, time-boxed: per-RHS cost, progress, and the estimated full time."""
-    import slidespin as ss
     from scipy.integrate import solve_ivp
+
+    import slidespin as ss
 
     body, fr, st, g = _demo()
     opts = dict(method="RK45", rtol=1e-8, atol=1e-10)
@@ -806,6 +809,7 @@ def run(args) -> int:
         r["compile"] = bench_compile()
     _log("warming up (numba cache or compile)")
     import slidespin as ss
+
     from .batch import simulate_many
 
     body, fr, st, g = _demo()
@@ -840,7 +844,8 @@ def run(args) -> int:
             raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 0")
     if n_sl or n_sd:
         _log(f"sweeps: {n_sl} cases locally, {n_sd} through a 2-worker LocalCluster")
-        from .sweep import SweepError, benchmark as sweep_benchmark
+        from .sweep import SweepError
+        from .sweep import benchmark as sweep_benchmark
 
         try:
             r["sweep"] = sweep_benchmark(n_local=n_sl, n_dask=n_sd, workers=2,

@@ -27,10 +27,10 @@ import sys
 from dataclasses import dataclass
 
 from . import _validate as v
-from .loads import INCLINE_KEYS, LOAD_KEYS, Incline, Load, incline_from_table, load_from_table
 from .body import Body, State
 from .friction import FrictionTensor
 from .geometry import Circle, Ellipse
+from .loads import INCLINE_KEYS, LOAD_KEYS, Incline, Load, incline_from_table, load_from_table
 from .pressure import pressure_law_from_name
 
 if sys.version_info >= (3, 11):

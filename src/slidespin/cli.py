@@ -1,5 +1,5 @@
 """Command-line interface: ``slidespin demo | simulate | sweep | sweep-read | sweep-plot |
-reproduce | bench | fit``.
+reproduce | bench | fit | limit-surface | animate``.
 
 Errors in the input (bad values, unknown keys, unreadable files, unwritable outputs, an
 unknown figure format) print one line naming the file, the parameter, its value and the valid
@@ -44,6 +44,7 @@ _PLUGINS = (
     ("bench", "slidespin.bench", "benchmark the compiled engine against naive approaches"),
     ("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion (CSV of t, x, y, phi)"),
     ("limit-surface", "slidespin.ls_cli", "sample and fit the limit surface of a case's body"),
+    ("animate", "slidespin.animate_cli", "write an animated GIF of a case's motion (Pillow; no ffmpeg)"),
 )
 
 ISSUE_URL = "https://github.com/slidespin/slidespin/issues"
@@ -289,8 +290,9 @@ def _cmd_simulate(args) -> int:
 
 
 def _cmd_sweep(args) -> int:
-    from .sweep import _check_out, connect_dask, load_spec, sweep
     from pathlib import Path
+
+    from .sweep import _check_out, connect_dask, load_spec, sweep
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"--workers = {args.workers} is invalid; valid range: integer >= 1")

@@ -84,9 +84,12 @@ __all__ = [
     "trajectory_at",
 ]
 
+#: parameters that :func:`fit` can free
 PARAMETERS = ("fx", "fy", "f", "angle", "xi_c", "eta_c", "moment_of_inertia")
+#: measured channels of a run: positions of G [m] and the body angle [rad]
 CHANNELS = ("x", "y", "phi")
 START = ("x", "y", "phi", "vx", "vy", "omega")
+#: loss functions of :func:`scipy.optimize.least_squares` accepted by :func:`fit`
 LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
 _UNITS = {"x": "m", "y": "m", "phi": "rad"}
 _PAIR = {"x": "vx", "y": "vy", "phi": "omega"}
@@ -1035,7 +1038,8 @@ def fit(
 
     p = np.clip(prob.x0, prob.lb, prob.ub)
     fun = prob.residuals
-    jac = lambda q: prob.jacobian(q)
+    def jac(q):
+        return prob.jacobian(q)
     nfev = 0
     res = None
     caught: list[str] = []

@@ -732,6 +732,7 @@ class Pads(_Patch):
         return out
 
 
+#: any footprint patch (the type of :attr:`slidespin.Body.patch` beside ellipses)
 Footprint = Polygon | Rectangle | Disk | Annulus | Pads
 
 

@@ -96,12 +96,12 @@ class FrictionTensor:
     @classmethod
     def from_degrees(
         cls, fx: float, fy: float, f: float = 0.0, frame: str = "plane", angle_deg: float = 0.0
-    ) -> "FrictionTensor":
+    ) -> FrictionTensor:
         """The tensor with its principal axes turned by ``angle_deg`` degrees."""
         return cls(fx, fy, f, frame, angle_deg=angle_deg)
 
     @classmethod
-    def isotropic(cls, coefficient: float) -> "FrictionTensor":
+    def isotropic(cls, coefficient: float) -> FrictionTensor:
         """Isotropic Coulomb friction with the given coefficient (in [1e-6, 5])."""
         c = v.bounded("coefficient", coefficient, *v.COEFFICIENT)
         return cls(c, c)

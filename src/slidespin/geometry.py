@@ -73,7 +73,7 @@ class Ellipse:
         object.__setattr__(self, "b", b)
 
     @classmethod
-    def from_eccentricity(cls, a: float, eccentricity: float) -> "Ellipse":
+    def from_eccentricity(cls, a: float, eccentricity: float) -> Ellipse:
         """Ellipse with semi-major axis ``a`` [m] along ξ and eccentricity ``e`` in [0, e_max].
 
         e_max = 0.999999 (b/a = 1.41e-3): the thinnest patch the wrench quadrature

@@ -61,6 +61,7 @@ from .statics import StaticSupport, _load_factor_nat, _onset_from_par, _onset_na
 
 __all__ = ["LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
 
+#: how a loaded motion ends (:attr:`LoadedTrajectory.ending`)
 LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
 _TOL = 1e-13
 _STOP_DROP = 1e-13  # the stop is declared when s has fallen below this fraction of its scale
@@ -153,6 +154,12 @@ class LoadedTrajectory:
     def speed(self) -> np.ndarray:
         """|v_G| [m/s]."""
         return np.hypot(self.vx, self.vy)
+
+    def animate(self, path, fps: int = 20, frames: int = 60, **kwargs) -> str:
+        """Write an animated GIF of the motion (:func:`slidespin.animate.animate`)."""
+        from .animate import animate
+
+        return animate(self, path, fps=fps, frames=frames, **kwargs)
 
     def summary(self) -> dict:
         """Results as a JSON-ready dict (SI units)."""
@@ -622,7 +629,8 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
     if prob.constant or math.isinf(t_end):
         return None
     h = scan if scan is not None else (t_end - t0) / 400.0
-    f = lambda tt: prob.gauge(tt, phi) - 1.0
+    def f(tt):
+        return prob.gauge(tt, phi) - 1.0
     ta, fa = t0, f(t0)
     while ta < t_end:
         tb = min(ta + h, t_end)

@@ -31,6 +31,7 @@ from . import _validate as v
 
 __all__ = ["LOAD_FRAMES", "Incline", "Load", "applied_wrench"]
 
+#: frames a :class:`Load`'s force may be given in
 LOAD_FRAMES = ("plane", "body")
 
 ForceSpec = tuple | Callable[[float], tuple]

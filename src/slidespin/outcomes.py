@@ -56,6 +56,7 @@ STATUSES = (
 #: ending names, indexed by the integer ending codes of :class:`slidespin.batch.StopResults`
 ENDINGS = ("mixed", "pure_sliding", "pure_spinning", "at_rest", "spiral")
 
+#: one-line explanation of each status
 STATUS_MESSAGES = {
     "stopped": "converged stop, independent of solver settings",
     "marginal": "approaches a marginal (non-hyperbolic) terminal state algebraically; "

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import ClassVar, Union
+from typing import ClassVar
 
 import numpy as np
 
@@ -135,6 +135,7 @@ class LinearPressure(_Law):
 
     @property
     def centroid(self) -> tuple[float, float]:
+        """Pressure centroid (= mass centre G) in the body frame [m]: (ξc, ηc)."""
         return (self.xi_c, self.eta_c)
 
     def core_measure(self, patch) -> float:
@@ -142,6 +143,8 @@ class LinearPressure(_Law):
         return (self.xi_c / patch.a) ** 2 + (self.eta_c / patch.b) ** 2
 
     def check_patch(self, patch) -> None:
+        """Raise ``ValueError`` unless p ≥ 0 on the ellipse ``patch`` (the centroid lies in its
+        core, (ξc/a)² + (ηc/b)² ≤ 1/16; MODEL §3)."""
         c = self.core_measure(patch)
         if c > 1.0 / 16.0 * (1.0 + 1e-12):
             raise ValueError(
@@ -178,7 +181,7 @@ class HertzPressure(_Law):
         return 1.5 * np.sqrt(1.0 - q)
 
 
-PressureLaw = Union[UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure]
+PressureLaw = UniformPressure | LinearPressure | BoussinesqPressure | HertzPressure
 
 
 def pressure_law_from_name(name: str, **params: float) -> PressureLaw:

@@ -167,6 +167,12 @@ class Trajectory:
             f"n_steps={self.n_steps}, n_points={self.t.size})"
         )
 
+    def animate(self, path, fps: int = 20, frames: int = 60, **kwargs) -> str:
+        """Write an animated GIF of the motion (:func:`slidespin.animate.animate`)."""
+        from .animate import animate
+
+        return animate(self, path, fps=fps, frames=frames, **kwargs)
+
     @property
     def status_message(self) -> str:
         """One-line explanation of :attr:`status`."""

@@ -61,14 +61,15 @@ import numpy as np
 
 from . import _validate as v
 from ._cases import validated_columns
-from .case import check_document, check_name
 from .batch import simulate_cases
+from .case import check_document, check_name
 from .pressure import LAW_NAMES
 
 __all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "split_unconverged",
            "count_outcomes", "compute_chunk", "compute_chunks", "connect_dask", "PARAMETERS",
            "SweepError", "SweepResult", "MAX_CASES", "MAX_AXIS", "MAX_CHUNK"]
 
+#: sweep parameters and their defaults (None: required, or derived from another one)
 PARAMETERS = {
     "a": None, "b": None, "e": None, "aspect": None, "law": "uniform", "xi_c": 0.0,
     "eta_c": 0.0, "fx": None, "fy": None, "mu": None, "f": 0.0, "frame": "plane",
@@ -118,10 +119,12 @@ class SweepSpec:
 
     @property
     def name(self) -> str:
+        """The spec's ``name`` (empty if it has none)."""
         return self.data.get("name", "")
 
     @property
     def n_chunks(self) -> int:
+        """Number of chunks (Parquet files, tasks) the cases are split into."""
         return -(-self.n_cases // self.chunk_size)
 
     @property
@@ -535,7 +538,7 @@ def _read_chunk(path: Path):
                          "slidespin sweep SPEC --out DIR --resume to recompute it") from None
 
 
-def _verify_chunk(out: Path, spec: "SweepSpec", index: int):
+def _verify_chunk(out: Path, spec: SweepSpec, index: int):
     """The status and ending columns of chunk ``index`` if its file is sound (readable,
     the right columns, rows and case numbers, known statuses), else ``None``."""
     from .outcomes import ENDINGS, STATUSES

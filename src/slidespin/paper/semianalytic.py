@@ -149,7 +149,7 @@ class PaperModel:
             raise ValueError(f"nodes = {n!r} is invalid; valid range: integer in [4, 2000]")
 
     @classmethod
-    def from_eccentricity(cls, eccentricity: float, **kwargs) -> "PaperModel":
+    def from_eccentricity(cls, eccentricity: float, **kwargs) -> PaperModel:
         """Model for an ellipse of eccentricity e in [0, 1) (κ = √(1 − e²), eq. 7)."""
         e = v.in_range("eccentricity", eccentricity, 0.0, 1.0, hi_open=True)
         return cls(math.sqrt(1.0 - e * e), **kwargs)
@@ -164,7 +164,7 @@ class PaperModel:
         """Body coordinates (ξ, η) of the reference point, units of a."""
         return (self.xi_c, self.eta_c) if self.reference == "mass_centre" else (0.0, 0.0)
 
-    def with_(self, **changes) -> "PaperModel":
+    def with_(self, **changes) -> PaperModel:
         """Copy with some parameters changed (validated)."""
         return replace(self, **changes)
 
