@@ -197,7 +197,10 @@ def _ramp_truth(f0, t1, fc, m):
         return f0 * t1
 
     ta = t1 * fc / f0
-    vel = lambda t: (impulse(t) - impulse(ta) - fc * (t - ta)) / m
+
+    def vel(t):
+        return (impulse(t) - impulse(ta) - fc * (t - ta)) / m
+
     tb = brentq(vel, t1, 2 * t1 + 10.0, xtol=1e-15, rtol=1e-15)
     x = quad(vel, ta, t1, epsabs=1e-14, epsrel=1e-14)[0] + quad(
         vel, t1, tb, epsabs=1e-14, epsrel=1e-14, points=[2 * t1] if tb > 2 * t1 else None)[0]
@@ -304,3 +307,59 @@ def test_piecewise_linear_ramp_matches_the_closed_form():
     ta, tb, x = _ramp_truth(f0, t1, mu * m * G, m)
     assert tr.slip_intervals[0] == pytest.approx((ta, tb), abs=1e-8)
     assert tr.x[-1] == pytest.approx(x, rel=1e-8)
+
+
+# ------------------------------------------------------------------------------------------
+# a push off G through the threshold (regression: "no onset direction found; please report")
+# ------------------------------------------------------------------------------------------
+def _off_centre_pushes():
+    profile = Load.piecewise_linear([0.0, 1.0, 2.0], [0.0, 5.0, 0.0], [0.0, 0.0, 0.0],
+                                    at=(0.0, 0.02))
+    written = Load(force=lambda t: (5.0 * max(0.0, 1.0 - abs(t - 1.0)), 0.0), at=(0.0, 0.02))
+    table = ss.loads.load_from_table({"times": [0.0, 1.0, 2.0], "profile_fx": [0.0, 5.0, 0.0],
+                                      "profile_fy": [0.0, 0.0, 0.0], "at": [0.0, 0.02]})
+    return profile, written, table
+
+
+def test_off_centre_ramp_starts_at_the_independent_threshold_however_written():
+    """The push 0 → 5 N → 0 at (0, 2 cm) reaches the threshold F_c (independent 1-D
+    minimisation, tests/test_statics.py) at t = F_c/5 on its linear rise; the slip starts
+    there with the onset rate 0⁺, whether the push is a piecewise-linear profile, a lambda
+    or a case-file table (the three round the load differently at the threshold)."""
+    from test_statics import off_centre_push_threshold
+
+    f_c, _ = off_centre_push_threshold(0.05, 0.3, 1.0, 0.02)
+    runs = [ss.simulate(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(), load=load, t_end=3.0,
+                        g=G) for load in _off_centre_pushes()]
+    for tr in runs:
+        assert tr.status == "ok" and tr.message == "" and tr.ending == "stopped_stuck"
+        assert [k for k, _, _ in tr.phases] == ["stick", "slip", "stick"]
+        assert tr.phases[1][1] == pytest.approx(f_c / 5.0, abs=1e-9)
+        # it slides and turns (clockwise: the push acts above G), then stops after the release
+        assert tr.x[-1] > 0.0 and tr.phi[-1] < 0.0 and tr.phases[1][2] > 2.0
+        assert tr.energy_error < 1e-9 * 5.0 * tr.x[-1]
+    for tr in runs[1:]:
+        for (k0, a0, b0), (k1, a1, b1) in zip(runs[0].phases, tr.phases):
+            assert k0 == k1 and abs(a0 - a1) <= 1e-9 and abs(b0 - b1) <= 1e-9
+        assert tr.x[-1] == pytest.approx(runs[0].x[-1], rel=1e-8)
+        assert tr.phi[-1] == pytest.approx(runs[0].phi[-1], rel=1e-8)
+
+
+def test_an_onset_that_cannot_be_found_ends_the_run_honestly(monkeypatch):
+    """No input may reach a RuntimeError: a failed onset solve (a slip direction always
+    exists beyond C, so this is a solver failure, forced here) ends the run at that time,
+    at rest, with status "no_onset" and a message."""
+    import slidespin.statics as st
+    from test_statics import off_centre_push_threshold
+
+    f_c, _ = off_centre_push_threshold(0.05, 0.3, 1.0, 0.02)
+    monkeypatch.setattr(st, "_onset_nat", lambda *args, **kwargs: None)
+    tr = simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(),
+                         load=_off_centre_pushes()[0], t_end=3.0, g=G)
+    assert tr.status == "no_onset"
+    assert "could not be started" in tr.message and "load factor" in tr.message
+    assert [k for k, _, _ in tr.phases] == ["stick"]
+    assert tr.phases[0][2] == pytest.approx(f_c / 5.0, abs=1e-9) == tr.t[-1]
+    assert tr.speed[-1] == 0.0 and tr.x[-1] == 0.0
+    summary = json.loads(tr.to_json())
+    assert summary["status"] == "no_onset" and summary["message"] == tr.message

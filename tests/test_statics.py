@@ -4,7 +4,9 @@ Truth: closed forms (μ m g for a push; (2/3, 3π/16, π/4) μ m g R for a torqu
 Hertz and Boussinesq disk, MODEL §8), the force ellipse P·𝔽(unit disk) of an orthotropic
 tensor, a direct 2-D quadrature of h(d) = ∫ p |𝔽ᵀ(d_F + d_M r′⊥)| dS with scipy's dblquad
 (written apart from the image-patch method of the code), and the defining equation of the
-onset evaluated with the public friction_wrench.
+onset evaluated with the public friction_wrench, and, for a uniform disk pushed off G, the
+threshold and the onset twist at the threshold by a 1-D minimisation over rotation centres
+of ∫|v| dA written in closed-form geometry (``off_centre_push_threshold``).
 """
 
 from __future__ import annotations
@@ -13,11 +15,12 @@ import math
 
 import numpy as np
 import pytest
-from scipy.integrate import dblquad
+from scipy.integrate import dblquad, quad
+from scipy.optimize import minimize_scalar
 
 import slidespin as ss
 from slidespin.loads import Incline
-from slidespin.statics import can_stick, load_factor, onset, support_function
+from slidespin.statics import OnsetNotFound, can_stick, load_factor, onset, support_function
 
 G = 9.81
 
@@ -38,6 +41,105 @@ def h_dblquad(body, friction, d, phi):
         return p * math.hypot(fw[0, 0] * cx + fw[1, 0] * cy, fw[0, 1] * cx + fw[1, 1] * cy) * a * b * r
 
     return dblquad(f, 0.0, 2.0 * math.pi, 0.0, 1.0, epsabs=1e-11, epsrel=1e-11)[0]
+
+
+def disk_distance_integral(c, r):
+    """∫ over a disk of radius r of the distance to a point P at distance c ≥ 0 from its
+    centre [m³], in polar coordinates about P (dA = ρ dρ dψ): the ray from P = (c, 0) in
+    the direction ψ meets the circle at ρ± = −c cos ψ ± √(r² − c² sin² ψ), so the integral
+    is ∫ (ρ₊³ − ρ₋³)/3 dψ (with ρ₋ replaced by 0 when P is inside)."""
+    if c <= r:
+        def f(psi):
+            return (-c * math.cos(psi) + math.sqrt(r * r - (c * math.sin(psi)) ** 2)) ** 3 / 3.0
+        return quad(f, 0.0, 2.0 * math.pi, epsabs=0.0, epsrel=1e-13, limit=200)[0]
+    # P outside: rays within asin(r/c) of the centre; ρ₊³ − ρ₋³ = (ρ₊ − ρ₋)(4c² cos²ψ − c² + r²)
+    # and sin ψ = (r/c) sin χ removes the square-root end points
+    q = r / c
+
+    def f(chi):
+        cp = math.sqrt(1.0 - (q * math.sin(chi)) ** 2)
+        return 2.0 * r * math.cos(chi) * (4 * c * c * cp * cp - c * c + r * r) / 3.0 \
+            * q * math.cos(chi) / cp
+
+    return 2.0 * quad(f, 0.0, math.pi / 2, epsabs=0.0, epsrel=1e-13, limit=200)[0]
+
+
+def off_centre_push_threshold(r, mu, m, e, g=G):
+    """Uniform isotropic disk pushed along x at the body point (0, e): the force F_c [N] at
+    which it slips and the twist (vx, vy, ω) normal to C there (the onset at the threshold).
+
+    The wrench per newton is (1, 0, −e). λ* = min over twists d of h(d)/(d·W) with
+    h(d) = μ p ∫|v| dA (p = m g/(π r²)); by the mirror symmetry x → −x (which maps W to −W)
+    the minimising twist has vy = 0, a rotation about (0, c) with c = vx/ω, so
+    h = μ p |ω| ∫ dist(·, (0, c)) dA. Minimised over d = (cos θ, 0, sin θ/r).
+    """
+    p = m * g / (math.pi * r * r)
+
+    def ratio(theta):
+        s, c = math.sin(theta), math.cos(theta)
+        den = c - e * s / r
+        if s == 0.0:
+            return mu * m * g / den
+        return mu * p * abs(s) / r * disk_distance_integral(abs(r * c / s), r) / den
+
+    edge = math.atan(e / r)
+    res = minimize_scalar(ratio, bounds=(-math.pi / 2 - edge + 1e-6, math.pi / 2 - edge - 1e-6),
+                          method="bounded", options={"xatol": 1e-12})
+    return float(res.fun), np.array([math.cos(res.x), 0.0, math.sin(res.x) / r])
+
+
+def test_disk_distance_integral_limits():
+    r = 0.05
+    assert disk_distance_integral(0.0, r) == pytest.approx(2 * math.pi * r**3 / 3, rel=1e-13)
+    assert disk_distance_integral(r * (1 - 1e-12), r) == pytest.approx(
+        disk_distance_integral(r * (1 + 1e-12), r), rel=1e-10)
+    far = 1e4 * r  # a distant point sees the disk as its area at distance ≈ c (+ O(r²/c))
+    assert disk_distance_integral(far, r) == pytest.approx(math.pi * r * r * far, rel=1e-8)
+
+
+def test_off_centre_push_threshold_matches_an_independent_minimisation():
+    r, mu, m, e = 0.05, 0.3, 1.0, 0.02
+    disk = ss.Body(ss.Circle(r), ss.UniformPressure(), m)
+    fr = ss.FrictionTensor.isotropic(mu)
+    f_c, _ = off_centre_push_threshold(r, mu, m, e)
+    # between the convex-hull (diamond) bound and the pure force and pure torque thresholds
+    f_push, t_c = mu * m * G, 2.0 / 3.0 * mu * m * G * r
+    assert 1.0 / (1.0 / f_push + e / t_c) < f_c < min(f_push, t_c / e)
+    assert load_factor(disk, fr, (1.0, 0.0, -e), g=G) == pytest.approx(f_c, rel=1e-10)
+
+
+def test_onset_at_the_threshold_exists_whatever_the_rounding():
+    """Regression: a load on the boundary of C within round-off (where a ramped push starts
+    the body) has the onset rate λ = 0⁺; its computed sign is round-off, and the onset was
+    rejected ("no onset direction found") although the load factor was below 1."""
+    r, mu, m, e = 0.05, 0.3, 1.0, 0.02
+    disk = ss.Body(ss.Circle(r), ss.UniformPressure(), m)
+    fr = ss.FrictionTensor.isotropic(mu)
+    f_c, twist = off_centre_push_threshold(r, mu, m, e)
+    ref = twist * [1.0, 1.0, r] / np.linalg.norm(twist * [1.0, 1.0, r])
+    slipping = 0
+    for j in range(-8, 9):
+        f = f_c * (1.0 + j * 2.2e-16)
+        w = (f, 0.0, -e * f)
+        lf = load_factor(disk, fr, w, g=G)
+        o = onset(disk, fr, w, g=G)
+        assert (o is None) == (lf >= 1.0), (j, lf)
+        if o is None:
+            continue
+        slipping += 1
+        assert 0.0 <= o.acceleration < 1e-9
+        got = o.twist * [1.0, 1.0, r] / np.linalg.norm(o.twist * [1.0, 1.0, r])
+        np.testing.assert_allclose(got, ref, atol=1e-6)
+    assert slipping >= 3
+
+
+def test_onset_failure_is_a_clear_error(monkeypatch):
+    import slidespin.statics as st
+
+    monkeypatch.setattr(st, "_onset_nat", lambda *args, **kwargs: None)
+    disk = ss.Body(ss.Circle(0.05), ss.UniformPressure(), 1.0)
+    with pytest.raises(OnsetNotFound, match="no slip direction found .*load factor"):
+        onset(disk, ss.FrictionTensor(0.3, 0.3), (5.0, 0.0, 0.0), g=G)
 
 
 @pytest.mark.parametrize(

@@ -24,7 +24,11 @@ Stick and slip, exactly (no regularised friction):
   of γ(t) − 1, γ the gauge of C at W_a(t) (the inverse load factor), located by Brent's
   method to ``time_tol`` after a scan of step ``scan_step``;
 * it starts in the onset direction u (A_a + A(u) = λ u, λ > 0; :func:`slidespin.statics.onset`);
-  s grows linearly, s ≈ λ (t − t₀), so the slip starts analytically at a small s;
+  s grows linearly, s ≈ λ (t − t₀), so the slip starts analytically at a small s. A ramped
+  load starts the body at the threshold, where λ = 0⁺ (computed as round-off of either
+  sign); s then grows like (t − t₀)² as λ(t) grows. Should the onset solve fail (a direction
+  always exists beyond C, so only numerically), the run ends there, at rest, with status
+  ``no_onset`` and a message, never an exception;
 * it stops when s falls to a tiny fraction of its scale (the rest of the approach is added
   in closed form, t += s/|u·X|), and then sticks if −W_a ∈ C there, or starts again at once
   in the new onset direction (a body thrown up a slope steeper than the friction angle
@@ -57,7 +61,7 @@ from ._kernel import STATUS_OK, wrench_world
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline, Load
-from .statics import StaticSupport, _load_factor_nat, _onset_from_par, _onset_nat
+from .statics import OnsetNotFound, StaticSupport, _load_factor_nat, _onset_from_par, _onset_nat
 
 __all__ = ["LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
 
@@ -92,7 +96,12 @@ class LoadedTrajectory:
         STEADY_TOL = 1e-6 of itself over the whole elapsed time).
     status : str
         ``ok``; ``max_steps`` when the step budget ran out (values as reached);
-        ``max_phases`` when more than ``max_phases`` stick–slip phases occurred.
+        ``max_phases`` when more than ``max_phases`` stick–slip phases occurred;
+        ``no_onset`` when the load left the static-friction set C but the onset solve
+        found no slip direction (a solver failure: one always exists, MODEL §11); the run
+        then ends at that time with the body at rest, and ``ending`` describes that state.
+    message : str
+        Why the run ended early (empty for ``ok``).
     energy_error : float
         |ΔKE − W_f − W_Q| [J] over the run (integration accuracy).
     gravity_work : float
@@ -123,6 +132,7 @@ class LoadedTrajectory:
     load: Load | None = field(default=None, repr=False)
     incline: Incline | None = field(default=None, repr=False)
     g: float = 9.81
+    message: str = ""
 
     @property
     def stick_intervals(self) -> list[tuple[float, float]]:
@@ -171,6 +181,7 @@ class LoadedTrajectory:
             "vx_final": f.vx, "vy_final": f.vy, "omega_final": f.omega,
             "ending": self.ending,
             "status": self.status,
+            "message": self.message,
             "phases": [[k, a, b] for k, a, b in self.phases],
             "energy_error": self.energy_error,
             "gravity_work": self.gravity_work,
@@ -301,9 +312,13 @@ class _Problem:
         return 1.0 / lam
 
     def onset(self, t, phi):
+        """Onset (u, λ, residual) at a time where :meth:`gauge` has found γ > 1.
+
+        Raises :class:`~slidespin.statics.OnsetNotFound` if the solve fails.
+        """
         b = np.array(self.b(t, phi))
         return _onset_from_par(self.body, self.par, self.friction, phi, b, self.nf,
-                               self.support(phi))
+                               self.support(phi), slipping=True, d0=self._d_last)
 
 
 def simulate_loaded(
@@ -427,6 +442,7 @@ def simulate_loaded(
     vel = np.array([s0.vx / prob.v_unit, s0.vy / prob.v_unit, k * s0.omega * prob.t_unit])
     work = np.zeros(2)
     status = "ok"
+    message = ""
     moved = False
     steps_left = int(max_steps)
 
@@ -439,6 +455,7 @@ def simulate_loaded(
         n_phase += 1
         if n_phase > max_phases:
             status = "max_phases"
+            message = f"more than max_phases = {max_phases} stick and slip phases"
             break
         speed = float(np.linalg.norm(vel))
         phase_method = "DOP853" if method == "auto" else method
@@ -455,11 +472,18 @@ def simulate_loaded(
                 if t_exit is None:
                     break
             # ---- onset: the slow start, with u slaved to the onset direction ----
-            moved = True
             t_phase0 = t
-            qs = _quasi_static(prob, t, pos, work, t_end_n, rtol, slow_speed / prob.v_unit)
-            if qs is None:  # pragma: no cover - γ > 1 but no onset direction found
-                raise RuntimeError("simulate_loaded: no onset direction found; please report")
+            try:
+                qs = _quasi_static(prob, t, pos, work, t_end_n, rtol, slow_speed / prob.v_unit)
+            except OnsetNotFound as exc:
+                # a slip direction exists whenever γ > 1 (MODEL §11), so this is a solver
+                # failure: end the run honestly, at rest where the onset was sought
+                status = "no_onset"
+                message = (f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
+                           f"set C but the body could not be started: {exc}; the run ends "
+                           "there with the body at rest")
+                break
+            moved = True
             t, pos, work, s_now, u, reason, rec = qs
             for r in rec:
                 record(r[0], r[2:5], r[1] * r[5:8], r[8:10])
@@ -509,6 +533,7 @@ def simulate_loaded(
         phases.append(["slip", t_phase0, t])
         if reason == "max_steps":
             status = "max_steps"
+            message = f"the budget of max_steps = {max_steps} integrator steps ran out"
         break
 
     arr = np.array(rows)
@@ -543,7 +568,7 @@ def simulate_loaded(
         kinetic_energy=ke, friction_work=wf, load_work=wq, phases=phases_si, ending=ending,
         status=status, energy_error=float(energy_error), gravity_work=float(grav),
         n_rhs=prob.n_rhs, body=body, friction=friction, initial_state=initial_state,
-        load=load, incline=incline, g=g,
+        load=load, incline=incline, g=g, message=message,
     )
 
 
@@ -553,12 +578,14 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
     While s is tiny the direction relaxes to u* in a time ~ s/κ, far faster than the load
     or the angle change, so u = u*(t, φ) + O(s): integrate, in t, ds/dt = λ = u*·X,
     dr/dt = s u*, and the work, until s reaches ``s_slow`` (then the full equations take
-    over), λ falls to 0 (the load has re-entered C), or t_end. Returns
-    (t, pos, work, s, u, reason, rows) with rows (t, s, x, y, φ, u, W_f, W_Q), or None.
+    over), λ falls to 0 (the load has re-entered C), s falls back to 0 (a load that only
+    grazed the boundary of C), or t_end. At the threshold λ(t0) = 0 (within round-off) and
+    grows as the load does. Returns (t, pos, work, s, u, reason, rows) with rows
+    (t, s, x, y, φ, u, W_f, W_Q).
+
+    Raises :class:`~slidespin.statics.OnsetNotFound` when no slip direction is found.
     """
     res = prob.onset(t0, pos[2])
-    if res is None:
-        return None
     cache = {"u": res[0]}
     k = prob.k
 
@@ -568,6 +595,9 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
         got = _onset_nat(acc, b, cache["u"], quick=True)
         if got is None:
             got = _onset_nat(acc, b, cache["u"], allow_negative=True)
+        if got is None:
+            raise OnsetNotFound(f"the slow start lost its slip direction at t = "
+                                f"{t * prob.t_unit:.12g} s")
         u, lam, _ = got
         cache["u"] = u
         a = np.array(acc(u))
@@ -591,12 +621,18 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
     ev_stall.terminal = True
     ev_stall.direction = -1.0
 
+    def ev_back(t, z):  # s back through 0: the load only grazed C, the body stays
+        return z[0]
+
+    ev_back.terminal = True
+    ev_back.direction = -1.0
+
     def ev_end(t, z):
         return t - t_end
 
     ev_end.terminal = True
     ev_end.direction = 1.0
-    events = [ev_fast, ev_stall] + ([] if math.isinf(t_end) else [ev_end])
+    events = [ev_fast, ev_stall, ev_back] + ([] if math.isinf(t_end) else [ev_end])
     z0 = np.array([0.0, pos[0], pos[1], pos[2], work[0], work[1]])
     t_hi = t0 + 1e6 if math.isinf(t_end) else t_end + 1.0
     sol = solve_ivp(rhs, (t0, t_hi), z0, method="DOP853", rtol=rtol, atol=1e-18,
@@ -605,7 +641,7 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
     te = sol.t[-1]
     reason = "t_end"
     if sol.status == 1:
-        for i, name in enumerate(("fast", "stall", "t_end")):
+        for i, name in enumerate(("fast", "stall", "stall", "t_end")):
             if i < len(sol.t_events) and sol.t_events[i].size:
                 reason = name
                 te = sol.t_events[i][0]

@@ -38,8 +38,12 @@ with A(u) = (Fx, Fy, M/k)/m the friction accelerations of the sliding law and
 A_a = (Qx, Qy, T/k)/m the applied ones: M⁻¹(W_a + W(u)) is a positive multiple of the twist
 (M = diag(m, m, I)). λ = ds/dt is the initial rate at which s grows. For isotropic friction
 u = (A_a − P_C(A_a))/|A_a − P_C(A_a)| (the proximal point of the support function in the mass
-metric: the solution exists and is unique exactly when −W_a ∉ C). It is not the direction of
-the load in general: a force plus a torque start a mixed motion.
+metric: the solution exists and is unique exactly when −W_a ∉ C). For any tensor a solution
+exists when −W_a ∉ C: u ↦ A_a + A(u) then never vanishes (W(u) ∈ C) and is homotopic,
+through t A_a + A(u), t ≥ 1, to a constant, so the map to its direction has degree 0 and
+Lefschetz number 1, hence a fixed point. It is not the direction of the load in general: a
+force plus a torque start a mixed motion. At the threshold (−W_a on ∂C) λ = 0 and u is the
+twist whose friction wrench is −W_a (for isotropic friction the outward normal of C at W_a).
 
 Units: wrenches in N, N, N m; directions d = (d_Fx, d_Fy, d_M) pair with wrenches as
 d·W = d_Fx Fx + d_Fy Fy + d_M M, so d_M is in 1/m. Internally natural units (a = m = g = 1).
@@ -62,6 +66,7 @@ from .loads import Incline
 
 __all__ = [
     "Onset",
+    "OnsetNotFound",
     "StaticSupport",
     "can_stick",
     "load_factor",
@@ -259,13 +264,18 @@ def load_factor(body: Body, friction: FrictionTensor, applied_wrench, phi: float
     w = _wrench3("applied_wrench", applied_wrench)
     nf = _normal(incline, 1.0)
     g = v.positive("g", g, "m/s^2")
-    load = body.mass * g * nf
-    a = body.patch.a
-    b = np.array([w[0] / load, w[1] / load, w[2] / (load * a)])
+    b = _natural_wrench(body, w, nf, g)
     if not b.any():
         return math.inf
     sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
     return _load_factor_nat(sup, b)[0]
+
+
+def _natural_wrench(body, w, nf, g):
+    """W_a per unit normal load, moment per unit a: the wrench :func:`load_factor` and
+    :func:`onset` both judge (one formula, so their verdicts agree to the last bit)."""
+    load = body.mass * g * nf
+    return np.array([w[0] / load, w[1] / load, w[2] / (load * body.patch.a)])
 
 
 def can_stick(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
@@ -331,7 +341,8 @@ class Onset:
     twist : ndarray, shape (3,)
         The same direction as (vx [m/s], vy [m/s], ω [rad/s]) per unit s [m/s].
     acceleration : float
-        λ = ds/dt at the start [m/s²] (> 0).
+        λ = ds/dt at the start [m/s²] (> 0; 0 for a load at the threshold within
+        round-off, where the rate of the start vanishes).
     residual : float
         |A_a + A(u) − λ u| in units of g, the accuracy of the solve.
     """
@@ -342,12 +353,34 @@ class Onset:
     residual: float
 
 
-def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False):
-    """Solve b + A(u) = λ u, λ > 0, for u on the unit sphere near u0 (natural units).
+#: residual |A_a + A(u) − λ u| (units of g) below which an onset direction is accepted: the
+#: kernel evaluates A to ~1e-13, so a converged root sits well below it
+_ONSET_RES_TOL = 1e-10
+#: an onset rate λ ≥ −_ONSET_LAM_TOL (1 + |A_a|) counts as λ = 0⁺ (units of g): at the threshold
+#: (γ = 1 within round-off) λ vanishes and its computed sign is decided by round-off
+_ONSET_LAM_TOL = 1e-12
+
+
+class OnsetNotFound(RuntimeError):
+    """The load exceeds static friction, but the onset solve found no slip direction.
+
+    A slip direction always exists when −W_a ∉ C (MODEL §11; a degree argument: the map
+    u ↦ A_a + A(u) never vanishes and is homotopic to a constant), so this is a failure of
+    the numerical solve, not a property of the input. :func:`slidespin.loaded.simulate_loaded`
+    ends the run with ``status = "no_onset"`` and the message instead of raising.
+    """
+
+
+def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False, lam_tol=0.0):
+    """Solve b + A(u) = λ u, λ > −``lam_tol``, for u on the unit sphere (natural units).
 
     ``acc_fun(u)`` returns the friction accelerations A(u) (scaled coordinates).
     Returns (u, λ, residual) or None. ``quick``: Newton from u0 only (u0 already close);
-    ``allow_negative``: accept λ ≤ 0 (a fixed point the body does not leave from rest).
+    ``allow_negative``: accept any λ (a fixed point the body does not leave from rest).
+    Otherwise Newton (``hybr``) is started from u0, from the direction of b, and from
+    where a short run of the sphere flow from each of them ends; the first root with a
+    residual below _ONSET_RES_TOL and an admissible λ is returned (the best one if several
+    starts are tried).
     """
 
     def residual_at(u):
@@ -380,13 +413,23 @@ def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False):
             u /= np.linalg.norm(u)
         return u
 
+    def admissible(lam):
+        return allow_negative or lam > -lam_tol
+
     if quick:
         u, lam, res = polish(u0)
-        return (u, lam, res) if (lam > 0.0 or allow_negative) and res < 1e-11 else None
+        return (u, lam, res) if admissible(lam) and res < 1e-11 else None
+    nb = float(np.linalg.norm(b))
+    starts = [lambda: u0, lambda: flow(u0, 20.0)]
+    if nb > 0.0:
+        starts += [lambda: b / nb, lambda: flow(b / nb, 20.0)]
     best = None
-    for uc in (u0, None):
-        u, lam, res = polish(flow(u0, 20.0) if uc is None else uc)
-        if (lam > 0.0 or allow_negative) and (best is None or res < best[2]):
+    for start in starts:
+        u_start = start()
+        if not np.all(np.isfinite(u_start)):  # pragma: no cover - guard
+            continue
+        u, lam, res = polish(u_start)
+        if admissible(lam) and res < _ONSET_RES_TOL and (best is None or res < best[2]):
             best = (u, lam, res)
         if best is not None and best[2] < 1e-12:
             break
@@ -414,13 +457,21 @@ def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0
     Onset or None
         ``None`` when static friction holds the body (:func:`can_stick` is true).
 
+    Raises
+    ------
+    OnsetNotFound
+        The load is beyond static friction but the solve found no direction (a numerical
+        failure: a direction always exists, MODEL §11).
+
     Notes
     -----
     Solves A_a + A(u) = λ u with λ > 0 on the unit sphere of scaled twists, starting from
     the outward normal of C found by :func:`load_factor` (exact for isotropic friction at
-    the threshold) and, if that fails, from a short run of the sphere flow
-    du/dτ = A_a + A − ((A_a + A)·u) u, of which the onset direction is an attracting fixed
-    point for isotropic friction (the tangent eigenvalues are −λ − the curvatures of h).
+    the threshold) and, if that fails, from the direction of A_a and from short runs of
+    the sphere flow du/dτ = A_a + A − ((A_a + A)·u) u, of which the onset direction is an
+    attracting fixed point for isotropic friction (the tangent eigenvalues are −λ − the
+    curvatures of h). At the threshold λ → 0⁺: a root whose λ is negative only by
+    round-off (≥ −1e-12 (1 + |A_a|) g) is that limit, reported with λ = 0.
 
     Examples
     --------
@@ -436,10 +487,15 @@ def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0
     g = v.positive("g", g, "m/s^2")
     phi = v.finite("phi", phi)
     par = body.kernel_params(friction, _TOL)
-    res = _onset_from_par(body, par, friction, phi, _scaled_b(body, w, nf, g), nf)
-    if res is None:
+    wn = _natural_wrench(body, w, nf, g)
+    if not wn.any():
         return None
-    u, lam, resid = res
+    sup = StaticSupport(par, friction, phi)
+    lam_star, d = _load_factor_nat(sup, wn)
+    if lam_star >= 1.0:  # the verdict of load_factor and can_stick, bit for bit
+        return None
+    u, lam, resid = _onset_from_par(body, par, friction, phi, _scaled_b(body, w, nf, g), nf,
+                                    sup, slipping=True, d0=d)
     k = body.radius_of_gyration
     return Onset(u, np.array([u[0], u[1], u[2] / k]), lam * g, resid)
 
@@ -460,10 +516,25 @@ def _friction_acc(par, phi, nf):
     return acc
 
 
-def _onset_from_par(body, par, friction, phi, b, nf, sup=None):
+def _onset_from_par(body, par, friction, phi, b, nf, sup=None, *, slipping=False, d0=None):
     """(u, λ, residual) of the onset for scaled applied accelerations b, or None if stuck.
 
     ``b`` is in scaled natural coordinates (Qx, Qy, T/k)/(m g); ``nf`` = cos α.
+    ``slipping``: the caller has already found the gauge γ > 1 (the load is beyond C), so
+    the load factor is computed here only for the starting direction (its outward normal
+    of C) and a second, round-off-level verdict at the threshold cannot contradict the
+    first; ``d0`` warm-starts that computation.
+
+    At the threshold (γ = 1 within round-off) the onset rate λ vanishes and its computed
+    value may be a round-off negative: a root with λ ≥ −_ONSET_LAM_TOL (1 + |b|) is the
+    onset with λ = 0⁺ (the body starts from rest with zero initial rate; the slow start
+    then follows λ(t) as the load grows), and λ is reported as max(λ, 0).
+
+    Raises
+    ------
+    OnsetNotFound
+        The load is beyond C but no root was found (a solver failure; never for a load
+        that static friction holds).
     """
     if not b.any():
         return None
@@ -472,9 +543,18 @@ def _onset_from_par(body, par, friction, phi, b, nf, sup=None):
         sup = StaticSupport(par, friction, phi)
     # wrench per unit normal load, natural units: (Qx, Qy, T)/(m g cos α)
     bw = np.array([b[0], b[1], b[2] * k]) / nf
-    lam_star, d = _load_factor_nat(sup, bw)
-    if lam_star >= 1.0:
+    lam_star, d = _load_factor_nat(sup, bw, d0)
+    if lam_star >= 1.0 and not slipping:
         return None
     u0 = np.array([d[0], d[1], k * d[2]])
     u0 /= np.linalg.norm(u0)
-    return _onset_nat(_friction_acc(par, phi, nf), b, u0)
+    lam_tol = _ONSET_LAM_TOL * (1.0 + float(np.linalg.norm(b)))
+    got = _onset_nat(_friction_acc(par, phi, nf), b, u0, lam_tol=lam_tol)
+    if got is None:
+        raise OnsetNotFound(
+            f"no slip direction found for the applied wrench (load factor {lam_star:.12g} "
+            f"< 1, body angle {phi:.6g} rad): the onset solve A_a + A(u) = λ u, λ > 0, did "
+            "not converge from any of its starts"
+        )
+    u, lam, res = got
+    return u, max(lam, 0.0), res
