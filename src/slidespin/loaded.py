@@ -20,9 +20,10 @@ speeds up). The stop (s → 0 with u·X < 0) is an exponential approach in τ as
 Stick and slip, exactly (no regularised friction):
 
 * at rest, the body stays while −W_a(t) lies in the static-friction set C
-  (:mod:`slidespin.statics`); for a time-varying load the moment W_a leaves C is the root
-  of γ(t) − 1, γ the gauge of C at W_a(t) (the inverse load factor), located by Brent's
-  method to ``time_tol`` after a scan of step ``scan_step``;
+  (:mod:`slidespin.statics`), to within GAUGE_TOL = 1e-12 (relative) of its boundary; for
+  a time-varying load the moment W_a leaves C is the root of γ(t) − 1 − GAUGE_TOL, γ the
+  gauge of C at W_a(t) (the inverse load factor), located by Brent's method to
+  ``time_tol`` after a scan of step ``scan_step``;
 * it starts in the onset direction u (A_a + A(u) = λ u, λ > 0; :func:`slidespin.statics.onset`);
   s grows linearly, s ≈ λ (t − t₀), so the slip starts analytically at a small s. A ramped
   load starts the body at the threshold, where λ = 0⁺ (computed as round-off of either
@@ -63,7 +64,7 @@ from .friction import FrictionTensor
 from .loads import Incline, Load
 from .statics import OnsetNotFound, StaticSupport, _load_factor_nat, _onset_from_par, _onset_nat
 
-__all__ = ["LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
+__all__ = ["GAUGE_TOL", "LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
 
 #: how a loaded motion ends (:attr:`LoadedTrajectory.ending`)
 LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
@@ -71,6 +72,12 @@ _TOL = 1e-13
 _STOP_DROP = 1e-13  # the stop is declared when s has fallen below this fraction of its scale
 STEADY_TOL = 1e-6  # relative change of the speed that would take the elapsed time: steady
 _STIFF = 100.0  # relaxation-to-growth ratio above which a slip phase is integrated by Radau
+#: a body at rest is held while the gauge γ = 1/λ* ≤ 1 + GAUGE_TOL. Within 1e-12 of the
+#: threshold the onset rate λ (∝ γ − 1) is below the round-off of the friction kernel, its
+#: sign is noise, and the motion such a load could produce is nil; the margin keeps the
+#: decision to slip and the onset it leads to consistent (a load held exactly at the
+#: threshold would otherwise start, stall and start again at the same instant)
+GAUGE_TOL = 1e-12
 
 
 @dataclass(frozen=True)
@@ -426,7 +433,7 @@ def simulate_loaded(
         if isinstance(val, bool) or not isinstance(val, (int, np.integer)) or val < 1:
             raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 1")
 
-    if math.isinf(t_end_n) and prob.gauge(0.0, initial_state.phi) > 1.0:
+    if math.isinf(t_end_n) and prob.gauge(0.0, initial_state.phi) > 1.0 + GAUGE_TOL:
         raise ValueError(
             "t_end = None is invalid here: the load exceeds what static friction can hold "
             f"(load factor {1.0 / prob.gauge(0.0, initial_state.phi):.6g} < 1), so the body "
@@ -461,7 +468,7 @@ def simulate_loaded(
         phase_method = "DOP853" if method == "auto" else method
         if speed == 0.0:
             # ---- at rest: does static friction hold? ----
-            if prob.gauge(t, pos[2]) <= 1.0:
+            if prob.gauge(t, pos[2]) <= 1.0 + GAUGE_TOL:
                 t_exit = _stick_exit(prob, t, pos[2], t_end_n, scan, t_tol)
                 t_stop_stick = t_end_n if t_exit is None else t_exit
                 if math.isinf(t_stop_stick):  # no t_end: the run ends when the body sticks
@@ -482,6 +489,14 @@ def simulate_loaded(
                 message = (f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
                            f"set C but the body could not be started: {exc}; the run ends "
                            "there with the body at rest")
+                break
+            if qs[5] == "stall" and qs[3] <= 0.0 and qs[0] <= t:
+                # the start stalled at once: λ ≤ 0 beyond C, not a Coulomb onset (never seen
+                # for isotropic friction, where λ ∝ γ − 1 > 0); end rather than loop here
+                status = "no_onset"
+                message = (f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
+                           "set C but the onset rate was not positive, so the body did not "
+                           "start; the run ends there with the body at rest")
                 break
             moved = True
             t, pos, work, s_now, u, reason, rec = qs
@@ -661,12 +676,21 @@ def _friction_fun(prob, phi):
 
 
 def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
-    """First time after t0 at which the gauge γ(t) exceeds 1, or None (stays stuck)."""
+    """First time after t0 at which the gauge γ(t) exceeds 1 + GAUGE_TOL, or None (stays
+    stuck)."""
     if prob.constant or math.isinf(t_end):
         return None
     h = scan if scan is not None else (t_end - t0) / 400.0
+    memo = {}
+
     def f(tt):
-        return prob.gauge(tt, phi) - 1.0
+        # γ carries round-off that depends on the minimiser's warm start; a load held at the
+        # threshold would then change sign between the scan and Brent's own evaluation of
+        # the same end point ("f(a) and f(b) must have different signs"): one value per time
+        if tt not in memo:
+            memo[tt] = prob.gauge(tt, phi) - (1.0 + GAUGE_TOL)
+        return memo[tt]
+
     ta, fa = t0, f(t0)
     while ta < t_end:
         tb = min(ta + h, t_end)
