@@ -387,3 +387,25 @@ def test_a_profile_that_reaches_the_threshold_at_a_kink_or_stays_on_it():
         tr = simulate_loaded(disk(), fr, ss.State(), load=hold, t_end=3.0, g=G)
         assert tr.status == "ok" and tr.ending == "at_rest_throughout"
         assert tr.phases == (("stick", 0.0, 3.0),)
+
+
+def test_an_integrator_that_gives_up_ends_the_run_with_a_status(monkeypatch):
+    """An integrator failure (forced here) ends the run with status "step_too_small", the
+    values as reached and the integrator's message, in the slow start and in a slip."""
+    import slidespin.loaded as lo
+
+    real = lo.solve_ivp
+
+    def failing(*args, **kwargs):
+        sol = real(*args, **kwargs)
+        sol.status, sol.message = -1, "forced failure"
+        return sol
+
+    monkeypatch.setattr(lo, "solve_ivp", failing)
+    fr = ss.FrictionTensor(0.3, 0.3)
+    for state, load, where in [(ss.State(vx=1.2), None, "slip integrator"),
+                               (ss.State(), _off_centre_pushes()[0], "slow start")]:
+        tr = simulate_loaded(disk(), fr, state, load=load, t_end=3.0, g=G)
+        assert tr.status == "step_too_small"
+        assert where in tr.message and "forced failure" in tr.message
+        assert tr.phases[-1][0] == "slip" and tr.phases[-1][2] == pytest.approx(tr.t[-1])

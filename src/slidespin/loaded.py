@@ -106,7 +106,8 @@ class LoadedTrajectory:
         ``max_phases`` when more than ``max_phases`` stick–slip phases occurred;
         ``no_onset`` when the load left the static-friction set C but the onset solve
         found no slip direction (a solver failure: one always exists, MODEL §11); the run
-        then ends at that time with the body at rest, and ``ending`` describes that state.
+        then ends at that time with the body at rest, and ``ending`` describes that state;
+        ``step_too_small`` when the integrator gave up (values as reached).
     message : str
         Why the run ended early (empty for ``ok``).
     energy_error : float
@@ -240,6 +241,7 @@ class _Problem:
                       p[_ode.P_BODY] != 0.0)
         self.constant = load is None or load.is_constant
         self.n_rhs = 0
+        self.failure = ""
         self._support = {}
         self._d_last = None
 
@@ -502,6 +504,13 @@ def simulate_loaded(
             t, pos, work, s_now, u, reason, rec = qs
             for r in rec:
                 record(r[0], r[2:5], r[1] * r[5:8], r[8:10])
+            if reason == "failed":
+                vel = s_now * u
+                phases.append(["slip", t_phase0, t])
+                status = "step_too_small"
+                message = (f"the integrator of the slow start gave up at t = "
+                           f"{t * prob.t_unit:.12g} s: {prob.failure}; values as reached")
+                break
             if reason == "t_end" or s_now <= 0.0:
                 vel = s_now * u
                 phases.append(["slip", t_phase0, t])
@@ -549,6 +558,10 @@ def simulate_loaded(
         if reason == "max_steps":
             status = "max_steps"
             message = f"the budget of max_steps = {max_steps} integrator steps ran out"
+        elif reason == "failed":
+            status = "step_too_small"
+            message = (f"the slip integrator gave up at t = {t * prob.t_unit:.12g} s: "
+                       f"{prob.failure}; values as reached")
         break
 
     arr = np.array(rows)
@@ -576,7 +589,7 @@ def simulate_loaded(
         gx, gy = incline.gravity_force(body.mass, g)
         grav = gx * dx + gy * dy
     energy_error = abs((ke[-1] - ke[0]) - (wf[-1] - wf[0]) - (wq[-1] - wq[0]))
-    phases_si = tuple((kind, t0 * tu, t1 * tu) for kind, t0, t1 in phases)
+    phases_si = tuple((kind, float(t0 * tu), float(t1 * tu)) for kind, t0, t1 in phases)
     return LoadedTrajectory(
         t=arr[:, 0] * tu, x=arr[:, 1] * a, y=arr[:, 2] * a, phi=arr[:, 3].copy(),
         vx=arr[:, 4] * vu, vy=arr[:, 5] * vu, omega=arr[:, 6] / k / tu,
@@ -655,6 +668,9 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
     z = sol.y[:, -1]
     te = sol.t[-1]
     reason = "t_end"
+    if sol.status == -1:  # the integrator gave up: the values as reached, and why
+        reason = "failed"
+        prob.failure = str(sol.message)
     if sol.status == 1:
         for i, name in enumerate(("fast", "stall", "stall", "t_end")):
             if i < len(sol.t_events) and sol.t_events[i].size:
@@ -712,7 +728,8 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
 def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=None):
     """Integrate one slip phase in τ; returns (y_end, recorded rows, steps, reason).
 
-    ``reason``: ``stop``, ``t_end``, ``max_steps`` or ``switch`` (ln s reached ``ln_switch``).
+    ``reason``: ``stop``, ``t_end``, ``max_steps``, ``switch`` (ln s reached ``ln_switch``)
+    or ``failed`` (the integrator gave up; its message in ``prob.failure``).
     """
 
     def ev_stop(tau, y):
@@ -749,10 +766,12 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
         extra = {"jac": prob.jac} if implicit else {}
         sol = solve_ivp(prob.rhs, (tau0, tau0 + chunk), y, method=method, rtol=rtol, atol=atol,
                         events=events, max_step=h_max, **extra)
-        if sol.status == -1:  # pragma: no cover - integrator failure
-            raise RuntimeError(f"simulate_loaded: {sol.message}")
         steps += sol.t.size - 1
         y = sol.y[:, -1].copy()
+        if sol.status == -1:  # the integrator gave up: the values as reached, and why
+            rec.extend(sol.y[:, 1:].T)
+            prob.failure = str(sol.message)
+            return y, rec, steps, "failed"
         if sol.status == 1:
             rec.extend(sol.y[:, 1:-1].T)
             if sol.t_events[0].size:
