@@ -241,10 +241,10 @@ def test_rectangle_disk_annulus(data, kind):
 def test_pads(data):
     size = data.draw(SIZE, label="size")
     k = data.draw(st.integers(0, 4), label="k")
-    spacing = data.draw(st.sampled_from([3.0, 3.0, 1.0, 0.0]), label="spacing")  # 1, 0: overlap
+    spacing = data.draw(st.sampled_from([3.0, 3.0, 3.0, 1.0, 0.0]), label="spacing")  # 1, 0: overlap
     items = []
     for i in range(k):
-        if data.draw(st.integers(0, 6), label="junk pad") == 6:
+        if data.draw(st.integers(0, 9), label="junk pad") == 9:
             items.append(data.draw(st.one_of(numbers, st.just(ss.Circle(0.1))), label="pad"))
         else:
             items.append(data.draw(simple_patches((spacing * size * i, 0.0), size), label="pad"))
@@ -540,14 +540,20 @@ def test_critical_tilt(data):
 # ------------------------------------------------------------------------------------------
 # simulate with loads, inclines, t_end (the stick–slip engine)
 # ------------------------------------------------------------------------------------------
-@budget(3)
+@budget(2)
 @given(data=st.data())
 def test_simulate_loaded(data):
     args = Args(data, "body", "friction", "initial_state", "load", "incline", "t_end", "g",
                 "max_steps")
     body = args("body", bodies(), body_junk)
     friction = args("friction", frictions)
-    state = args("initial_state", states)
+    a = body.length_unit if isinstance(body, ss.Body) else 1.0
+    unit = st.one_of(st.just(0.0), st.floats(-10.0, 10.0))
+    state = args("initial_state", st.builds(
+        lambda x, y, phi, vx, vy, w: ss.State(x * a, y * a, phi, vx * math.sqrt(9.81 * a),
+                                              vy * math.sqrt(9.81 * a), w * math.sqrt(9.81 / a)),
+        st.floats(-1e3, 1e3), st.floats(-1e3, 1e3), st.floats(-10.0, 10.0), unit, unit, unit),
+        st.one_of(numbers, states))  # states: the whole range of State (fast ones skipped)
     scale = body.mass * 9.81 if isinstance(body, ss.Body) else 1.0
     load = args("load", st.one_of(
         st.none(),
@@ -555,7 +561,9 @@ def test_simulate_loaded(data):
             lambda f: (f[0] * scale, f[1] * scale))),
         st.just(ss.Load(force=lambda t: (scale * min(t, 1.0), 0.0)))))
     incline = args("incline", incline_values)
-    t_end = args("t_end", st.one_of(st.none(), log_uniform(1e-6, 0.2)))
+    t_end = args("t_end", st.one_of(log_uniform(1e-6, 0.2), st.none())
+                 if not isinstance(load, ss.Load) or load.is_constant
+                 else log_uniform(1e-6, 0.2))
     g = args("g", G)
     max_steps = args("max_steps", st.integers(1, 200))
     if _real(max_steps) and 200 < max_steps:
@@ -563,6 +571,11 @@ def test_simulate_loaded(data):
     if load is None and incline is None and t_end is None:
         t_end = 0.01  # the loaded engine, not the plain one (test_fuzz.py)
     known(outside(g, 1e-6, math.inf), "g below 1e-6 (test_known_loaded_tiny_g)")
+    if isinstance(body, ss.Body) and isinstance(state, ss.State) and _real(g) and 0 < g < 1e300:
+        a = body.length_unit
+        fast = max(abs(state.vx), abs(state.vy)) / math.sqrt(a * g) + abs(state.omega) * \
+            math.sqrt(a / g)
+        known(fast > 1e3, "fast start, in natural units > 1e3 (test_known_loaded_slow)")
     names = ("body", "friction", "initial_state", "load", "incline", "t_end", "g =", "g must",
              "max_steps")
     tr = call(ss.simulate, names, body, friction, state, g=g, max_steps=max_steps, load=load,
@@ -637,16 +650,15 @@ def test_read_runs(data, tmp_path_factory):
         st.lists(st.sampled_from(["t", "x", "y", "phi", "run", "T", "z", ""]), max_size=5)),
         label="header")
     nrows = data.draw(st.integers(0, 5), label="rows")
-    rows = []
-    for i in range(nrows):
-        good = [str(0.1 * i) if c == "t" else ("a" if c == "run" else str(0.01 * i))
-                for c in cols]
-        if data.draw(st.integers(0, 3), label="spoil") == 3:
-            k = data.draw(st.integers(0, max(len(good), 1)), label="cell")
-            good = good[:k] + [data.draw(CELLS, label="value")] + good[k + 1:]
-        rows.append(good)
+    rows = [[str(0.1 * i) if c == "t" else ("a" if c == "run" else str(0.01 * i))
+             for c in cols] for i in range(nrows)]
+    if rows and data.draw(st.booleans(), label="spoil a cell"):
+        i = data.draw(st.integers(0, nrows - 1), label="row")
+        k = data.draw(st.integers(0, len(cols)), label="column")
+        rows[i] = rows[i][:k] + [data.draw(CELLS, label="value")] + rows[i][k + 1:]
     text = "\n".join(",".join(r) for r in [cols] + rows) + "\n"
-    raw = data.draw(st.one_of(st.none(), st.binary(max_size=20)), label="raw bytes")
+    raw = data.draw(st.binary(max_size=20), label="raw bytes") if data.draw(
+        st.integers(0, 5), label="bytes") == 5 else None
     path = tmp_path_factory.mktemp("runs") / "runs.csv"
     if raw is None:
         path.write_text(text, encoding="utf-8")
@@ -909,6 +921,17 @@ def test_known_loaded_tiny_g():
 def test_known_onset_hang():
     clean(ss.onset, ("applied_wrench",), ss.Body(ss.Circle(1.0), ss.UniformPressure(), 1.0, 1e-8),
           ss.FrictionTensor(1e-6, 0.3, 3.2), (49.05, 0.0, -20.0), soft=5)
+
+
+@xfail("simulate(Body(Ellipse(1.0, 30.0), BoussinesqPressure(), 1.0, 1.1), FrictionTensor(5.0, "
+       "1e-6, frame='body'), State(vy=-1e8, omega=1e12), t_end=100.0, max_steps=170) gives no "
+       "answer in 8 s (more than 20 s seen; found by test_simulate_loaded): max_steps does not "
+       "bound the stick-slip engine's time (the same start without t_end takes 0.3 s)")
+def test_known_loaded_slow():
+    clean(ss.simulate, ("initial_state", "max_steps"),
+          ss.Body(ss.Ellipse(1.0, 30.0), ss.BoussinesqPressure(), 1.0, 1.1),
+          ss.FrictionTensor(5.0, 1e-6, frame="body"), ss.State(vy=-1e8, omega=1e12),
+          t_end=100.0, max_steps=170, soft=8)
 
 
 @xfail("limit_surface(B, F, n=10, length=1e-300) raises ValueError 'SVD did not converge in "
