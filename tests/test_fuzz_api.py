@@ -115,6 +115,25 @@ def outside(x, lo, hi):
     return _real(x) and math.isfinite(float(x)) and 0.0 < float(x) and not lo <= float(x) <= hi
 
 
+def far_centre(centre, size):
+    """The placement moves the footprint more than 1e5 of its size (its digits are lost)."""
+    return size > 0.0 and any(m > 1e5 * size for m in _magnitudes(centre))
+
+
+def anisotropic(friction, body=None):
+    """fx/fy or fy/fx, times the patch's a/b or b/a, beyond 1e4 (the static-friction
+    quadrature misses its target)."""
+    if not isinstance(friction, ss.FrictionTensor):
+        return False
+    ratio = max(friction.fx, friction.fy) / min(friction.fx, friction.fy)
+    if isinstance(body, ss.Body) and isinstance(body.patch, ss.Ellipse):
+        ratio *= max(body.patch.a / body.patch.b, body.patch.b / body.patch.a)
+    return ratio > 1e4
+
+
+STATICS_ANISOTROPY = "fx/fy beyond 1e4 (test_known_statics_anisotropy)"
+
+
 @pytest.fixture(scope="module", autouse=True)
 def warm_up():
     """Load (or compile) the kernels once, outside the time limits."""
@@ -202,6 +221,8 @@ def test_polygon(data):
     centre = args("centre", centres(size), junk_pairs)
     angle = args("angle", ANGLE)
     known(off_scale(vertices, centre), SCALE_BUG)
+    known(far_centre(centre, max(_magnitudes(vertices), default=0.0)),
+          "polygon placed beyond 1e5 of its size (test_known_footprint_far_centre)")
     p = call(ss.Polygon, ("vertices", "centre", "angle"), vertices, centre, angle)
     if p is not None:
         check_footprint(p)
@@ -228,6 +249,11 @@ def test_rectangle_disk_annulus(data, kind):
     centre = args("centre", centres(size), junk_pairs)
     angle = args("angle", ANGLE)
     known(off_scale(dims, centre), SCALE_BUG)
+    known(far_centre(centre, max(_magnitudes(dims), default=0.0)),
+          "footprint placed beyond 1e5 of its size (test_known_footprint_far_centre)")
+    if kind == "rectangle" and all(_real(x) and 0 < x < math.inf for x in dims):
+        known(max(dims) > 1e6 * min(dims),
+              "rectangle aspect beyond 1e6 (test_known_rectangle_aspect)")
     cls = {"rectangle": ss.Rectangle, "disk": ss.Disk, "annulus": ss.Annulus}[kind]
     p = call(cls, names, *dims, centre, angle)
     if p is not None:
@@ -476,6 +502,7 @@ def static_args(data, onset=False):
     phi = args("phi", st.floats(-10.0, 10.0))
     g = args("g", G)
     incline = args("incline", incline_values)
+    known(anisotropic(friction, body), STATICS_ANISOTROPY)
     known(outside(g, 1e-6, 1e6), "g outside [1e-6, 1e6] (test_known_statics_scale)")
     if isinstance(body, ss.Body) and _real(g) and 0 < float(g) < math.inf:
         mg = body.mass * float(g) * max(body.length_unit, 1.0)
@@ -532,6 +559,7 @@ def test_critical_tilt(data):
     friction = args("friction", frictions)
     downhill = args("downhill", ANGLE)
     phi = args("phi", st.floats(-10.0, 10.0))
+    known(anisotropic(friction, body), STATICS_ANISOTROPY)
     a = call(ss.critical_tilt, STATIC_NAMES, body, friction, downhill, phi)
     if a is not None:
         assert math.isfinite(a) and 0.0 < a < math.pi / 2.0, a
@@ -571,6 +599,7 @@ def test_simulate_loaded(data):
     if load is None and incline is None and t_end is None:
         t_end = 0.01  # the loaded engine, not the plain one (test_fuzz.py)
     known(outside(g, 1e-6, math.inf), "g below 1e-6 (test_known_loaded_tiny_g)")
+    known(anisotropic(friction, body), STATICS_ANISOTROPY)
     if isinstance(body, ss.Body) and isinstance(state, ss.State) and _real(g) and 0 < g < 1e300:
         a = body.length_unit
         fast = max(abs(state.vx), abs(state.vy)) / math.sqrt(a * g) + abs(state.omega) * \
@@ -609,6 +638,7 @@ def test_limit_surface(data):
     length = args("length", st.one_of(st.none(), log_uniform(1e-3, 1e3).map(lambda x: x * k)))
     incline = args("incline", incline_values)
     quartic = args("quartic_directions", st.integers(6, 20), COUNT_JUNK)
+    known(anisotropic(friction, body), STATICS_ANISOTROPY)
     known(_real(n) and n >= 2**62, "n >= 2**62 (test_known_limit_surface_huge_n)")
     known(_real(quartic) and quartic >= 2**62,
           "quartic_directions >= 2**62 (test_known_limit_surface_huge_n)")
@@ -711,6 +741,7 @@ def test_fit(data, tiny_run):
     sigma = args("sigma", st.one_of(st.none(), st.just({"x": 1e-4})),
                  st.one_of(numbers, st.sampled_from([{"q": 1.0}, {"x": -1.0}, {"x": "a"}])))
     max_nfev = args("max_nfev", st.just(2), st.sampled_from([0, -1, 2.5, True, "3", 2**70]))
+    known(outside(fd_step, 1e-10, math.inf), "fd_step below 1e-10 (test_known_fit_fd_step)")
     names = ("data", "body", "friction", "free", "loss", "g =", "g must", "rtol", "fd_step",
              "sigma", "max_nfev", "column", "run")
     with warnings.catch_warnings():
@@ -836,6 +867,67 @@ def test_known_footprint_scale_body_tiny():
                  ss.UniformPressure(), 1.0)
     if body is not None:
         assert body.moment_of_inertia > 0.0 and 1e-8 <= body.inertia_ratio <= 1e8
+
+
+@xfail("Polygon([(3e-10, 0), (0, 3e-10), (-3e-10, 0)], centre=(0.0, 8388609.0)).area raises "
+       "ZeroDivisionError (found by test_polygon): the placed vertices collapse to round-off "
+       "of the centre (simplicity and area are checked before placement)")
+def test_known_footprint_far_centre():
+    p = clean(ss.Polygon, ("vertices", "centre"), [(3e-10, 0.0), (0.0, 3e-10), (-3e-10, 0.0)],
+              (0.0, 8388609.0))
+    if p is not None:
+        clean(lambda: p.area, ("vertices", "centre"))
+
+
+@xfail("Rectangle(1e8, 1e-9, angle=1.0).area raises ZeroDivisionError (found by "
+       "test_rectangle_disk_annulus): the shoelace area of an aspect-1e17 rectangle cancels "
+       "to 0; no aspect bound")
+def test_known_rectangle_aspect():
+    r = clean(ss.Rectangle, ("length", "width"), 1e8, 1e-9, (0.0, 0.0), 1.0)
+    if r is not None:
+        clean(lambda: r.area, ("length", "width"))
+
+
+@xfail("Rectangle(1e-9, 1e5) is accepted, but its triangles() (and as_polygon()) raise "
+       "ValueError 'vertices: edges 1 and 3 of the polygon intersect' about vertices the "
+       "user never gave: Polygon's tolerances refuse the rectangle's own corners")
+def test_known_rectangle_aspect_triangles():
+    r = clean(ss.Rectangle, ("length", "width"), 1e-9, 1e5)
+    if r is not None:
+        clean(r.triangles, ("length", "width"))
+
+
+@xfail("load_factor(B, FrictionTensor(1e-6, 5.0), (9.81, 0.0, 0.4905)) and onset(...) raise "
+       "RuntimeError 'statics: the wrench quadrature missed its error target' (found by "
+       "test_load_factor_and_can_stick): the static-friction support function fails for "
+       "fx/fy beyond ~1e4, inside FrictionTensor's range")
+def test_known_statics_anisotropy():
+    clean(ss.load_factor, ("friction",), B, ss.FrictionTensor(1e-6, 5.0), (9.81, 0.0, 0.4905))
+
+
+@xfail("limit_surface(B, FrictionTensor(5e-5, 5.0), n=30) raises RuntimeError 'statics: the "
+       "wrench quadrature missed its error target' (found by test_limit_surface; 5e-4 works)")
+def test_known_statics_anisotropy_limit_surface():
+    clean(ss.limit_surface, ("friction",), B, ss.FrictionTensor(5e-5, 5.0), 30)
+
+
+@xfail("limit_surface(Body(Ellipse(1.0, 1e-3), UniformPressure(), 1.0), FrictionTensor(1e-6, "
+       "0.01), n=10) raises the same RuntimeError (found by test_limit_surface): fx/fy = 1e-4 "
+       "with b/a = 1e-3 (FrictionTensor(0.01, 1e-6) works)")
+def test_known_statics_anisotropy_aspect():
+    clean(ss.limit_surface, ("friction", "body"),
+          ss.Body(ss.Ellipse(1.0, 1e-3), ss.UniformPressure(), 1.0),
+          ss.FrictionTensor(1e-6, 0.01), 10)
+
+
+@xfail("fit(run, body, friction, ('fx', 'fy'), fd_step=5e-324) raises ValueError 'array must "
+       "not contain infs or NaNs' (scipy), naming no parameter: fd_step is checked only in "
+       "(0, 0.1] (found by test_fit)")
+def test_known_fit_fd_step(tiny_run):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        clean(ssfit.fit, ("fd_step",), tiny_run, _FIT_BODY, _FIT_FRICTION, ("fx", "fy"),
+              fd_step=5e-324, max_nfev=2)
 
 
 @xfail("PressureMap.from_grid('abc', [0, 1, 2, 3], ones) raises ValueError \"could not "
