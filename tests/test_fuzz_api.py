@@ -30,13 +30,17 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, event, given, reject, settings
 from hypothesis import strategies as st
+
+import slidespin as ss
+import test_fuzz
+from slidespin import fit as ssfit
+from slidespin.animate import animate
 from test_fuzz import (
     EXAMPLES,
     FINITE,
     FUZZ,
     Hang,
     bodies,
-    call,
     finite_everywhere,
     frictions,
     log_uniform,
@@ -45,11 +49,17 @@ from test_fuzz import (
     time_limit,
 )
 
-import slidespin as ss
-from slidespin import fit as ssfit
-from slidespin.animate import animate
-
 API = settings(FUZZ, suppress_health_check=list(HealthCheck))
+
+
+def call(fn, names, *args, **kwargs):
+    """test_fuzz.call, with the arguments in the message of a hang (Hypothesis does not
+    report the example of a BaseException)."""
+    try:
+        return test_fuzz.call(fn, names, *args, **kwargs)
+    except Hang as err:
+        raise Hang(f"{err}: {getattr(fn, '__qualname__', fn)}(*{args!r}, **{kwargs!r})"[:4000]) \
+            from None
 
 
 def budget(divisor):
@@ -806,16 +816,12 @@ def clean(fn, names, *args, allowed=(), soft=20, **kwargs):
     whose floats are all finite (``allowed``: documented non-finite attributes)."""
     try:
         with time_limit(soft=soft):
-            pass
-        out = None
-        try:
-            with time_limit(soft=soft):
-                out = fn(*args, **kwargs)
-        except ValueError as err:
-            msg = str(err)
-            assert any(n in msg for n in names), (names, msg)
-            assert "\n" not in msg, msg
-            return
+            out = fn(*args, **kwargs)
+    except ValueError as err:
+        msg = str(err)
+        assert any(n in msg for n in names), (names, msg)
+        assert "\n" not in msg, msg
+        return None
     except Hang as err:  # a BaseException: turn it into a plain failure for xfail
         pytest.fail(f"hang: {err}")
     finite_everywhere(out, allowed)
