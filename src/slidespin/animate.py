@@ -208,6 +208,9 @@ def animate(
     """
     from .cli import check_output_path
 
+    if not isinstance(path, (str, os.PathLike)):
+        raise ValueError(f"path = {path!r} ({type(path).__name__}) is invalid; valid values: "
+                         "a str or os.PathLike file path ending in .gif")
     path = os.fspath(path)
     if not isinstance(path, str) or not path.lower().endswith(".gif"):
         raise ValueError(f"path = {path!r} is invalid; valid values: a file path ending in .gif")

@@ -55,8 +55,11 @@ are reported as not identifiable, with an infinite standard error, and an
 from __future__ import annotations
 
 import csv
+import io
 import math
 import numbers
+import os
+import stat
 import time
 import warnings
 from collections.abc import Mapping
@@ -72,6 +75,9 @@ from .pressure import LinearPressure
 __all__ = [
     "CHANNELS",
     "LOSSES",
+    "MAX_DATA_BYTES",
+    "MAX_FD_STEP",
+    "MIN_FD_STEP",
     "PARAMETERS",
     "FitResult",
     "FitWarning",
@@ -102,6 +108,11 @@ WEIGHT_TOL = 0.1
 TR_SOLVER = "exact"
 #: step budget of a simulation inside a fit before its end speed is checked
 QUICK_STEPS = 4000
+#: largest data file :func:`read_runs` reads [bytes]
+MAX_DATA_BYTES = 100_000_000
+#: valid range of the relative central-difference step ``fd_step`` of :func:`fit`
+MIN_FD_STEP = 1e-8
+MAX_FD_STEP = 0.1
 
 
 class FitWarning(UserWarning):
@@ -209,12 +220,61 @@ def as_runs(data) -> list[dict]:
     )
 
 
+def _read_regular_file(path, what: str, kind: str, max_bytes: int) -> bytes:
+    """The bytes of the regular file ``path`` (at most ``max_bytes``), or a one-line
+    ``ValueError`` naming ``what`` and the path.
+
+    A FIFO, socket or device is refused without reading (opened non-blocking, so a FIFO
+    with no writer does not wait); a larger file is refused.
+    """
+    name = os.fsdecode(os.fspath(path))
+    try:
+        # O_NONBLOCK: opening a FIFO must not wait for a writer
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
+    except FileNotFoundError:
+        raise ValueError(f"{what} {name!r} does not exist") from None
+    except IsADirectoryError:
+        raise ValueError(f"{what} {name!r} is a directory, not a {kind} file") from None
+    except (OSError, ValueError) as exc:  # ValueError: an embedded NUL
+        msg = getattr(exc, "strerror", None) or str(exc)
+        raise ValueError(f"{what} {name!r} cannot be read: {msg}") from None
+    try:
+        st = os.fstat(fd)
+        if stat.S_ISDIR(st.st_mode):
+            raise ValueError(f"{what} {name!r} is a directory, not a {kind} file")
+        if not stat.S_ISREG(st.st_mode):
+            raise ValueError(f"{what} {name!r} is not a regular file (a pipe, socket or "
+                             f"device); valid: a {kind} file")
+        if st.st_size > max_bytes:
+            raise ValueError(f"{what} {name!r} is {st.st_size} bytes; valid: at most "
+                             f"{max_bytes} bytes")
+        with os.fdopen(fd, "rb") as fh:
+            fd = None
+            raw = fh.read(max_bytes + 1)
+    except OSError as exc:
+        raise ValueError(f"{what} {name!r} cannot be read: {exc.strerror}") from None
+    finally:
+        if fd is not None:
+            os.close(fd)
+    if len(raw) > max_bytes:  # grew while being read
+        raise ValueError(f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most "
+                         f"{max_bytes} bytes")
+    return raw
+
+
 def read_runs(path, *, labels: bool = False):
     """Read tracked runs from a CSV file with columns ``t,x,y,phi`` and an optional ``run``.
 
     Any of ``x``, ``y``, ``phi`` may be absent; an empty cell (or ``nan``) is a missing
     value. Rows are grouped by the ``run`` label (in order of first appearance); within a
     run the times must increase. Units: s, m, rad.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        A regular file of at most :data:`MAX_DATA_BYTES` bytes of UTF-8 text; any other
+        type (``None``, a number, a file descriptor), a FIFO, socket or device is refused
+        without reading.
 
     Returns
     -------
@@ -227,17 +287,18 @@ def read_runs(path, *, labels: bool = False):
     ValueError
         One line naming the file, the column and the line of the file.
     """
-    name = str(path)
+    if not isinstance(path, (str, os.PathLike)):
+        raise ValueError(f"data file path = {path!r} ({type(path).__name__}) is invalid; "
+                         "valid values: a str or os.PathLike path to a CSV file")
+    name = os.fsdecode(os.fspath(path))
+    raw = _read_regular_file(path, "data file", "CSV", MAX_DATA_BYTES)
     try:
-        with open(path, newline="", encoding="utf-8-sig") as fh:
-            rows = list(csv.reader(fh))
-    except FileNotFoundError:
-        raise ValueError(f"data file {name!r} does not exist") from None
-    except IsADirectoryError:
-        raise ValueError(f"data file {name!r} is a directory, not a CSV file") from None
+        text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
         raise ValueError(f"data file {name!r} is not a UTF-8 text (CSV) file") from None
-    except (OSError, csv.Error) as exc:
+    try:
+        rows = list(csv.reader(io.StringIO(text, newline="")))
+    except csv.Error as exc:
         raise ValueError(f"data file {name!r} cannot be read: {exc}") from None
     lines = [(i + 1, r) for i, r in enumerate(rows) if r and any(cell.strip() for cell in r)]
     if not lines:
@@ -958,7 +1019,9 @@ def fit(
         steps) the model between steps (cubic Hermite) is within 1e-6 a and 1e-5 rad of a
         dense run (tests/test_fit.py), far below tracking noise.
     fd_step : float, default 1e-4
-        Central-difference step, relative to each parameter's typical size.
+        Central-difference step, relative to each parameter's typical size; valid:
+        [:data:`MIN_FD_STEP`, :data:`MAX_FD_STEP`] = [1e-8, 0.1] (a smaller step differences
+        round-off of the simulated motion, a larger one is no longer a derivative).
     corr_limit : float, default 0.99
         |correlation| above which a pair of parameters is reported as not separable.
     max_nfev : int, optional
@@ -993,7 +1056,7 @@ def fit(
     g = v.positive("g", g, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     max_step = None if max_step is None else v.positive("max_step", max_step)
-    fd_step = v.in_range("fd_step", fd_step, 0.0, 0.1, lo_open=True)
+    fd_step = v.in_range("fd_step", fd_step, MIN_FD_STEP, MAX_FD_STEP)
     corr_limit = v.in_range("corr_limit", corr_limit, 0.0, 1.0, lo_open=True)
     if max_nfev is not None and (isinstance(max_nfev, bool) or not isinstance(
             max_nfev, numbers.Integral) or max_nfev < 1):
