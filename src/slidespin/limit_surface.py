@@ -35,10 +35,16 @@ from . import _validate as v
 from .body import Body, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline
-from .statics import StaticSupport
+from ._validate import _short
+from .statics import StaticSupport, check_anisotropy
 from .wrench import friction_wrench
 
 __all__ = ["QUARTIC_EXPONENTS", "LimitSurface", "limit_surface", "sphere_directions"]
+
+#: largest n (twist directions; each one kernel call, the fits grow linearly)
+MAX_DIRECTIONS = 100_000
+#: largest quartic_directions (the quartic's design matrix is n × quartic_directions)
+MAX_QUARTIC_DIRECTIONS = 1_000
 
 #: exponents (i, j, k) of the 15 monomials w₁ⁱ w₂ʲ w₃ᵏ of the quartic, in this order
 QUARTIC_EXPONENTS = tuple(
@@ -259,15 +265,21 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
     0.0
     """
     check_body_friction(body, friction, elliptic_only="limit_surface")
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 10:
-        raise ValueError(f"n = {n!r} is invalid; valid range: integer >= 10")
+    check_anisotropy(body, friction, "limit_surface")
+    if (isinstance(n, bool) or not isinstance(n, (int, np.integer))
+            or not 10 <= n <= MAX_DIRECTIONS):
+        raise ValueError(f"n = {_short(n)} is invalid; valid range: integer in "
+                         f"[10, {MAX_DIRECTIONS}]")
     if (isinstance(quartic_directions, bool)
-            or not isinstance(quartic_directions, (int, np.integer)) or quartic_directions < 6):
+            or not isinstance(quartic_directions, (int, np.integer))
+            or not 6 <= quartic_directions <= MAX_QUARTIC_DIRECTIONS):
         raise ValueError(
-            f"quartic_directions = {quartic_directions!r} is invalid; valid range: integer >= 6")
+            f"quartic_directions = {_short(quartic_directions)} is invalid; valid range: "
+            f"integer in [6, {MAX_QUARTIC_DIRECTIONS}]")
     phi = v.finite("phi", phi)
-    g = v.positive("g", g, "m/s^2")
-    ell = body.radius_of_gyration if length is None else v.positive("length", length, "m")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    ell = (body.radius_of_gyration if length is None
+           else v.bounded("length", length, *v.LENGTH, "m"))
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(f"incline = {incline!r} is invalid; valid values: an Incline or None")
     nf = 1.0 if incline is None else incline.normal_factor

@@ -127,8 +127,56 @@ class StaticSupport:
         return h, grad
 
 
+#: bound on (friction anisotropy) × (patch elongation): the static features map the patch to
+#: its image under the tensor, an ellipse elongated by at most their product; the wrench
+#: quadrature meets its target for every product ≤ 1e4 measured (aspects 1e-3..30, both
+#: frames, skewed tensors) and misses it from ~1e5 on
+ANISOTROPY_ELONGATION = 1e4
+#: bound on |W_a| in units of (m g, m g, m g a): beyond it the optimiser's numbers overflow
+WRENCH_MAX = 1e6
+#: a load below this (same units) is negligible: held, load factor inf, no onset (its load
+#: factor would exceed 1e300 × the smallest coefficient, far beyond any meaning)
+WRENCH_NEGLIGIBLE = 1e-300
+
+
+def anisotropy_elongation(body, friction) -> float:
+    """cond(𝔽) × max(b/a, a/b): the worst elongation of the image patch the statics see."""
+    sv = np.linalg.svd(friction.matrix, compute_uv=False)
+    ratio = math.inf if sv[1] <= 0.0 else float(sv[0] / sv[1])
+    bn = body.patch.b / body.patch.a
+    return ratio * max(bn, 1.0 / bn)
+
+
+def check_anisotropy(body, friction, feature="static friction") -> None:
+    """Raise ValueError naming ``friction`` unless cond(𝔽) × elongation ≤ 1e4."""
+    prod = anisotropy_elongation(body, friction)
+    if not prod <= ANISOTROPY_ELONGATION:
+        raise ValueError(
+            f"friction = {friction!r} is invalid for {feature} on this patch: anisotropy "
+            f"(ratio of the tensor's singular values) x patch elongation max(b/a, a/b) = "
+            f"{prod:.3g}; valid range: [1, {ANISOTROPY_ELONGATION:g}]")
+
+
 def _check(body, friction):
     check_body_friction(body, friction, elliptic_only="static friction")
+    check_anisotropy(body, friction)
+
+
+def _norm(b):
+    """|b| without overflow or underflow of the squares."""
+    big = float(np.max(np.abs(b)))
+    return big * float(np.linalg.norm(b / big)) if 0.0 < big < math.inf else big
+
+
+def _check_load(name, b):
+    """Range of a natural-unit wrench b; False if it is negligible (held exactly)."""
+    nb = _norm(b)
+    if not nb <= WRENCH_MAX:
+        raise ValueError(
+            f"{name} = ({', '.join(f'{x:.6g}' for x in b)}) in units of (m g, m g, m g a) is "
+            f"invalid; valid range: magnitude <= {WRENCH_MAX:g} m g (the load must be finite "
+            "relative to the weight)")
+    return nb >= WRENCH_NEGLIGIBLE
 
 
 def _wrench3(name, w):
@@ -184,7 +232,7 @@ def support_function(body: Body, friction: FrictionTensor, direction, phi: float
     _check(body, friction)
     d = _wrench3("direction", direction)
     nf = _normal(incline, 1.0)
-    g = v.positive("g", g, "m/s^2")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     a = body.patch.a
     sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
     h, grad = sup(np.array([d[0], d[1], d[2] * a]))
@@ -194,7 +242,7 @@ def support_function(body: Body, friction: FrictionTensor, direction, phi: float
 
 def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
     """(λ*, d*) for a wrench b ≠ 0 in natural units: min over d·b > 0 of h(d)/(d·b)."""
-    nb = float(np.linalg.norm(b))
+    nb = _norm(b)
     bh = b / nb
     # orthonormal frame (bh, e1, e2); d = bh + p e1 + q e2 covers the open half space d·b > 0
     e1 = np.cross(bh, [1.0, 0.0, 0.0] if abs(bh[0]) < 0.9 else [0.0, 1.0, 0.0])
@@ -202,11 +250,12 @@ def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
     e2 = np.cross(bh, e1)
 
     def fun(pq):
+        # h(d)/(d·bh), d·bh = 1: the ratio for the unit load bh (λ* = this / |b|, divided
+        # at the end so that neither a tiny nor a huge |b| reaches the optimiser)
         d = bh + pq[0] * e1 + pq[1] * e2
         h, grad = sup(d)
-        val = h / nb  # d·b = |b| since d·bh = 1
-        gd = grad / nb - val * bh  # gradient of h/(d·b) with respect to d
-        return val, np.array([gd @ e1, gd @ e2])
+        gd = grad - h * bh  # gradient of h/(d·bh) with respect to d
+        return h, np.array([gd @ e1, gd @ e2])
 
     starts = [np.zeros(2)]
     if d0 is not None and float(np.dot(d0, bh)) > 1e-3:
@@ -223,7 +272,7 @@ def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
             break
     pq = best.x
     d = bh + pq[0] * e1 + pq[1] * e2
-    return float(best.fun), d / np.linalg.norm(d)
+    return float(best.fun) / nb, d / np.linalg.norm(d)
 
 
 def load_factor(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
@@ -263,9 +312,9 @@ def load_factor(body: Body, friction: FrictionTensor, applied_wrench, phi: float
     _check(body, friction)
     w = _wrench3("applied_wrench", applied_wrench)
     nf = _normal(incline, 1.0)
-    g = v.positive("g", g, "m/s^2")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     b = _natural_wrench(body, w, nf, g)
-    if not b.any():
+    if not _check_load("applied_wrench", b):
         return math.inf
     sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
     return _load_factor_nat(sup, b)[0]
@@ -359,6 +408,8 @@ _ONSET_RES_TOL = 1e-10
 #: an onset rate λ ≥ −_ONSET_LAM_TOL (1 + |A_a|) counts as λ = 0⁺ (units of g): at the threshold
 #: (γ = 1 within round-off) λ vanishes and its computed sign is decided by round-off
 _ONSET_LAM_TOL = 1e-12
+#: cap on the explicit sphere-flow steps of one start (each a kernel call from Python)
+_FLOW_STEPS = 4000
 
 
 class OnsetNotFound(RuntimeError):
@@ -406,8 +457,9 @@ def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False, lam_tol=0.0):
 
     def flow(u, tau):
         # explicit sphere-flow steps du/dτ = X − (u·X)u towards a sink, then re-normalise
-        h = 0.05 / max(1e-300, float(np.linalg.norm(b)) + 1.0)
-        for _ in range(int(tau / h)):
+        # (at most _FLOW_STEPS steps: a start, not a solve; a stiff b shortens the run)
+        h = 0.05 / (float(np.linalg.norm(b)) + 1.0)
+        for _ in range(min(int(tau / h), _FLOW_STEPS)):
             t, _ = residual_at(u)
             u = u + h * t
             u /= np.linalg.norm(u)
@@ -484,11 +536,11 @@ def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0
     _check(body, friction)
     w = _wrench3("applied_wrench", applied_wrench)
     nf = _normal(incline, 1.0)
-    g = v.positive("g", g, "m/s^2")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     phi = v.finite("phi", phi)
     par = body.kernel_params(friction, _TOL)
     wn = _natural_wrench(body, w, nf, g)
-    if not wn.any():
+    if not _check_load("applied_wrench", wn):
         return None
     sup = StaticSupport(par, friction, phi)
     lam_star, d = _load_factor_nat(sup, wn)
