@@ -32,10 +32,10 @@ import numpy as np
 from scipy.optimize import nnls
 
 from . import _validate as v
+from ._validate import _short
 from .body import Body, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline
-from ._validate import _short
 from .statics import StaticSupport, check_anisotropy
 from .wrench import friction_wrench
 

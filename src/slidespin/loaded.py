@@ -59,10 +59,18 @@ from scipy.optimize import brentq
 from . import _ode
 from . import _validate as v
 from ._kernel import STATUS_OK, wrench_world
+from ._validate import _short
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline, Load
-from .statics import OnsetNotFound, StaticSupport, _load_factor_nat, _onset_from_par, _onset_nat
+from .statics import (
+    WRENCH_MAX,
+    OnsetNotFound,
+    StaticSupport,
+    _load_factor_nat,
+    _onset_from_par,
+    _onset_nat,
+)
 
 __all__ = ["GAUGE_TOL", "LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
 
@@ -255,6 +263,13 @@ class _Problem:
             bx += qx / mg
             by += qy / mg
             bm = mz / (mg * self.a * self.k)
+            big = max(abs(qx), abs(qy), abs(mz) / self.a) / mg
+            if not big <= WRENCH_MAX:
+                raise ValueError(
+                    f"load = {_short(self.load)} gives (Qx, Qy, T) = ({qx:.6g} N, {qy:.6g} N, "
+                    f"{mz:.6g} N m) at t = {t * self.t_unit:.6g} s, {big:.3g} in units of "
+                    f"(m g, m g, m g a); valid range: force and torque up to {WRENCH_MAX:g} "
+                    "m g (m g a)")
         return bx, by, bm
 
     def friction_acc(self, u1, u2, u3, phi):
@@ -415,12 +430,13 @@ def simulate_loaded(
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(
             f"incline = {incline!r} is invalid; valid values: a slidespin.loads.Incline or None")
-    g = v.positive("g", g, "m/s^2")
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     method = v.choice("method", method, ("auto", "radau", "dop853", "lsoda", "bdf", "rk45"))
     method = {"radau": "Radau", "dop853": "DOP853", "lsoda": "LSODA", "bdf": "BDF",
               "rk45": "RK45", "auto": "auto"}[method]
     prob = _Problem(body, friction, load, incline, g)
+    prob.b(0.0, initial_state.phi)  # the load's range, before any work
     if t_end is None:
         if not prob.constant:
             raise ValueError("t_end = None is invalid for a time-varying load; give t_end [s]")
@@ -725,6 +741,10 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
     return None
 
 
+class _StepBudget(Exception):
+    """Raised from inside solve_ivp when a slip phase has used its budget of steps."""
+
+
 def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=None):
     """Integrate one slip phase in τ; returns (y_end, recorded rows, steps, reason).
 
@@ -751,6 +771,18 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
     events = [ev_stop, ev_end]
     if ln_switch is not None:
         events.append(ev_switch)
+    # solve_ivp evaluates every event once per accepted step (and once at the start); this
+    # one never changes sign and only counts the steps, so that max_steps bounds the work
+    # inside one call too (a chunk alone may take unboundedly many steps)
+    taken = []
+
+    def ev_watch(tau, y):
+        taken.append(y.copy())
+        if steps + len(taken) - 1 > steps_left:
+            raise _StepBudget
+        return 1.0
+
+    events.append(ev_watch)
     atol = np.full(10, rtol * 1e-2)
     implicit = method in ("Radau", "BDF", "LSODA")
     if implicit:
@@ -764,8 +796,14 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
     y = y0
     while True:
         extra = {"jac": prob.jac} if implicit else {}
-        sol = solve_ivp(prob.rhs, (tau0, tau0 + chunk), y, method=method, rtol=rtol, atol=atol,
-                        events=events, max_step=h_max, **extra)
+        taken.clear()
+        try:
+            sol = solve_ivp(prob.rhs, (tau0, tau0 + chunk), y, method=method, rtol=rtol,
+                            atol=atol, events=events, max_step=h_max, **extra)
+        except _StepBudget:  # the accepted steps so far, the last one as reached
+            rec.extend(taken[1:])
+            steps += len(taken) - 1
+            return (taken[-1] if taken else y), rec, steps, "max_steps"
         steps += sol.t.size - 1
         y = sol.y[:, -1].copy()
         if sol.status == -1:  # the integrator gave up: the values as reached, and why

@@ -111,7 +111,10 @@ class Load:
             object.__setattr__(self, "torque", v.finite("torque", _real(self.torque)))
         object.__setattr__(self, "frame", v.choice("frame", self.frame, LOAD_FRAMES))
         if self.at is not None:
-            object.__setattr__(self, "at", _check_pair("at", self.at))
+            at = _check_pair("at", self.at)
+            for i, x in enumerate(at):
+                v.symmetric(f"at[{i}]", x, v.POSITION, "m")
+            object.__setattr__(self, "at", at)
 
     @classmethod
     def piecewise_linear(cls, times, fx, fy, torque=None, frame: str = "plane",
@@ -194,6 +197,11 @@ class Load:
             dy = self.at[1] - mass_centre[1]
             rx, ry = c * dx - s * dy, s * dx + c * dy
             moment += rx * qy - ry * qx
+        if not math.isfinite(moment):  # |r| |Q| or T + r × Q beyond the floats
+            raise ValueError(
+                f"force = ({qx:.6g}, {qy:.6g}) N at at = {self.at!r} m with torque = "
+                f"{self.torque_at(t):.6g} N m gives a moment that overflows; valid range: "
+                "|torque| + |at - G| |force| below 1.8e308 N m")
         return (qx, qy, moment)
 
 
@@ -247,6 +255,8 @@ class Incline:
 
     def gravity_force(self, mass: float, g: float = 9.81) -> tuple[float, float]:
         """Component of gravity along the plane, m g sin α (cos δ, sin δ) [N]."""
+        mass = v.bounded("mass", mass, *v.MASS, "kg")
+        g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
         f = mass * g * self.downhill_factor
         dx, dy = self.direction
         return (f * dx, f * dy)
