@@ -21,12 +21,11 @@ file and the key.
 from __future__ import annotations
 
 import math
-import os
-import stat
 import sys
 from dataclasses import dataclass
 
 from . import _validate as v
+from ._io import read_regular_file
 from .body import Body, State
 from .friction import FrictionTensor
 from .geometry import Circle, Ellipse
@@ -330,36 +329,7 @@ def read_toml(path, what: str, max_bytes: int = MAX_FILE_BYTES) -> dict:
     than :data:`MAX_DEPTH` and integers beyond 64 bits are refused naming the key.
     """
     name = str(path)
-    try:
-        # O_NONBLOCK: opening a FIFO must not wait for a writer
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except FileNotFoundError:
-        raise ValueError(f"{what} {name!r} does not exist") from None
-    except IsADirectoryError:
-        raise ValueError(f"{what} {name!r} is a directory, not a TOML file") from None
-    except OSError as exc:
-        raise ValueError(f"{what} {name!r} cannot be read: {exc.strerror}") from None
-    try:
-        st = os.fstat(fd)
-        if stat.S_ISDIR(st.st_mode):
-            raise ValueError(f"{what} {name!r} is a directory, not a TOML file")
-        if not stat.S_ISREG(st.st_mode):
-            raise ValueError(f"{what} {name!r} is not a regular file (a pipe, socket or "
-                             "device); valid: a TOML file")
-        if st.st_size > max_bytes:
-            raise ValueError(f"{what} {name!r} is {st.st_size} bytes; valid: at most "
-                             f"{max_bytes} bytes")
-        with os.fdopen(fd, "rb") as fh:
-            fd = None
-            raw = fh.read(max_bytes + 1)
-    except OSError as exc:
-        raise ValueError(f"{what} {name!r} cannot be read: {exc.strerror}") from None
-    finally:
-        if fd is not None:
-            os.close(fd)
-    if len(raw) > max_bytes:  # grew while being read
-        raise ValueError(f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most "
-                         f"{max_bytes} bytes")
+    raw = read_regular_file(path, what, "TOML", max_bytes)
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:

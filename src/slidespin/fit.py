@@ -59,7 +59,6 @@ import io
 import math
 import numbers
 import os
-import stat
 import time
 import warnings
 from collections.abc import Mapping
@@ -68,6 +67,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import _validate as v
+from ._io import read_regular_file
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .pressure import LinearPressure
@@ -220,48 +220,6 @@ def as_runs(data) -> list[dict]:
     )
 
 
-def _read_regular_file(path, what: str, kind: str, max_bytes: int) -> bytes:
-    """The bytes of the regular file ``path`` (at most ``max_bytes``), or a one-line
-    ``ValueError`` naming ``what`` and the path.
-
-    A FIFO, socket or device is refused without reading (opened non-blocking, so a FIFO
-    with no writer does not wait); a larger file is refused.
-    """
-    name = os.fsdecode(os.fspath(path))
-    try:
-        # O_NONBLOCK: opening a FIFO must not wait for a writer
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except FileNotFoundError:
-        raise ValueError(f"{what} {name!r} does not exist") from None
-    except IsADirectoryError:
-        raise ValueError(f"{what} {name!r} is a directory, not a {kind} file") from None
-    except (OSError, ValueError) as exc:  # ValueError: an embedded NUL
-        msg = getattr(exc, "strerror", None) or str(exc)
-        raise ValueError(f"{what} {name!r} cannot be read: {msg}") from None
-    try:
-        st = os.fstat(fd)
-        if stat.S_ISDIR(st.st_mode):
-            raise ValueError(f"{what} {name!r} is a directory, not a {kind} file")
-        if not stat.S_ISREG(st.st_mode):
-            raise ValueError(f"{what} {name!r} is not a regular file (a pipe, socket or "
-                             f"device); valid: a {kind} file")
-        if st.st_size > max_bytes:
-            raise ValueError(f"{what} {name!r} is {st.st_size} bytes; valid: at most "
-                             f"{max_bytes} bytes")
-        with os.fdopen(fd, "rb") as fh:
-            fd = None
-            raw = fh.read(max_bytes + 1)
-    except OSError as exc:
-        raise ValueError(f"{what} {name!r} cannot be read: {exc.strerror}") from None
-    finally:
-        if fd is not None:
-            os.close(fd)
-    if len(raw) > max_bytes:  # grew while being read
-        raise ValueError(f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most "
-                         f"{max_bytes} bytes")
-    return raw
-
-
 def read_runs(path, *, labels: bool = False):
     """Read tracked runs from a CSV file with columns ``t,x,y,phi`` and an optional ``run``.
 
@@ -291,7 +249,7 @@ def read_runs(path, *, labels: bool = False):
         raise ValueError(f"data file path = {path!r} ({type(path).__name__}) is invalid; "
                          "valid values: a str or os.PathLike path to a CSV file")
     name = os.fsdecode(os.fspath(path))
-    raw = _read_regular_file(path, "data file", "CSV", MAX_DATA_BYTES)
+    raw = read_regular_file(path, "data file", "CSV", MAX_DATA_BYTES)
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
