@@ -51,6 +51,19 @@ def _check_pair(name: str, value) -> tuple[float, float]:
     return (v.finite(f"{name}[0]", _real(items[0])), v.finite(f"{name}[1]", _real(items[1])))
 
 
+def _interp(t, tt, vals) -> float:
+    """Linear interpolation, constant beyond the ends, as (1 − w) v₀ + w v₁: never
+    overflows for finite samples (np.interp forms the slope, which can)."""
+    t = float(t)
+    if t <= tt[0]:
+        return vals[0]
+    if t >= tt[-1]:
+        return vals[-1]
+    i = int(np.searchsorted(tt, t, side="right")) - 1
+    w = (t - tt[i]) / (tt[i + 1] - tt[i])
+    return (1.0 - w) * vals[i] + w * vals[i + 1]
+
+
 def _real(x):
     """Plain float for NumPy scalars (numbers.Real rejects none of them, but be explicit)."""
     if isinstance(x, np.generic):
@@ -151,10 +164,10 @@ class Load:
         tt, a, b, m = (tuple(float(x) for x in arr) for arr in (t, *cols))
 
         def force(time, tt=tt, a=a, b=b):
-            return (float(np.interp(time, tt, a)), float(np.interp(time, tt, b)))
+            return (_interp(time, tt, a), _interp(time, tt, b))
 
         def torque_fn(time, tt=tt, m=m):
-            return float(np.interp(time, tt, m))
+            return _interp(time, tt, m)
 
         return cls(force=force, torque=torque_fn if any(m) else 0.0, frame=frame, at=at)
 
