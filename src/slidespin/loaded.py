@@ -70,6 +70,7 @@ from .statics import (
     _load_factor_nat,
     _onset_from_par,
     _onset_nat,
+    check_anisotropy,
 )
 
 __all__ = ["GAUGE_TOL", "LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
@@ -422,6 +423,8 @@ def simulate_loaded(
     ('moving_at_t_end', True)
     """
     check_body_friction(body, friction, elliptic_only="loads and inclines")
+    if load is not None or incline is not None:  # the static-friction set C will be needed
+        check_anisotropy(body, friction, "static friction under a load or on an incline")
     if not isinstance(initial_state, State):
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State")
