@@ -100,17 +100,28 @@ class Body:
         m = v.bounded("mass", self.mass, *v.MASS, "kg")
         object.__setattr__(self, "mass", m)
         a = _length_unit(self.patch)
+        lo, hi = v.INERTIA_RATIO
+        unit = "extent" if footprint else "a"
         if self.moment_of_inertia is None:
             if footprint:
                 inertia = self.patch.plate_inertia(m)
+                # the default plate inertia obeys the same I* range as a given one (a
+                # footprint's second moment may under- or overflow, or be far off the scale)
+                with np.errstate(all="ignore"):
+                    i_star = inertia / m / a / a
+                if not (math.isfinite(inertia) and inertia > 0.0
+                        and lo * (1.0 - 1e-12) <= i_star <= hi * (1.0 + 1e-12)):
+                    raise ValueError(
+                        f"patch = {v._short(self.patch, 100)} is invalid with mass = {m!r} kg: its plate "
+                        f"inertia I = {inertia!r} kg m^2 gives I/(m {unit}^2) = {i_star:.6g}; "
+                        f"valid range: [{lo:g}, {hi:g}] (give moment_of_inertia explicitly)"
+                    )
             else:
                 inertia = m * (a**2 + self.patch.b**2) / 4.0
         else:
             inertia = v.positive("moment_of_inertia", self.moment_of_inertia, "kg m^2")
-            lo, hi = v.INERTIA_RATIO
             i_star = inertia / m / a / a
             if not lo * (1.0 - 1e-12) <= i_star <= hi * (1.0 + 1e-12):  # round-off of I* m a²
-                unit = "extent" if footprint else "a"
                 raise ValueError(
                     f"moment_of_inertia = {inertia!r} kg m^2 is invalid for mass = {m!r} kg and "
                     f"{unit} = {a!r} m: I/(m {unit}^2) = {i_star:.6g}; valid range: "

@@ -125,14 +125,14 @@ class PressureMap:
         The map is the interpolating bicubic spline (``scipy.interpolate.RectBivariateSpline``,
         s = 0); outside the grid it is extrapolated, so the grid should cover the footprint.
         """
-        x = np.asarray(xi, dtype=float)
-        y = np.asarray(eta, dtype=float)
-        z = np.asarray(values, dtype=float)
+        x = v.real_array("xi", xi, unit="m")
+        y = v.real_array("eta", eta, unit="m")
+        z = v.real_array("values", values)
         for name, g in (("xi", x), ("eta", y)):
             if g.ndim != 1 or g.size < 4 or not np.all(np.isfinite(g)) or np.any(np.diff(g) <= 0):
                 raise ValueError(
-                    f"{name} = {g!r} is invalid; valid values: at least 4 finite, strictly "
-                    "increasing grid coordinates in m"
+                    f"{name} = {v._short(g.tolist())} is invalid; valid values: at least 4 "
+                    "finite, strictly increasing grid coordinates in m"
                 )
         if z.shape != (x.size, y.size) or not np.all(np.isfinite(z)):
             raise ValueError(

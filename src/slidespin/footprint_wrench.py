@@ -51,6 +51,9 @@ __all__ = ["MAP_TOL", "footprint_wrench"]
 
 #: default target of the user-map quadrature (units of P and P × extent)
 MAP_TOL = 1e-9
+#: valid range of ``map_tol``: below 1e-12 the adaptive panels cannot meet it (they refine
+#: without end); above 1e-2 the wrench is not worth the name
+MAP_TOL_RANGE = (1e-12, 1e-2)
 _MAP_OUTER = 12  # Gauss–Legendre nodes per angular panel
 _MAP_INNER = 24  # Gauss–Legendre nodes per ray interval
 _MAP_MAX_LEVELS = 40
@@ -87,7 +90,7 @@ def footprint_wrench(
         Body angle [rad].
     load : float, default 1
         Normal load P = m g [N].
-    map_tol : float, default 1e-9
+    map_tol : float in [1e-12, 1e-2], default 1e-9
         Error target of the user-map quadrature, in units of P (force) and P × extent
         (moment); unused for uniform and linear pressure (exact).
 
@@ -124,7 +127,7 @@ def footprint_wrench(
     if not isinstance(friction, FrictionTensor):
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     load = v.positive("load", load, "N")
-    map_tol = v.positive("map_tol", map_tol)
+    map_tol = v.bounded("map_tol", map_tol, *MAP_TOL_RANGE)
     arrays_in = [_check_array(n, x) for n, x in
                  (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
     scalar = all(a.ndim == 0 for a in arrays_in)
@@ -138,6 +141,12 @@ def footprint_wrench(
         ) from None
     shape = b[0].shape
     vxa, vya, oma, pha = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
+    theta = np.arctan2(vya, vxa)
+    # the dry-friction wrench depends on the direction of (v, ω) only (MODEL §2): scale each
+    # triple by a power of two (exact) to magnitude ≤ 1, so that no product in the kernel
+    # overflows for velocities near the largest float
+    _, expo = np.frexp(np.maximum(np.maximum(np.abs(vxa), np.abs(vya)), np.abs(oma)))
+    vxa, vya, oma = (np.ldexp(x, -expo) for x in (vxa, vya, oma))
     t = friction.matrix
     body_frame = friction.frame == "body"
     arrays = footprint.to_arrays()
@@ -156,7 +165,6 @@ def footprint_wrench(
     fx = fx * load
     fy = fy * load
     mm = mm * load
-    theta = np.arctan2(vya, vxa)
     c, s = np.cos(theta), np.sin(theta)
     ft = -(fx * c + fy * s)
     fn = -(-fx * s + fy * c)
