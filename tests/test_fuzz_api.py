@@ -115,11 +115,6 @@ def known(condition, label):
         reject()
 
 
-def off_scale(*values, lo=1e-70, hi=1e70):
-    """Some finite nonzero number in ``values`` lies outside [lo, hi] in magnitude."""
-    return any(0.0 < m < lo or hi < m < math.inf for v in values for m in _magnitudes(v))
-
-
 def outside(x, lo, hi):
     """``x`` is a finite positive real outside [lo, hi] (accepted by a bare positivity check)."""
     return _real(x) and math.isfinite(float(x)) and 0.0 < float(x) and not lo <= float(x) <= hi
@@ -219,7 +214,6 @@ def check_footprint(fp):
     finite_everywhere(call(fp.plate_inertia, ("mass",), 1.0), where="plate_inertia")
 
 
-SCALE_BUG = "footprint dimension beyond 1e±70 (test_known_footprint_scale)"
 
 
 @API
@@ -232,7 +226,6 @@ def test_polygon(data):
                                                             max_size=6)))
     centre = args("centre", centres(size), junk_pairs)
     angle = args("angle", ANGLE)
-    known(off_scale(vertices, centre), SCALE_BUG)
     p = call(ss.Polygon, ("vertices", "centre", "angle"), vertices, centre, angle)
     if p is not None:
         check_footprint(p)
@@ -258,7 +251,6 @@ def test_rectangle_disk_annulus(data, kind):
         names = ("inner_radius", "outer_radius", "centre", "angle")
     centre = args("centre", centres(size), junk_pairs)
     angle = args("angle", ANGLE)
-    known(off_scale(dims, centre), SCALE_BUG)
     cls = {"rectangle": ss.Rectangle, "disk": ss.Disk, "annulus": ss.Annulus}[kind]
     p = call(cls, names, *dims, centre, angle)
     if p is not None:
@@ -369,8 +361,6 @@ def test_footprint_wrench(data):
     load = args("load", st.one_of(st.just(1.0), log_uniform(1e-12, 1e12)))
     names = ("footprint", "pressure", "friction", "vx", "vy", "omega", "phi", "load",
              "broadcast", "LinearPressure(")
-    known(off_scale(vx, vy, lo=0.0, hi=1e300),
-          "|v| beyond 1e300 (test_known_footprint_wrench_huge_velocity)")
     w = call(ss.footprint_wrench, names, fp, law, friction, vx, vy, omega, phi, load)
     if w is None:
         return
@@ -454,8 +444,6 @@ def test_load(data):
     fx = args("fx", st.lists(FORCE, min_size=n, max_size=n))
     fy = args("fy", st.lists(FORCE, min_size=n, max_size=n))
     torque = args("torque", st.one_of(st.none(), st.lists(FORCE, min_size=n, max_size=n)))
-    known(not all(_as_float_array(x) for x in (times, fx, fy, torque) if x is not None),
-          "a non-numeric profile (test_known_piecewise_non_numeric)")
     pl = call(ss.Load.piecewise_linear, ("times", "fx", "fy", "torque"), times, fx, fy, torque)
     if pl is not None:
         # the interpolant of huge samples may overflow between them: refused when evaluated
@@ -818,22 +806,20 @@ def test_regression_footprint_scale_huge_disk():
         clean(lambda: (d.area, d.second_moment, d.plate_inertia(1.0)), ("radius",))
 
 
-@xfail("Body(Rectangle(1e300, 1.0), UniformPressure(), 1.0) is accepted with "
-       "moment_of_inertia = nan (the footprint's second moment overflows); I* is checked only "
-       "for an explicit moment_of_inertia")
-def test_known_footprint_scale_body_huge():
-    body = clean(ss.Body, ("patch", "length", "moment_of_inertia"),
-                 ss.Rectangle(1e300, 1.0), ss.UniformPressure(), 1.0)
+def test_regression_footprint_scale_body_huge():
+    """Fixed (was a strict xfail): Body(Rectangle(1e300, 1.0), ...) was accepted with
+    moment_of_inertia = nan; the footprint's dimensions are now range-checked."""
+    body = clean(lambda: ss.Body(ss.Rectangle(1e300, 1.0), ss.UniformPressure(), 1.0),
+                 ("patch", "length", "moment_of_inertia"))
     if body is not None:
         clean(lambda: (body.inertia_ratio, body.radius_of_gyration), ("patch",))
 
 
-@xfail("Body(Disk(1e-160), UniformPressure(), 1.0) is accepted with moment_of_inertia = 0.0 "
-       "(r^4 underflows), far outside I* in [1e-8, 1e8]: the plate inertia of a footprint is "
-       "not range-checked")
-def test_known_footprint_scale_body_tiny():
-    body = clean(ss.Body, ("patch", "radius", "moment_of_inertia"), ss.Disk(1e-160),
-                 ss.UniformPressure(), 1.0)
+def test_regression_footprint_scale_body_tiny():
+    """Fixed (was a strict xfail): Body(Disk(1e-160), ...) was accepted with
+    moment_of_inertia = 0.0, far outside I* in [1e-8, 1e8]."""
+    body = clean(lambda: ss.Body(ss.Disk(1e-160), ss.UniformPressure(), 1.0),
+                 ("patch", "radius", "moment_of_inertia"))
     if body is not None:
         assert body.moment_of_inertia > 0.0 and 1e-8 <= body.inertia_ratio <= 1e8
 
@@ -890,22 +876,18 @@ def test_regression_from_grid_non_numeric():
     clean(ss.PressureMap.from_grid, ("xi",), "abc", [0, 1, 2, 3], np.ones((4, 4)))
 
 
-@xfail("footprint_wrench(Disk(0.05), UniformPressure(), F, -1.7976931348623157e308, "
-       "5.274575347766127e307, 0.0, 1.0) returns force_x = force_y = moment = nan silently "
-       "(found by test_footprint_wrench; the same for a Rectangle): the speed |v| overflows; "
-       "friction_wrench scales (v, omega) first, footprint_wrench does not")
-def test_known_footprint_wrench_huge_velocity():
+def test_regression_footprint_wrench_huge_velocity():
+    """Fixed (was a strict xfail): the speed |v| overflowed to NaN; the velocity triple is
+    now scaled first, as in friction_wrench."""
     clean(ss.footprint_wrench, ("vx", "vy"), ss.Disk(0.05), ss.UniformPressure(), F,
           -1.7976931348623157e308, 5.274575347766127e307, 0.0, 1.0)
 
 
-@xfail("Load.piecewise_linear([0, 1], fx, [0, 0]) with fx = [1j, 0] raises TypeError "
-       "(float() of a complex), fx = ['', 0] ValueError \"could not convert string to float: "
-       "''\" naming nothing, fx = [10**400, 0] OverflowError: np.asarray(..., dtype=float) "
-       "runs before the checks")
 @pytest.mark.parametrize("fx", [[1j, 0.0], ["", 0.0], [10**400, 0.0]], ids=["complex", "string",
                                                                              "huge-int"])
-def test_known_piecewise_non_numeric(fx):
+def test_regression_piecewise_non_numeric(fx):
+    """Fixed (was a strict xfail): complex, string and huge-int samples raised TypeError,
+    an unnamed ValueError or OverflowError."""
     clean(ss.Load.piecewise_linear, ("fx",), [0.0, 1.0], fx, [0.0, 0.0])
 
 

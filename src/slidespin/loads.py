@@ -151,9 +151,9 @@ class Load:
         >>> push.force_at(0.5), push.force_at(3.0)
         ((2.5, 0.0), (0.0, 0.0))
         """
-        t = np.asarray(times, dtype=float)
-        cols = [np.asarray(c, dtype=float) for c in (fx, fy)]
-        cols.append(np.zeros_like(t) if torque is None else np.asarray(torque, dtype=float))
+        t = v.real_array("times", times)
+        cols = [v.real_array(name, c) for name, c in (("fx", fx), ("fy", fy))]
+        cols.append(np.zeros_like(t) if torque is None else v.real_array("torque", torque))
         if t.ndim != 1 or t.size < 2 or not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
             raise ValueError(f"times = {list(np.atleast_1d(t))!r} is invalid; valid values: "
                              "at least 2 finite, strictly increasing times [s]")
