@@ -252,6 +252,29 @@ def _stop_values(res, lo, hi, yend, status, steps, term, k, a, t_unit, st):
     res.n_steps[lo:hi] = steps
 
 
+def _check_run(initial_states, n, rtol, max_steps, g):
+    """Validate the initial states ((N, 6) rows of x, y, phi, vx, vy, omega; N = ``n`` if
+    given) and the solver options of :func:`simulate_many` and :func:`simulate_bodies`."""
+    try:
+        st = np.asarray(initial_states, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError("initial_states must be an (N, 6) array of real numbers "
+                         "(x, y, phi, vx, vy, omega)") from None
+    if st.ndim != 2 or st.shape[1] != 6 or (n is not None and st.shape[0] != n):
+        rows = "N" if n is None else str(n)
+        raise ValueError(f"initial_states has shape {st.shape}; valid: ({rows}, 6), one row "
+                         "(x, y, phi, vx, vy, omega) per case")
+    rtol, max_steps = check_solver_options(rtol, max_steps)
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    bad = ~np.isfinite(st)
+    if bad.any():
+        i, j = (int(x[0]) for x in np.nonzero(bad))
+        name = ("x", "y", "phi", "vx", "vy", "omega")[j]
+        raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
+                         "valid range: any finite real number")
+    return st, rtol, max_steps, g
+
+
 def simulate_many(
     body: Body,
     friction: FrictionTensor,
@@ -284,23 +307,7 @@ def simulate_many(
         raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
     if not isinstance(friction, FrictionTensor):
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
-    try:
-        st = np.asarray(initial_states, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError("initial_states must be an (N, 6) array of real numbers "
-                         "(x, y, phi, vx, vy, omega)") from None
-    if st.ndim != 2 or st.shape[1] != 6:
-        raise ValueError(
-            f"initial_states has shape {st.shape}; valid: (N, 6) rows of (x, y, phi, vx, vy, omega)"
-        )
-    rtol, max_steps = check_solver_options(rtol, max_steps)
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    bad = ~np.isfinite(st)
-    if bad.any():
-        i, j = (int(x[0]) for x in np.nonzero(bad))
-        name = ("x", "y", "phi", "vx", "vy", "omega")[j]
-        raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
-                         "valid range: any finite real number")
+    st, rtol, max_steps, g = _check_run(initial_states, None, rtol, max_steps, g)
     # the parameter vector of simulate() itself, so that the numbers agree to the last bit
     par, fe, fc, geo = body.engine_params(friction)
     states = {name: st[:, i] for i, name in enumerate(("x", "y", "phi", "vx", "vy", "omega"))}
@@ -358,22 +365,7 @@ def simulate_bodies(
         if len(frictions) != n or not all(isinstance(f, FrictionTensor) for f in frictions):
             raise ValueError(f"friction must be a FrictionTensor or a sequence of {n} "
                              "FrictionTensor (one per body)")
-    try:
-        st = np.asarray(initial_states, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError("initial_states must be an (N, 6) array of real numbers "
-                         "(x, y, phi, vx, vy, omega)") from None
-    if st.shape != (n, 6):
-        raise ValueError(f"initial_states has shape {st.shape}; valid: ({n}, 6), one row "
-                         "(x, y, phi, vx, vy, omega) per body")
-    rtol, max_steps = check_solver_options(rtol, max_steps)
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    bad = ~np.isfinite(st)
-    if bad.any():
-        i, j = (int(x[0]) for x in np.nonzero(bad))
-        name = ("x", "y", "phi", "vx", "vy", "omega")[j]
-        raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
-                         "valid range: any finite real number")
+    st, rtol, max_steps, g = _check_run(initial_states, n, rtol, max_steps, g)
     # each distinct (body, friction) once; the parameter vectors of simulate() itself
     cache: dict = {}
     engines = []

@@ -45,7 +45,7 @@ from .footprint_pressure import (
 )
 from .friction import FrictionTensor
 from .pressure import LinearPressure, UniformPressure
-from .wrench import Wrench, _check_array
+from .wrench import Wrench, motion_arrays
 
 __all__ = ["MAP_TOL", "footprint_wrench"]
 
@@ -128,19 +128,7 @@ def footprint_wrench(
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     load = v.positive("load", load, "N")
     map_tol = v.bounded("map_tol", map_tol, *MAP_TOL_RANGE)
-    arrays_in = [_check_array(n, x) for n, x in
-                 (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
-    scalar = all(a.ndim == 0 for a in arrays_in)
-    try:
-        b = np.broadcast_arrays(*arrays_in)
-    except ValueError:
-        raise ValueError(
-            "vx, vy, omega, phi have shapes "
-            + ", ".join(str(a.shape) for a in arrays_in)
-            + " that do not broadcast together"
-        ) from None
-    shape = b[0].shape
-    vxa, vya, oma, pha = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
+    vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
     theta = np.arctan2(vya, vxa)
     # the dry-friction wrench depends on the direction of (v, ω) only (MODEL §2): scale each
     # triple by a power of two (exact) to magnitude ≤ 1, so that no product in the kernel

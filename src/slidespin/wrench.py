@@ -86,6 +86,23 @@ def _direction(vx, vy, omega, a):
     return out
 
 
+def motion_arrays(vx, vy, omega, phi):
+    """Validate and broadcast the motion state (arrays accepted): returns flat float arrays
+    (vx, vy, ω, φ), the broadcast shape and whether every input was a scalar."""
+    arrays = [_check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
+    scalar = all(a.ndim == 0 for a in arrays)
+    try:
+        b = np.broadcast_arrays(*arrays)
+    except ValueError:
+        raise ValueError(
+            "vx, vy, omega, phi have shapes "
+            + ", ".join(str(a.shape) for a in arrays)
+            + " that do not broadcast together"
+        ) from None
+    flat = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
+    return (*flat, b[0].shape, scalar)
+
+
 def friction_wrench(
     body: Body,
     friction: FrictionTensor,
@@ -152,18 +169,7 @@ def friction_wrench(
 
         return footprint_wrench(body.patch, body.pressure, friction, vx, vy, omega, phi,
                                 load=body.mass * g)
-    arrays = [_check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
-    scalar = all(a.ndim == 0 for a in arrays)
-    try:
-        b = np.broadcast_arrays(*arrays)
-    except ValueError:
-        raise ValueError(
-            "vx, vy, omega, phi have shapes "
-            + ", ".join(str(a.shape) for a in arrays)
-            + " that do not broadcast together"
-        ) from None
-    shape = b[0].shape
-    vxa, vya, oma, pha = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
+    vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
     a = body.patch.a
     par = body.kernel_params(friction, tol)
     from . import _ode
