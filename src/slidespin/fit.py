@@ -110,8 +110,10 @@ TR_SOLVER = "exact"
 QUICK_STEPS = 4000
 #: largest data file :func:`read_runs` reads [bytes]
 MAX_DATA_BYTES = 100_000_000
-#: valid range of the relative central-difference step ``fd_step`` of :func:`fit`
+#: smallest relative central-difference step ``fd_step`` of :func:`fit` (below, the
+#: differences drown in the integrator's error)
 MIN_FD_STEP = 1e-8
+#: largest relative central-difference step ``fd_step`` of :func:`fit`
 MAX_FD_STEP = 0.1
 
 
