@@ -86,6 +86,25 @@ class StopResults:
         fmt = lambda c: ", ".join(f"{k}: {n}" for k, n in sorted(c.items()))  # noqa: E731
         return f"StopResults({len(self)} cases; status {{{fmt(counts)}}}; ending {{{fmt(ends)}}})"
 
+    def to_pandas(self):
+        """The stop results as a :class:`pandas.DataFrame`, one row per case (the columns of
+        :meth:`as_dict`, SI units; ``ending`` and ``status`` as strings). Needs pandas."""
+        try:
+            import pandas as pd
+        except ImportError:  # pragma: no cover - depends on the environment
+            raise ImportError("StopResults.to_pandas needs pandas: pip install pandas") from None
+        return pd.DataFrame(self.as_dict())
+
+    def _repr_html_(self) -> str:
+        """Cases per status and per ending, for notebooks (no arrays)."""
+        from .simulate import _html_table
+
+        c = self.counts()
+        items = {"cases": len(self)}
+        items.update({f"status {k}": n for k, n in sorted(c["status"].items())})
+        items.update({f"ending {k}": n for k, n in sorted(c["ending"].items())})
+        return _html_table("StopResults", items)
+
     def counts(self) -> dict:
         """Number of cases per status and per ending: ``{"status": {...}, "ending": {...}}``."""
         from collections import Counter

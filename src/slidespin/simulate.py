@@ -232,6 +232,22 @@ class Trajectory:
         "tangential", "normal", "moment_paper", "path_length",
     )
 
+    def to_pandas(self):
+        """The trajectory as a :class:`pandas.DataFrame`, one row per recorded step, the
+        columns of :meth:`to_csv` (SI units); the stop summary is in ``DataFrame.attrs``.
+        Needs pandas (``pip install pandas``)."""
+        try:
+            import pandas as pd
+        except ImportError:  # pragma: no cover - depends on the environment
+            raise ImportError("Trajectory.to_pandas needs pandas: pip install pandas") from None
+        df = pd.DataFrame({c: np.asarray(getattr(self, c), dtype=float) for c in self.COLUMNS})
+        df.attrs.update(self.summary())
+        return df
+
+    def _repr_html_(self) -> str:
+        """A short summary table for notebooks (no arrays)."""
+        return _html_table("Trajectory", self.summary())
+
     def to_csv(self, path=None) -> str:
         """Write (or return) the trajectory as CSV, one row per step (SI units)."""
         buf = io.StringIO()
@@ -430,3 +446,15 @@ def _terminal_values(status, u12, u3, theta_star, beta_nat):
             return ending, 0.0, float(theta_star)
     # mixed, or not converged: the direction as reached
     return ending, float(beta_nat), float(theta_star)
+
+
+def _html_table(title: str, items: dict) -> str:
+    """A two-column HTML table of ``items`` (for ``_repr_html_``)."""
+    from html import escape
+
+    def cell(x):
+        return f"{x:.6g}" if isinstance(x, float) else escape(str(x))
+
+    rows = "".join(f"<tr><th style='text-align:left'>{escape(str(k))}</th><td>{cell(x)}</td></tr>"
+                   for k, x in items.items())
+    return f"<table><caption>{escape(title)}</caption>{rows}</table>"
