@@ -153,13 +153,7 @@ def footprint_wrench(
     fx = fx * load
     fy = fy * load
     mm = mm * load
-    c, s = np.cos(theta), np.sin(theta)
-    ft = -(fx * c + fy * s)
-    fn = -(-fx * s + fy * c)
-    out = [x.reshape(shape) for x in (fx, fy, mm, ft, fn, -mm, theta)]
-    if scalar:
-        out = [float(x) for x in out]
-    return Wrench(*out)
+    return Wrench.from_world(fx, fy, mm, theta, shape, scalar)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -72,8 +72,9 @@ def classify_ending(u_plane: float, u_spin: float, tol: float = ENDING_TOL) -> s
 
 
 def _beta(u_plane, u_spin, k):
-    """β = v/ω = k u₁₂/u₃ (±inf for ω = 0)."""
-    with np.errstate(divide="ignore", invalid="ignore"):
+    """β = v/ω = k u₁₂/u₃ (±inf for ω = 0, and where it overflows: a spin below 1e-308 of
+    the speed)."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         b = k * np.asarray(u_plane) / np.asarray(u_spin)
     return np.where(np.asarray(u_spin) == 0.0, np.inf, b)
 

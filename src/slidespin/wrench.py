@@ -56,6 +56,19 @@ class Wrench:
     moment_paper: float | np.ndarray
     theta: float | np.ndarray
 
+    @classmethod
+    def from_world(cls, fx, fy, mm, theta, shape, scalar: bool) -> Wrench:
+        """The wrench from flat arrays of the force [N], moment [N m] and direction ϑ of the
+        velocity of G, with the paper's F_τ, F_n, M_Cζ (eq. 4), in ``shape`` (floats if
+        ``scalar``)."""
+        c, s = np.cos(theta), np.sin(theta)
+        ft = -(fx * c + fy * s)
+        fn = -(-fx * s + fy * c)
+        out = [x.reshape(shape) for x in (fx, fy, mm, ft, fn, -mm, theta)]
+        if scalar:
+            out = [float(x) for x in out]
+        return cls(*out)
+
     def power(self, vx, vy, omega):
         """Friction power F·v + M ω [W] for the state the wrench was computed at (≤ 0)."""
         return self.force_x * vx + self.force_y * vy + self.moment * omega
@@ -193,11 +206,4 @@ def friction_wrench(
     fx = fx * load
     fy = fy * load
     mm = mm * load * a
-    theta = np.arctan2(vya, vxa)
-    c, s = np.cos(theta), np.sin(theta)
-    ft = -(fx * c + fy * s)
-    fn = -(-fx * s + fy * c)
-    out = [x.reshape(shape) for x in (fx, fy, mm, ft, fn, -mm, theta)]
-    if scalar:
-        out = [float(x) for x in out]
-    return Wrench(*out)
+    return Wrench.from_world(fx, fy, mm, np.arctan2(vya, vxa), shape, scalar)
