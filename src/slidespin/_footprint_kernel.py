@@ -86,6 +86,7 @@ import math
 import numpy as np
 
 from ._jit import jit
+from ._kernel import tensor_in_body
 
 #: fields of the ``geo`` vector
 GEO_FIELDS = ("ox", "oy", "extent", "p0", "p1", "p2", "xg", "yg", "xp", "yp", "load")
@@ -504,17 +505,7 @@ def wrench_world(edges, circles, geo, t00, t01, t10, t11, body_frame, phi, vx, v
     s = math.sin(phi)
     vbx = c * vx + s * vy
     vby = -s * vx + c * vy
-    if body_frame:
-        b00, b01, b10, b11 = t00, t01, t10, t11
-    else:  # 𝔽_body = Rᵀ 𝔽 R
-        a00 = c * t00 + s * t10
-        a01 = c * t01 + s * t11
-        a10 = -s * t00 + c * t10
-        a11 = -s * t01 + c * t11
-        b00 = a00 * c + a01 * s
-        b01 = -a00 * s + a01 * c
-        b10 = a10 * c + a11 * s
-        b11 = -a10 * s + a11 * c
+    b00, b01, b10, b11 = tensor_in_body(t00, t01, t10, t11, body_frame, c, s)
     fbx, fby, m = wrench_body(edges, circles, geo, b00, b01, b10, b11, vbx, vby, omega)
     return c * fbx - s * fby, s * fbx + c * fby, m
 

@@ -875,6 +875,19 @@ def wrench_body(bn, law, xg, yg, t00, t01, t10, t11, vx, vy, omega, tol):
 
 
 @jit(error_model="numpy", inline="always")
+def tensor_in_body(t00, t01, t10, t11, body_frame, c, s):
+    """The friction tensor in the body frame, 𝔽_body = Rᵀ 𝔽 R with R = R(φ), c = cos φ,
+    s = sin φ (unchanged if it is fixed to the body); shared by both compiled kernels."""
+    if body_frame:
+        return t00, t01, t10, t11
+    a00 = c * t00 + s * t10
+    a01 = c * t01 + s * t11
+    a10 = -s * t00 + c * t10
+    a11 = -s * t01 + c * t11
+    return a00 * c + a01 * s, -a00 * s + a01 * c, a10 * c + a11 * s, -a10 * s + a11 * c
+
+
+@jit(error_model="numpy", inline="always")
 def wrench_world_fast(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol, W):
     """:func:`wrench_world` with precomputed constants and a workspace (see
     :func:`wrench_fast`)."""
@@ -882,18 +895,7 @@ def wrench_world_fast(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega
     s = math.sin(phi)
     vbx = c * vx + s * vy
     vby = -s * vx + c * vy
-    if body_frame:
-        b00, b01, b10, b11 = t00, t01, t10, t11
-    else:
-        # 𝔽_body = Rᵀ 𝔽 R
-        a00 = c * t00 + s * t10
-        a01 = c * t01 + s * t11
-        a10 = -s * t00 + c * t10
-        a11 = -s * t01 + c * t11
-        b00 = a00 * c + a01 * s
-        b01 = -a00 * s + a01 * c
-        b10 = a10 * c + a11 * s
-        b11 = -a10 * s + a11 * c
+    b00, b01, b10, b11 = tensor_in_body(t00, t01, t10, t11, body_frame, c, s)
     fbx, fby, m, status, _, _ = wrench_fast(law, K, b00, b01, b10, b11, vbx, vby, omega, tol, W)
     return c * fbx - s * fby, s * fbx + c * fby, m, status
 
