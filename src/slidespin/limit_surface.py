@@ -32,11 +32,12 @@ import numpy as np
 from scipy.optimize import nnls
 
 from . import _validate as v
+from ._twist_wrench import TwistWrench
 from ._validate import _short
 from .body import Body, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline
-from .statics import StaticSupport, check_anisotropy
+from .statics import check_anisotropy, static_support
 from .wrench import friction_wrench
 
 __all__ = ["QUARTIC_EXPONENTS", "LimitSurface", "limit_surface", "sphere_directions"]
@@ -264,7 +265,7 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
     >>> round(float(ls.dissipation_gap.max()), 10)  # isotropic: maximum dissipation
     0.0
     """
-    check_body_friction(body, friction, elliptic_only="limit_surface")
+    check_body_friction(body, friction)
     check_anisotropy(body, friction, "limit_surface")
     if (isinstance(n, bool) or not isinstance(n, (int, np.integer))
             or not 10 <= n <= MAX_DIRECTIONS):
@@ -289,8 +290,8 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
     w = friction_wrench(body, friction, vx, vy, om, phi, g)
     fx, fy, mz = (np.asarray(x) * nf for x in (w.force_x, w.force_y, w.moment))
     # support function of C for the wrench direction d = twist
-    a = body.patch.a
-    sup = StaticSupport(body.kernel_params(friction, 1e-13), friction, phi)
+    a = body.length_unit
+    sup = static_support(TwistWrench(body, friction, 1e-13), friction, phi)
     h = np.array([sup(np.array([x, y, o * a]))[0] for x, y, o in zip(vx, vy, om)]) * load
     gap = np.maximum(h + (fx * vx + fy * vy + mz * om), 0.0)
 

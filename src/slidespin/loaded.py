@@ -56,9 +56,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from . import _ode
 from . import _validate as v
-from ._kernel import STATUS_OK, wrench_world
+from ._twist_wrench import TwistWrench
 from ._validate import _short
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
@@ -66,11 +65,11 @@ from .loads import Incline, Load
 from .statics import (
     WRENCH_MAX,
     OnsetNotFound,
-    StaticSupport,
     _load_factor_nat,
     _onset_from_par,
     _onset_nat,
     check_anisotropy,
+    static_support,
 )
 
 __all__ = ["GAUGE_TOL", "LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
@@ -233,21 +232,17 @@ class _Problem:
 
     def __init__(self, body, friction, load, incline, g):
         self.body, self.friction, self.load, self.incline, self.g = body, friction, load, incline, g
-        self.a = body.patch.a
+        self.a = body.length_unit
         self.t_unit = math.sqrt(self.a / g)
         self.v_unit = math.sqrt(self.a * g)
-        self.par = body.kernel_params(friction, _TOL)
-        self.k = float(self.par[_ode.P_K])
+        self.tw = TwistWrench(body, friction, _TOL)  # the wrench of any patch
+        self.k = self.tw.k
         self.nf = 1.0 if incline is None else incline.normal_factor
         if incline is None:
             self.grav = (0.0, 0.0)
         else:
             dx, dy = incline.direction
             self.grav = (incline.downhill_factor * dx, incline.downhill_factor * dy)
-        p = self.par
-        self.kargs = (p[_ode.P_BN], int(p[_ode.P_LAW]), p[_ode.P_XG], p[_ode.P_YG],
-                      p[_ode.P_T00], p[_ode.P_T01], p[_ode.P_T10], p[_ode.P_T11],
-                      p[_ode.P_BODY] != 0.0)
         self.constant = load is None or load.is_constant
         self.n_rhs = 0
         self.failure = ""
@@ -274,9 +269,7 @@ class _Problem:
         return bx, by, bm
 
     def friction_acc(self, u1, u2, u3, phi):
-        fx, fy, m, st = wrench_world(*self.kargs, phi, u1, u2, u3 / self.k, _TOL)
-        if st != STATUS_OK:  # pragma: no cover - guard
-            raise RuntimeError("simulate_loaded: the wrench quadrature missed its error target")
+        fx, fy, m = self.tw(phi, u1, u2, u3 / self.k)
         nf = self.nf
         return fx * nf, fy * nf, m * nf / self.k
 
@@ -324,7 +317,7 @@ class _Problem:
         if key not in self._support:
             if len(self._support) > 8:
                 self._support.clear()
-            self._support[key] = StaticSupport(self.par, self.friction, key)
+            self._support[key] = static_support(self.tw, self.friction, key)
         return self._support[key]
 
     def gauge(self, t, phi):
@@ -342,7 +335,7 @@ class _Problem:
         Raises :class:`~slidespin.statics.OnsetNotFound` if the solve fails.
         """
         b = np.array(self.b(t, phi))
-        return _onset_from_par(self.body, self.par, self.friction, phi, b, self.nf,
+        return _onset_from_par(self.tw, self.friction, phi, b, self.nf,
                                self.support(phi), slipping=True, d0=self._d_last)
 
 
@@ -422,7 +415,7 @@ def simulate_loaded(
     >>> tr.ending, bool(abs(tr.x[-1] - a / 2) < 1e-9)
     ('moving_at_t_end', True)
     """
-    check_body_friction(body, friction, elliptic_only="loads and inclines")
+    check_body_friction(body, friction)
     if load is not None or incline is not None:  # the static-friction set C will be needed
         check_anisotropy(body, friction, "static friction under a load or on an incline")
     if not isinstance(initial_state, State):

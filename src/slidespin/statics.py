@@ -59,10 +59,14 @@ from scipy.optimize import minimize, root
 
 from . import _ode
 from . import _validate as v
+from ._footprint_kernel import NGEO
+from ._footprint_kernel import wrench_world as fp_wrench_world
 from ._kernel import STATUS_OK, wrench_world
+from ._twist_wrench import TwistWrench
 from .body import Body, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline
+from .pressure import LAW_LINEAR, LAW_UNIFORM
 
 __all__ = [
     "Onset",
@@ -127,6 +131,140 @@ class StaticSupport:
         return h, grad
 
 
+class FootprintSupport:
+    """Support function h and support point ∇h of C for a footprint at one body angle.
+
+    Natural units as :class:`StaticSupport` (lengths in ℓ = the footprint's extent, unit
+    load). From the definition (MODEL §11), with r′ = R(φ)(r − r_G), S = 𝔽ᵀ (world frame)
+    and c(r) = d_F + d_M J r′ the velocity field of the rigid twist d:
+
+        h(d) = ∫ p |S c| dS,      ∇h(d) = (𝔽 ∫ p ẑ dS,  ∫ p (J r′)·𝔽ẑ dS),  ẑ = Sc/|Sc|.
+
+    *Isotropic* 𝔽 = μ·1: ẑ = ĉ, so h(d) = −W(d)·d and ∇h(d) = −W(d) with W the sliding
+    wrench of the twist d (one call of the exact footprint kernel).
+
+    *Any tensor*: S J = J L with L = J⁻¹ S J, so S c = S d_F + d_M J (L r′) is the rigid
+    velocity field of the twist (S d_F, d_M) on the image y = L r′ of the footprint, and
+    h(d) = ∫_{LΩ} p̂ |S d_F + d_M J y| dy with p̂(y) = p(r)/det L (det L = det 𝔽 > 0): the
+    dissipation of that twist under *isotropic unit* friction on the image footprint, which
+    is again a footprint the exact kernels take: a linear map sends each polygon to a
+    polygon (its edges mapped, orientation kept since det L > 0), each disk or hole of
+    radius R to an ellipse with semi-axes R σ₁, R σ₂ (σ the singular values of L), and a
+    linear pressure to a linear pressure. The polygons are integrated by the footprint
+    kernel (exact), each disk (σ = ±1) by the elliptic kernel with its own load
+    ∫_disk p = π R² p(o) and pressure centroid o + (R²/4) ∇p/p(o) (uniform or linear law,
+    1e-13), moments carried to G. The support point is (−𝔽 F_iso, −M_iso), F_iso and M_iso
+    the image twist's isotropic wrench.
+    """
+
+    __slots__ = ("S", "circ", "edge_geo", "edges", "fw", "iso", "phi", "tw")
+
+    def __init__(self, tw: TwistWrench, friction: FrictionTensor, phi: float) -> None:
+        self.tw = tw
+        self.phi = phi
+        fw = friction.world_matrix(phi)
+        self.fw = fw
+        self.S = fw.T.copy()
+        self.iso = friction.fx == friction.fy and friction.f == 0.0
+        self.edges = np.empty((0, 4))
+        self.edge_geo = np.zeros(NGEO)
+        self.circ: list[tuple] = []
+        if self.iso:
+            return
+        geo = tw.geo
+        p0, p1, p2 = geo[3], geo[4], geo[5]
+        gx, gy = geo[6], geo[7]
+        lmap = np.linalg.solve(_J, self.S @ _J)  # L = J⁻¹ S J
+        c, s = math.cos(phi), math.sin(phi)
+        mmap = lmap @ np.array([[c, -s], [s, c]])  # body offsets from G → image
+        det = float(np.linalg.det(lmap))
+        pg = p0 + p1 * gx + p2 * gy  # p at G
+        grad = np.linalg.solve(mmap.T, np.array([p1, p2]))  # ∇ of p(y) in the image
+        q0, q1, q2 = pg / det, grad[0] / det, grad[1] / det  # p̂ = p/det L
+        e = tw.edges
+        if e.shape[0]:
+            a0 = (e[:, 0:2] - (gx, gy)) @ mmap.T
+            a1 = (e[:, 2:4] - (gx, gy)) @ mmap.T
+            self.edges = np.ascontiguousarray(np.hstack((a0, a1)))
+            o = mmap @ (geo[0:2] - (gx, gy))
+            ext = float(np.max(np.hypot(a0[:, 0] - o[0], a0[:, 1] - o[1])))
+            # load and first moments of the polygons' part (the kernel's pure-translation
+            # branch needs them): signed fan from o, exact rules for linear and quadratic
+            ar = 0.5 * ((a0[:, 0] - o[0]) * (a1[:, 1] - o[1])
+                        - (a0[:, 1] - o[1]) * (a1[:, 0] - o[0]))
+            mids = (0.5 * (a0 + a1), 0.5 * (a0 + o), 0.5 * (a1 + o))
+            load = 0.0
+            mx = my = 0.0
+            for mid in mids:
+                pv = q0 + q1 * mid[:, 0] + q2 * mid[:, 1]
+                load += float(np.sum(ar * pv)) / 3.0
+                mx += float(np.sum(ar * pv * mid[:, 0])) / 3.0
+                my += float(np.sum(ar * pv * mid[:, 1])) / 3.0
+            self.edge_geo = np.array([o[0], o[1], ext, q0, q1, q2, 0.0, 0.0, mx / load,
+                                      my / load, load])
+        if tw.circles.shape[0]:
+            u_, sig, _ = np.linalg.svd(lmap)
+            if np.linalg.det(u_) < 0.0:
+                u_[:, 1] *= -1.0
+            psi = math.atan2(u_[1, 0], u_[0, 0])
+            bn = float(sig[1] / sig[0])
+            for ox, oy, rad, sgn in tw.circles:
+                po = p0 + p1 * ox + p2 * oy  # p at the disk's centre (its mean)
+                cen = np.array([ox, oy]) + (0.25 * rad * rad / po) * np.array([p1, p2])
+                gimg = mmap @ (cen - (gx, gy))  # the disk's pressure centroid, image
+                eimg = mmap @ (np.array([ox, oy]) - (gx, gy))  # its centre, image
+                semi = float(rad * sig[0])
+                gl = u_.T @ (gimg - eimg) / semi  # centroid in the ellipse's frame, per a
+                law = LAW_UNIFORM if p1 == 0.0 and p2 == 0.0 else LAW_LINEAR
+                self.circ.append((bn, law, float(gl[0]), float(gl[1]), psi, semi,
+                                  float(gimg[0]), float(gimg[1]),
+                                  float(sgn * math.pi * rad * rad * po)))
+
+    def _image_wrench(self, vx, vy, om):
+        """Isotropic unit-friction wrench (F, M about G) of the image twist (vx, vy, ω)."""
+        fx = fy = mm = 0.0
+        if self.edges.shape[0]:
+            fx, fy, mm = fp_wrench_world(self.edges, _NO_CIRCLES, self.edge_geo, 1.0, 0.0,
+                                         0.0, 1.0, False, 0.0, vx, vy, om)
+        for bn, law, xg, yg, psi, semi, gx, gy, load in self.circ:
+            # velocity of the twist at the disk's pressure centroid, lengths per semi-axis
+            wx, wy = vx - om * gy, vy + om * gx
+            f1, f2, m, st = wrench_world(bn, law, xg, yg, 1.0, 0.0, 0.0, 1.0, False, psi,
+                                         wx / semi, wy / semi, om, _TOL)
+            if st != STATUS_OK:  # pragma: no cover - guard
+                raise RuntimeError("statics: the wrench quadrature missed its error target")
+            f1 *= load
+            f2 *= load
+            fx += f1
+            fy += f2
+            mm += m * load * semi + gx * f2 - gy * f1
+        return fx, fy, mm
+
+    def __call__(self, d):
+        """(h(d), ∇h(d)) for a direction d = (d_Fx, d_Fy, d_M) (natural units)."""
+        if self.iso:
+            fx, fy, m = self.tw(self.phi, float(d[0]), float(d[1]), float(d[2]))
+            return -(fx * d[0] + fy * d[1] + m * d[2]), np.array([-fx, -fy, -m])
+        vx, vy = self.S @ np.asarray(d[:2], dtype=float)
+        om = float(d[2])
+        f1, f2, mom = self._image_wrench(float(vx), float(vy), om)
+        h = -(f1 * vx + f2 * vy + mom * om)
+        grad = np.array([-(self.fw[0, 0] * f1 + self.fw[0, 1] * f2),
+                         -(self.fw[1, 0] * f1 + self.fw[1, 1] * f2), -mom])
+        return h, grad
+
+
+_NO_CIRCLES = np.empty((0, 4))
+
+
+def static_support(tw: TwistWrench, friction: FrictionTensor, phi: float):
+    """The support function of C at angle ``phi``: :class:`StaticSupport` for an ellipse,
+    :class:`FootprintSupport` for a footprint (natural units of ``tw``)."""
+    if tw.footprint:
+        return FootprintSupport(tw, friction, phi)
+    return StaticSupport(tw.par, friction, phi)
+
+
 #: bound on (friction anisotropy) × (patch elongation): the static features map the patch to
 #: its image under the tensor, an ellipse elongated by at most their product; the wrench
 #: quadrature meets its target for every product ≤ 1e4 measured (aspects 1e-3..30, both
@@ -140,9 +278,14 @@ WRENCH_NEGLIGIBLE = 1e-300
 
 
 def anisotropy_elongation(body, friction) -> float:
-    """cond(𝔽) × max(b/a, a/b): the worst elongation of the image patch the statics see."""
+    """cond(𝔽) × max(b/a, a/b): the worst elongation of the image patch the statics see
+    (cond(𝔽) for a footprint: the image of a disk)."""
     sv = np.linalg.svd(friction.matrix, compute_uv=False)
     ratio = math.inf if sv[1] <= 0.0 else float(sv[0] / sv[1])
+    if body.is_footprint:
+        # a footprint's polygons map to polygons (the exact kernel); its disks to ellipses
+        # of elongation cond(𝔽) (elongation 1 here)
+        return ratio
     bn = body.patch.b / body.patch.a
     return ratio * max(bn, 1.0 / bn)
 
@@ -158,7 +301,7 @@ def check_anisotropy(body, friction, feature="static friction") -> None:
 
 
 def _check(body, friction):
-    check_body_friction(body, friction, elliptic_only="static friction")
+    check_body_friction(body, friction)
     check_anisotropy(body, friction)
 
 
@@ -233,8 +376,8 @@ def support_function(body: Body, friction: FrictionTensor, direction, phi: float
     d = _wrench3("direction", direction)
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    a = body.patch.a
-    sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
+    a = body.length_unit
+    sup = static_support(TwistWrench(body, friction), friction, v.finite("phi", phi))
     h, grad = sup(np.array([d[0], d[1], d[2] * a]))
     load = body.mass * g * nf
     return float(h * load), np.array([grad[0] * load, grad[1] * load, grad[2] * load * a])
@@ -316,7 +459,7 @@ def load_factor(body: Body, friction: FrictionTensor, applied_wrench, phi: float
     b = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", b):
         return math.inf
-    sup = StaticSupport(body.kernel_params(friction), friction, v.finite("phi", phi))
+    sup = static_support(TwistWrench(body, friction), friction, v.finite("phi", phi))
     return _load_factor_nat(sup, b)[0]
 
 
@@ -324,7 +467,7 @@ def _natural_wrench(body, w, nf, g):
     """W_a per unit normal load, moment per unit a: the wrench :func:`load_factor` and
     :func:`onset` both judge (one formula, so their verdicts agree to the last bit)."""
     load = body.mass * g * nf
-    return np.array([w[0] / load, w[1] / load, w[2] / (load * body.patch.a)])
+    return np.array([w[0] / load, w[1] / load, w[2] / (load * body.length_unit)])
 
 
 def can_stick(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
@@ -490,9 +633,9 @@ def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False, lam_tol=0.0):
 
 def _scaled_b(body, wrench, load_nf, g):
     """Applied accelerations in scaled natural coordinates (Qx, Qy, T/k)/(m g)."""
-    k = body.radius_of_gyration / body.patch.a
+    k = body.radius_of_gyration / body.length_unit
     mg = body.mass * g
-    return np.array([wrench[0] / mg, wrench[1] / mg, wrench[2] / (mg * body.patch.a * k)])
+    return np.array([wrench[0] / mg, wrench[1] / mg, wrench[2] / (mg * body.length_unit * k)])
 
 
 def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
@@ -538,37 +681,32 @@ def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     phi = v.finite("phi", phi)
-    par = body.kernel_params(friction, _TOL)
+    tw = TwistWrench(body, friction, _TOL)
     wn = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", wn):
         return None
-    sup = StaticSupport(par, friction, phi)
+    sup = static_support(tw, friction, phi)
     lam_star, d = _load_factor_nat(sup, wn)
     if lam_star >= 1.0:  # the verdict of load_factor and can_stick, bit for bit
         return None
-    u, lam, resid = _onset_from_par(body, par, friction, phi, _scaled_b(body, w, nf, g), nf,
+    u, lam, resid = _onset_from_par(tw, friction, phi, _scaled_b(body, w, nf, g), nf,
                                     sup, slipping=True, d0=d)
     k = body.radius_of_gyration
     return Onset(u, np.array([u[0], u[1], u[2] / k]), lam * g, resid)
 
 
-def _friction_acc(par, phi, nf):
+def _friction_acc(tw: TwistWrench, phi, nf):
     """u ↦ A(u) = cos α · (Fx, Fy, M/k) in scaled natural coordinates."""
-    k = par[_ode.P_K]
-    args = (par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-            par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-            par[_ode.P_BODY] != 0.0)
+    k = tw.k
 
     def acc(u):
-        fx, fy, m, st = wrench_world(*args, phi, u[0], u[1], u[2] / k, _TOL)
-        if st != STATUS_OK:  # pragma: no cover - guard
-            raise RuntimeError("statics: the wrench quadrature missed its error target")
+        fx, fy, m = tw(phi, u[0], u[1], u[2] / k)
         return np.array([fx * nf, fy * nf, m * nf / k])
 
     return acc
 
 
-def _onset_from_par(body, par, friction, phi, b, nf, sup=None, *, slipping=False, d0=None):
+def _onset_from_par(tw, friction, phi, b, nf, sup=None, *, slipping=False, d0=None):
     """(u, λ, residual) of the onset for scaled applied accelerations b, or None if stuck.
 
     ``b`` is in scaled natural coordinates (Qx, Qy, T/k)/(m g); ``nf`` = cos α.
@@ -590,9 +728,9 @@ def _onset_from_par(body, par, friction, phi, b, nf, sup=None, *, slipping=False
     """
     if not b.any():
         return None
-    k = par[_ode.P_K]
+    k = tw.k
     if sup is None:
-        sup = StaticSupport(par, friction, phi)
+        sup = static_support(tw, friction, phi)
     # wrench per unit normal load, natural units: (Qx, Qy, T)/(m g cos α)
     bw = np.array([b[0], b[1], b[2] * k]) / nf
     lam_star, d = _load_factor_nat(sup, bw, d0)
@@ -601,7 +739,7 @@ def _onset_from_par(body, par, friction, phi, b, nf, sup=None, *, slipping=False
     u0 = np.array([d[0], d[1], k * d[2]])
     u0 /= np.linalg.norm(u0)
     lam_tol = _ONSET_LAM_TOL * (1.0 + float(np.linalg.norm(b)))
-    got = _onset_nat(_friction_acc(par, phi, nf), b, u0, lam_tol=lam_tol)
+    got = _onset_nat(_friction_acc(tw, phi, nf), b, u0, lam_tol=lam_tol)
     if got is None:
         raise OnsetNotFound(
             f"no slip direction found for the applied wrench (load factor {lam_star:.12g} "
