@@ -1,8 +1,10 @@
 """``slidespin limit-surface CASE.toml``: the limit surface of a case's body (MODEL §11).
 
-Reads the body, friction tensor, body angle (``[initial] phi``) and g of a case file, samples
-the limit surface (:func:`slidespin.limit_surface.limit_surface`), prints the fits and their
-errors, and optionally writes JSON, npz and a 3-D figure. Plugin of :mod:`slidespin.cli`
+Reads the body (an ellipse, a circle or any footprint of ``[patch]``), friction tensor, body
+angle (``[initial] phi``), g and tilt (``[incline]``: the normal load m g cos α; a ``[load]``
+plays no part and is ignored) of a case file, samples the limit surface
+(:func:`slidespin.limit_surface.limit_surface`), prints the fits and their errors, and
+optionally writes JSON, npz and a 3-D figure. Plugin of :mod:`slidespin.cli`
 (``configure(parser)``, ``run(args)``).
 """
 
@@ -46,7 +48,7 @@ def run(args) -> int:
         raise ValueError(f"--npz = {npz!r} is invalid; valid values: a path ending in .npz")
     case = load_case(args.case)
     ls = limit_surface(case.body, case.friction, n=args.n, phi=case.initial_state.phi,
-                       g=case.g, length=args.length)
+                       g=case.g, length=args.length, incline=case.incline)
     files = []
     if npz:
         import io
