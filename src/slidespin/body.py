@@ -6,7 +6,9 @@ vertical axis through the mass centre G), I* = I/(m a²) → ``inertia_ratio``; 
 
 Beyond the paper (MODEL §10) the patch may be any footprint of :mod:`slidespin.footprint`
 (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``, ``Pads``) under uniform or linear
-pressure. Its length unit ℓ (:attr:`Body.length_unit`, the footprint's ``extent``: the radius
+pressure. A ``Disk`` (placed anywhere) also takes the Boussinesq and Hertz laws, which are
+defined on circles (MODEL §3, §10): it is then the circle of its radius with G at its centre,
+and runs on the elliptic engine exactly like ``Circle(radius)``. Its length unit ℓ (:attr:`Body.length_unit`, the footprint's ``extent``: the radius
 of a disk or ring, the half-diagonal of a centred rectangle) plays the role of the ellipse's
 semi-axis a in I* = I/(m ℓ²), β*/ℓ and the natural units of the integrator.
 """
@@ -22,7 +24,13 @@ from . import _validate as v
 from . import footprint as _fp
 from .friction import FrictionTensor
 from .geometry import Ellipse
-from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
+from .pressure import (
+    BoussinesqPressure,
+    HertzPressure,
+    LinearPressure,
+    PressureLaw,
+    UniformPressure,
+)
 
 __all__ = ["Body", "State", "check_body_friction"]
 
@@ -43,15 +51,19 @@ class Body:
         Normal-pressure law on the patch. The mass centre G lies above the pressure
         centroid: the patch centre (the area centroid of a footprint), or (ξc, ηc) for the
         linear law. Footprints take the uniform and linear laws (the linear law must stay
-        ≥ 0 on the footprint); a user ``PressureMap`` works with
-        :func:`slidespin.footprint_wrench` only (no compiled integration).
+        ≥ 0 on the footprint); a ``Disk`` also takes ``BoussinesqPressure()`` and
+        ``HertzPressure()`` (G at the disk's centre; the body is then the circle of that
+        radius, run by the elliptic engine: :attr:`is_footprint` is False); a user
+        ``PressureMap`` works with :func:`slidespin.footprint_wrench` only (no compiled
+        integration).
     mass : float
         Mass m [kg], in [1e-12, 1e12].
     moment_of_inertia : float or None
         I about the vertical axis through G [kg m²], with I* = I/(m ℓ²) in [1e-8, 1e8]
         (docs/errors.md, "Valid ranges"; ℓ = :attr:`length_unit`). ``None`` means the
         inertia of a uniform plate of the patch's shape about its centre: I = m (a² + b²)/4
-        for an ellipse, the paper's I* = (1 + κ²)/4 (eq. 7); ``patch.plate_inertia(mass)``
+        for an ellipse (and m R²/2 for a disk under Boussinesq or Hertz pressure), the paper's
+        I* = (1 + κ²)/4 (eq. 7); ``patch.plate_inertia(mass)``
         for a footprint, about its area centroid (for ``Pads`` a plate covering the pads
         only, with no mass between them: give I explicitly for a sled or a chair). For the
         linear law, whose G is off-centre, give I explicitly if the body is not such a plate.
@@ -68,56 +80,56 @@ class Body:
     0.8472
     """
 
-    patch: object
-    pressure: object
+    patch: Ellipse | _fp.Footprint
+    pressure: PressureLaw
     mass: float
     moment_of_inertia: float | None = None
 
     def __post_init__(self) -> None:
-        footprint = _fp.is_footprint(self.patch)
-        if not (footprint or isinstance(self.patch, Ellipse)):
+        patch = self.patch
+        if not (_fp.is_footprint(patch) or isinstance(patch, Ellipse)):
             raise ValueError(
-                f"patch = {self.patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
+                f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
                 "footprint (Polygon, Rectangle, Disk, Annulus, Pads)"
             )
+        footprint = _fp.is_footprint(patch) and not _round_law(patch, self.pressure)
         if footprint:
             from .footprint_pressure import pressure_coefficients
 
             if not isinstance(self.pressure, (UniformPressure, LinearPressure)):
-                raise ValueError(
-                    f"pressure = {self.pressure!r} is invalid on a footprint; valid values: "
-                    "UniformPressure(), LinearPressure(xi_c, eta_c) (Boussinesq and Hertz are "
-                    "defined on ellipses only; a PressureMap works with footprint_wrench only)"
-                )
-            pressure_coefficients(self.patch, self.pressure)  # raises where p < 0
+                raise ValueError(_footprint_law_error(patch, self.pressure))
+            pressure_coefficients(patch, self.pressure)  # raises where p < 0
         elif not isinstance(self.pressure, _LAWS):
             raise ValueError(
                 f"pressure = {self.pressure!r} is invalid; valid values: UniformPressure(), "
                 "LinearPressure(xi_c, eta_c), BoussinesqPressure(), HertzPressure()"
             )
-        else:
-            self.pressure.check_patch(self.patch)
+        elif isinstance(patch, (Ellipse, _fp.Disk)):  # an ellipse, or a disk: a circle
+            self.pressure.check_patch(patch)
         m = v.bounded("mass", self.mass, *v.MASS, "kg")
         object.__setattr__(self, "mass", m)
-        a = _length_unit(self.patch)
+        a = _length_unit(patch)
         lo, hi = v.INERTIA_RATIO
         unit = "extent" if footprint else "a"
         if self.moment_of_inertia is None:
-            if footprint:
-                inertia = self.patch.plate_inertia(m)
+            if isinstance(patch, Ellipse) or (isinstance(patch, _fp.Disk) and not footprint):
+                inertia = m * (a**2 + patch.b**2) / 4.0
+            else:
+                inertia = patch.plate_inertia(m)
                 # the default plate inertia obeys the same I* range as a given one (a
                 # footprint's second moment may under- or overflow, or be far off the scale)
                 with np.errstate(all="ignore"):
                     i_star = inertia / m / a / a
-                if not (math.isfinite(inertia) and inertia > 0.0
-                        and lo * (1.0 - 1e-12) <= i_star <= hi * (1.0 + 1e-12)):
+                if not (
+                    math.isfinite(inertia)
+                    and inertia > 0.0
+                    and lo * (1.0 - 1e-12) <= i_star <= hi * (1.0 + 1e-12)
+                ):
                     raise ValueError(
                         f"patch = {v._short(self.patch, 100)} is invalid with mass = {m!r} kg: its plate "
                         f"inertia I = {inertia!r} kg m^2 gives I/(m {unit}^2) = {i_star:.6g}; "
                         f"valid range: [{lo:g}, {hi:g}] (give moment_of_inertia explicitly)"
                     )
-            else:
-                inertia = m * (a**2 + self.patch.b**2) / 4.0
         else:
             inertia = v.positive("moment_of_inertia", self.moment_of_inertia, "kg m^2")
             i_star = inertia / m / a / a
@@ -145,8 +157,10 @@ class Body:
 
     @property
     def is_footprint(self) -> bool:
-        """True if the patch is a footprint of :mod:`slidespin.footprint` (not an ellipse)."""
-        return _fp.is_footprint(self.patch)
+        """True if the body runs on the footprint kernel: its patch is a footprint of
+        :mod:`slidespin.footprint`, except a ``Disk`` under Boussinesq or Hertz pressure,
+        which is a circle and runs on the elliptic engine (False, as for an ellipse)."""
+        return _fp.is_footprint(self.patch) and not _round_law(self.patch, self.pressure)
 
     @property
     def length_unit(self) -> float:
@@ -156,22 +170,33 @@ class Body:
         return _length_unit(self.patch)
 
     @property
+    def inertia(self) -> float:
+        """I [kg m²]: :attr:`moment_of_inertia`, which ``__post_init__`` always sets (the
+        default plate inertia for ``None``), typed as a float."""
+        inertia = self.moment_of_inertia
+        assert inertia is not None  # set by __post_init__
+        return inertia
+
+    @property
     def inertia_ratio(self) -> float:
         """I* = I/(m ℓ²) (paper §3, appendix; ℓ = a for an ellipse)."""
-        return self.moment_of_inertia / (self.mass * self.length_unit**2)
+        return self.inertia / (self.mass * self.length_unit**2)
 
     @property
     def radius_of_gyration(self) -> float:
         """k = √(I/m) [m]."""
-        return math.sqrt(self.moment_of_inertia / self.mass)
+        return math.sqrt(self.inertia / self.mass)
 
     @property
     def mass_centre(self) -> tuple[float, float]:
         """G in the body frame [m] (the pressure centroid)."""
-        if self.is_footprint:
+        patch = self.patch
+        if isinstance(patch, _fp.Disk) and _round_law(patch, self.pressure):
+            return (float(patch.centre[0]), float(patch.centre[1]))  # G over the disk's centre
+        if not isinstance(patch, Ellipse):
             from .footprint_pressure import mass_centre
 
-            return mass_centre(self.patch, self.pressure)
+            return mass_centre(patch, self.pressure)
         return self.pressure.centroid
 
     def kernel_params(self, friction: FrictionTensor, wrench_tol: float = 1e-12) -> np.ndarray:
@@ -199,14 +224,15 @@ class Body:
         from . import _ode
 
         t = friction.matrix
-        if self.is_footprint:
+        patch = self.patch
+        if self.is_footprint and not isinstance(patch, Ellipse):  # the footprint kernel
             from .footprint_pressure import kernel_geometry, scaled_arrays, symmetry
 
             ell = self.length_unit
-            arrays = self.patch.to_arrays()
+            arrays = patch.to_arrays()
             sc = scaled_arrays(arrays, ell)
-            geo = kernel_geometry(self.patch, self.pressure, arrays, length=ell)
-            central, axial = symmetry(self.patch, self.pressure)
+            geo = kernel_geometry(patch, self.pressure, arrays, length=ell)
+            central, axial = symmetry(patch, self.pressure)
             par = np.zeros(_ode.NPAR)
             par[_ode.P_BN] = 1.0  # (the ellipse kernel's constants: valid, unused)
             par[_ode.P_T00], par[_ode.P_T01] = t[0]
@@ -217,12 +243,18 @@ class Body:
             par[_ode.P_SHAPE] = _ode.SHAPE_FOOTPRINT
             par[_ode.P_CSYM] = 1.0 if central else 0.0
             par[_ode.P_RSYM] = 1.0 if axial else 0.0
-            return (par, np.ascontiguousarray(sc.edges), np.ascontiguousarray(sc.circles),
-                    np.ascontiguousarray(geo))
-        a = self.patch.a
-        xg, yg = self.mass_centre
+            return (
+                par,
+                np.ascontiguousarray(sc.edges),
+                np.ascontiguousarray(sc.circles),
+                np.ascontiguousarray(geo),
+            )
+        assert isinstance(patch, (Ellipse, _fp.Disk))  # an ellipse, or a disk: a circle
+        a = patch.a
+        # G relative to the ellipse's centre (a disk under Boussinesq or Hertz: its centre)
+        xg, yg = self.pressure.centroid
         par = np.empty(_ode.NPAR)
-        par[_ode.P_BN] = self.patch.b / a
+        par[_ode.P_BN] = patch.b / a
         par[_ode.P_LAW] = self.pressure.code
         par[_ode.P_XG] = xg / a
         par[_ode.P_YG] = yg / a
@@ -237,9 +269,42 @@ class Body:
         return (par,) + _ode.no_footprint()
 
 
-def _length_unit(patch) -> float:
-    """ℓ: the semi-axis a of an ellipse, the extent of a footprint [m]."""
-    return float(patch.extent) if _fp.is_footprint(patch) else patch.a
+def _length_unit(patch: Ellipse | _fp.Footprint) -> float:
+    """ℓ: the semi-axis a of an ellipse, the extent of a footprint [m] (the radius of a disk,
+    its a, whatever the pressure law)."""
+    return patch.a if isinstance(patch, Ellipse) else float(patch.extent)
+
+
+def _round_law(patch: object, pressure: object) -> bool:
+    """A ``Disk`` under the Boussinesq or Hertz law: a circle, for the elliptic engine."""
+    return isinstance(patch, _fp.Disk) and isinstance(pressure, (BoussinesqPressure, HertzPressure))
+
+
+def _footprint_law_error(patch, pressure) -> str:
+    """The message for a pressure law a footprint does not take (MODEL §10)."""
+    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        law = type(pressure).__name__
+        if isinstance(patch, _fp.Pads):
+            why = (
+                "on Pads the pads' load shares are not determined by the law; give "
+                "UniformPressure() or LinearPressure(xi_c, eta_c), or one Disk"
+            )
+        elif isinstance(patch, _fp.Annulus) and patch.inner_radius == 0.0:
+            why = f"use Disk({patch.outer_radius!r}) for a full disk"
+        else:
+            name = type(patch).__name__
+            why = f"it is not defined on {'an' if name[0] in 'AEIOU' else 'a'} {name}"
+        return (
+            f"pressure = {law}() is invalid on patch = {v._short(patch, 100)}: {why}; "
+            f"{law} is defined on an Ellipse, a Circle or a single Disk (MODEL §3, §10); "
+            "valid values on this patch: UniformPressure(), LinearPressure(xi_c, eta_c)"
+        )
+    return (
+        f"pressure = {pressure!r} is invalid on a footprint; valid values: "
+        "UniformPressure(), LinearPressure(xi_c, eta_c), and on a single Disk also "
+        "BoussinesqPressure() and HertzPressure() (a PressureMap works with "
+        "footprint_wrench only)"
+    )
 
 
 @dataclass(frozen=True, slots=True)
@@ -271,8 +336,14 @@ class State:
     omega: float = 0.0
 
     def __post_init__(self) -> None:
-        limits = (("x", v.POSITION, "m"), ("y", v.POSITION, "m"), ("phi", None, "rad"),
-                  ("vx", v.SPEED, "m/s"), ("vy", v.SPEED, "m/s"), ("omega", v.SPIN, "rad/s"))
+        limits = (
+            ("x", v.POSITION, "m"),
+            ("y", v.POSITION, "m"),
+            ("phi", None, "rad"),
+            ("vx", v.SPEED, "m/s"),
+            ("vy", v.SPEED, "m/s"),
+            ("omega", v.SPIN, "rad/s"),
+        )
         for name, bound, unit in limits:
             x = v.finite(name, getattr(self, name))
             if bound is not None:
@@ -281,8 +352,13 @@ class State:
 
     @classmethod
     def from_speed(
-        cls, speed: float, omega: float, theta: float = 0.0, phi: float = 0.0,
-        x: float = 0.0, y: float = 0.0,
+        cls,
+        speed: float,
+        omega: float,
+        theta: float = 0.0,
+        phi: float = 0.0,
+        x: float = 0.0,
+        y: float = 0.0,
     ) -> State:
         """State from the paper's variables: speed v in [0, 1e8] m/s in direction ϑ, spin ω.
 

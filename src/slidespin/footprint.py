@@ -138,11 +138,17 @@ def _segments_intersect(p, q, r, s, eps) -> bool:
         return True
 
     def on(a, b, c):  # c on segment ab, given collinear
-        return (min(a[0], b[0]) - eps <= c[0] <= max(a[0], b[0]) + eps
-                and min(a[1], b[1]) - eps <= c[1] <= max(a[1], b[1]) + eps)
+        return (
+            min(a[0], b[0]) - eps <= c[0] <= max(a[0], b[0]) + eps
+            and min(a[1], b[1]) - eps <= c[1] <= max(a[1], b[1]) + eps
+        )
 
-    return ((o1 == 0 and on(p, q, r)) or (o2 == 0 and on(p, q, s))
-            or (o3 == 0 and on(r, s, p)) or (o4 == 0 and on(r, s, q)))
+    return (
+        (o1 == 0 and on(p, q, r))
+        or (o2 == 0 and on(p, q, s))
+        or (o3 == 0 and on(r, s, p))
+        or (o4 == 0 and on(r, s, q))
+    )
 
 
 def _edges(ccw: np.ndarray) -> np.ndarray:
@@ -302,11 +308,13 @@ class _Patch:
         e, c = self._raw_arrays()
         pts = np.vstack((e[:, :2], c[:, :2]))
         sx, sy = pts.mean(axis=0)
-        a, mx, my, sxx, sxy, syy = _moments(e - np.array([sx, sy, sx, sy]),
-                                            c - np.array([sx, sy, 0.0, 0.0]))
+        a, mx, my, sxx, sxy, syy = _moments(
+            e - np.array([sx, sy, sx, sy]), c - np.array([sx, sy, 0.0, 0.0])
+        )
         cx, cy = mx / a, my / a
-        j = np.array([[sxx - a * cx * cx, sxy - a * cx * cy],
-                      [sxy - a * cx * cy, syy - a * cy * cy]])
+        j = np.array(
+            [[sxx - a * cx * cx, sxy - a * cx * cy], [sxy - a * cx * cy, syy - a * cy * cy]]
+        )
         return a, (cx + sx, cy + sy), j
 
     @property
@@ -450,8 +458,7 @@ class Polygon(_Patch):
                 f"a vertex from the vertices' mean) is invalid; valid range: [{lo:g}, {hi:g}] m"
             )
         far = tuple(np.max(np.abs(arr), axis=0).tolist())
-        _offset("vertices", far, radius, "polygon",
-                f"vertices: largest |xi|, |eta| = {far!r} m")
+        _offset("vertices", far, radius, "polygon", f"vertices: largest |xi|, |eta| = {far!r} m")
         _offset("centre", self.centre, radius, "polygon")
         _check_simple(arr)
         thin = (2.0 * radius) ** 2 / abs(_signed_area(arr))
@@ -614,11 +621,17 @@ class Annulus(_Patch):
         """The outer circle and (if any) the hole, closed, in the body frame [m]."""
         t = np.linspace(0.0, 2.0 * np.pi, n)
         cx, cy = self.centre
-        out = [np.column_stack((cx + self.outer_radius * np.cos(t),
-                                cy + self.outer_radius * np.sin(t)))]
+        out = [
+            np.column_stack(
+                (cx + self.outer_radius * np.cos(t), cy + self.outer_radius * np.sin(t))
+            )
+        ]
         if self.inner_radius > 0.0:
-            out.append(np.column_stack((cx + self.inner_radius * np.cos(t),
-                                        cy + self.inner_radius * np.sin(t))))
+            out.append(
+                np.column_stack(
+                    (cx + self.inner_radius * np.cos(t), cy + self.inner_radius * np.sin(t))
+                )
+            )
         return out
 
 
@@ -639,6 +652,18 @@ class Disk(Annulus):
     @property
     def radius(self) -> float:
         """Disk radius [m]."""
+        return self.outer_radius
+
+    @property
+    def a(self) -> float:
+        """Semi-axis a = radius [m]: a disk is a circle, so that under the Boussinesq and Hertz
+        laws (defined on ellipses and circles, MODEL §3) it runs on the elliptic engine like
+        :class:`~slidespin.Circle` (:class:`slidespin.Body`)."""
+        return self.outer_radius
+
+    @property
+    def b(self) -> float:
+        """Semi-axis b = radius [m] (see :attr:`a`)."""
         return self.outer_radius
 
     def outline(self, n: int = 181) -> np.ndarray:
@@ -680,8 +705,11 @@ def _point_in_polygon(pt, poly: np.ndarray) -> bool:
         ax, ay = poly[i]
         bx, by = poly[(i + 1) % n]
         cr = _cross(bx - ax, by - ay, x - ax, y - ay)
-        if abs(cr) <= 1e-14 * (abs(bx - ax) + abs(by - ay)) * (abs(x - ax) + abs(y - ay) + 1e-300) \
-                and min(ax, bx) <= x <= max(ax, bx) and min(ay, by) <= y <= max(ay, by):
+        if (
+            abs(cr) <= 1e-14 * (abs(bx - ax) + abs(by - ay)) * (abs(x - ax) + abs(y - ay) + 1e-300)
+            and min(ax, bx) <= x <= max(ax, bx)
+            and min(ay, by) <= y <= max(ay, by)
+        ):
             return True
         if ay <= y < by and cr > 0:
             wn += 1
@@ -767,7 +795,7 @@ class Pads(_Patch):
             raise ValueError(
                 f"patches = {self.patches!r} is invalid; valid values: a sequence of patches"
             ) from None
-        flat = []
+        flat: list[Polygon | Rectangle | Annulus] = []
         for i, p in enumerate(items):
             if isinstance(p, Pads):
                 flat.extend(p.patches)
@@ -821,4 +849,3 @@ def is_footprint(obj) -> bool:
 def as_patches(fp) -> tuple:
     """The simple patches (Polygon, Rectangle, Annulus) that make up ``fp``."""
     return fp.patches if isinstance(fp, Pads) else (fp,)
-

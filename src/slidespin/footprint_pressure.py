@@ -31,8 +31,8 @@ import numpy as np
 
 from . import _validate as v
 from ._footprint_kernel import NGEO
-from .footprint import Annulus, FootprintArrays, Pads, Polygon, Rectangle, as_patches
-from .pressure import LinearPressure, UniformPressure
+from .footprint import Annulus, Disk, FootprintArrays, Pads, Polygon, Rectangle, as_patches
+from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
 
 __all__ = [
     "PressureMap",
@@ -65,8 +65,11 @@ class _GridMap:
     def __init__(self, xi, eta, values):
         from scipy.interpolate import RectBivariateSpline
 
-        self.grid = (np.asarray(xi, dtype=float), np.asarray(eta, dtype=float),
-                     np.asarray(values, dtype=float))
+        self.grid = (
+            np.asarray(xi, dtype=float),
+            np.asarray(eta, dtype=float),
+            np.asarray(values, dtype=float),
+        )
         self._spline = RectBivariateSpline(*self.grid, kx=3, ky=3, s=0)
 
     def __call__(self, xi, eta):
@@ -176,8 +179,14 @@ def area_rule(footprint, n: int = AREA_RULE_NODES):
             r = p.inner_radius + (p.outer_radius - p.inner_radius) * x
             wr = (p.outer_radius - p.inner_radius) * w * r * (2.0 * np.pi / nt)
             rr, tt = np.meshgrid(r, th, indexing="ij")
-            pts.append(np.column_stack((p.centre[0] + (rr * np.cos(tt)).ravel(),
-                                        p.centre[1] + (rr * np.sin(tt)).ravel())))
+            pts.append(
+                np.column_stack(
+                    (
+                        p.centre[0] + (rr * np.cos(tt)).ravel(),
+                        p.centre[1] + (rr * np.sin(tt)).ravel(),
+                    )
+                )
+            )
             wts.append(np.repeat(wr, nt))
             continue
         for a, b, c in p.triangles():
@@ -287,7 +296,7 @@ def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float
 
 def _check_nonnegative(arrays: FootprintArrays, coef, pressure, mean: float) -> None:
     p0, p1, p2 = coef
-    worst, where = math.inf, None
+    worst, where = math.inf, (math.nan, math.nan)
     for x, y in arrays.edges[:, :2]:
         val = p0 + p1 * x + p2 * y
         if val < worst:
@@ -308,9 +317,24 @@ def _check_nonnegative(arrays: FootprintArrays, coef, pressure, mean: float) -> 
         )
 
 
+def _round_disk(footprint, pressure) -> bool:
+    """True for a Disk under Boussinesq or Hertz pressure (defined on circles, MODEL §3); a
+    ``ValueError`` for these laws on any other footprint."""
+    if not isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        return False
+    if not isinstance(footprint, Disk):
+        from .body import _footprint_law_error
+
+        raise ValueError(_footprint_law_error(footprint, pressure))
+    return True
+
+
 def mass_centre(footprint, pressure) -> tuple[float, float]:
-    """The mass centre G = the pressure centroid [m] in the body frame."""
+    """The mass centre G = the pressure centroid [m] in the body frame (the centre of a Disk
+    under Boussinesq or Hertz pressure)."""
     _check_footprint(footprint)
+    if _round_disk(footprint, pressure):
+        return (float(footprint.centre[0]), float(footprint.centre[1]))
     if isinstance(pressure, UniformPressure):
         return footprint.centroid
     if isinstance(pressure, LinearPressure):
@@ -325,10 +349,19 @@ def mass_centre(footprint, pressure) -> tuple[float, float]:
 
 
 def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
-    """Pressure p(ξ, η) [Pa] at body-frame points (arrays allowed); 0 outside the footprint."""
+    """Pressure p(ξ, η) [Pa] at body-frame points (arrays allowed); 0 outside the footprint.
+
+    Uniform, linear and map laws on any footprint; Boussinesq and Hertz on a single Disk
+    (the circle's law of MODEL §3 about the disk's centre)."""
     load = v.positive("load", load, "N")
     xi = np.asarray(xi, dtype=float)
     eta = np.asarray(eta, dtype=float)
+    _check_footprint(footprint)
+    if _round_disk(footprint, pressure):
+        from .geometry import Circle
+
+        cx, cy = footprint.centre
+        return np.asarray(pressure.density(Circle(footprint.radius), xi - cx, eta - cy, load))
     inside = contains(footprint, xi, eta)
     if isinstance(pressure, PressureMap):
         total, _, _ = map_scale(footprint, pressure)
@@ -339,8 +372,9 @@ def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
     return np.where(inside, p, 0.0)
 
 
-def kernel_geometry(footprint, pressure, arrays: FootprintArrays | None = None,
-                    length: float = 1.0) -> np.ndarray:
+def kernel_geometry(
+    footprint, pressure, arrays: FootprintArrays | None = None, length: float = 1.0
+) -> np.ndarray:
     """The ``geo`` vector of the compiled kernel for unit load (P = 1).
 
     Layout :data:`slidespin._footprint_kernel.GEO_FIELDS`: reference point and extent (from
@@ -373,8 +407,9 @@ def scaled_arrays(arrays: FootprintArrays, length: float) -> FootprintArrays:
     length = v.positive("length", length, "m")
     circles = arrays.circles.copy()
     circles[:, :3] /= length
-    return FootprintArrays(np.ascontiguousarray(arrays.edges / length), circles,
-                           arrays.frame / length)
+    return FootprintArrays(
+        np.ascontiguousarray(arrays.edges / length), circles, arrays.frame / length
+    )
 
 
 def symmetry(footprint, pressure, rtol: float = 1e-12) -> tuple[bool, bool]:
@@ -400,13 +435,13 @@ def symmetry(footprint, pressure, rtol: float = 1e-12) -> tuple[bool, bool]:
     tol = rtol * float(arrays.frame[2])
     e, c = arrays.edges, arrays.circles
     axial = e.shape[0] == 0 and all(math.hypot(x - gx, y - gy) <= tol for x, y, _, _ in c)
-    refl_e = np.column_stack((2 * gx - e[:, 0], 2 * gy - e[:, 1], 2 * gx - e[:, 2],
-                              2 * gy - e[:, 3]))
+    refl_e = np.column_stack(
+        (2 * gx - e[:, 0], 2 * gy - e[:, 1], 2 * gx - e[:, 2], 2 * gy - e[:, 3])
+    )
     refl_c = np.column_stack((2 * gx - c[:, 0], 2 * gy - c[:, 1], c[:, 2], c[:, 3]))
 
     def matched(refl, orig):
-        return all(orig.shape[0] and np.min(np.max(np.abs(orig - r), axis=1)) <= tol
-                   for r in refl)
+        return all(orig.shape[0] and np.min(np.max(np.abs(orig - r), axis=1)) <= tol for r in refl)
 
     central = matched(refl_e, e) and matched(refl_c, c)
     return bool(central), bool(axial)

@@ -7,6 +7,9 @@ laws of :mod:`slidespin.footprint_pressure`. It returns the same :class:`~slides
 * Uniform and linear pressure: the compiled exact kernel
   (:mod:`slidespin._footprint_kernel`: closed forms for polygons, complete elliptic integrals
   for disks and rings), to ≲ 3e-12 P and P·extent in the tests, for every motion state.
+* A ``Disk`` under Boussinesq or Hertz pressure (defined on circles, MODEL §3): the circle of
+  its radius with G at its centre, on the elliptic kernel of :func:`slidespin.friction_wrench`
+  (the same numbers as a ``Body`` on ``Circle(radius)``, to round-off).
 * A user pressure map (:class:`~slidespin.footprint_pressure.PressureMap`): a quadrature in
   polar coordinates about the instantaneous centre of rotation c, which removes its
   singularity: on each ray c + ρ ê the slip direction is constant, the footprint cuts exact
@@ -36,7 +39,7 @@ import numpy as np
 
 from . import _validate as v
 from ._footprint_kernel import FAR_RATIO, wrench_array
-from .footprint import Annulus, Pads, Polygon, Rectangle, as_patches
+from .footprint import Annulus, Disk, Pads, Polygon, Rectangle, as_patches
 from .footprint_pressure import (
     PressureMap,
     area_rule,
@@ -44,7 +47,7 @@ from .footprint_pressure import (
     map_scale,
 )
 from .friction import FrictionTensor
-from .pressure import LinearPressure, UniformPressure
+from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
 from .wrench import Wrench, motion_arrays
 
 __all__ = ["MAP_TOL", "footprint_wrench"]
@@ -77,9 +80,10 @@ def footprint_wrench(
     ----------
     footprint : Polygon, Rectangle, Disk, Annulus or Pads
         The contact footprint in the body frame [m].
-    pressure : UniformPressure, LinearPressure or PressureMap
+    pressure : UniformPressure, LinearPressure, PressureMap, BoussinesqPressure or HertzPressure
         Normal pressure on the footprint (normalised to ``load``); the mass centre G is its
-        centroid (:func:`slidespin.footprint_pressure.mass_centre`).
+        centroid (:func:`slidespin.footprint_pressure.mass_centre`). Boussinesq and Hertz on a
+        single ``Disk`` only (G at its centre; the elliptic kernel, module notes).
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).
     vx, vy : float or array_like
@@ -119,15 +123,23 @@ def footprint_wrench(
             f"footprint = {footprint!r} is invalid; valid values: Polygon, Rectangle, Disk, "
             "Annulus or Pads"
         )
-    if not isinstance(pressure, (UniformPressure, LinearPressure, PressureMap)):
+    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        if not isinstance(footprint, Disk):
+            from .body import _footprint_law_error
+
+            raise ValueError(_footprint_law_error(footprint, pressure))
+    elif not isinstance(pressure, (UniformPressure, LinearPressure, PressureMap)):
         raise ValueError(
             f"pressure = {pressure!r} is invalid; valid values: UniformPressure(), "
-            "LinearPressure(xi_c, eta_c), PressureMap(function)"
+            "LinearPressure(xi_c, eta_c), PressureMap(function), and on a single Disk "
+            "BoussinesqPressure(), HertzPressure()"
         )
     if not isinstance(friction, FrictionTensor):
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     load = v.positive("load", load, "N")
     map_tol = v.bounded("map_tol", map_tol, *MAP_TOL_RANGE)
+    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        return _round_wrench(footprint, pressure, friction, vx, vy, omega, phi, load)
     vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
     theta = np.arctan2(vya, vxa)
     # the dry-friction wrench depends on the direction of (v, ω) only (MODEL §2): scale each
@@ -144,16 +156,48 @@ def footprint_wrench(
         mm = np.empty(vxa.size)
         prep = _map_prepare(footprint, pressure, arrays)
         for i in range(vxa.size):
-            fx[i], fy[i], mm[i] = _map_wrench_world(prep, t, body_frame, pha[i], vxa[i], vya[i],
-                                                    oma[i], map_tol)
+            fx[i], fy[i], mm[i] = _map_wrench_world(
+                prep, t, body_frame, pha[i], vxa[i], vya[i], oma[i], map_tol
+            )
     else:
         geo = kernel_geometry(footprint, pressure, arrays)
-        fx, fy, mm = wrench_array(arrays.edges, arrays.circles, geo, t[0, 0], t[0, 1], t[1, 0],
-                                  t[1, 1], body_frame, pha, vxa, vya, oma)
+        fx, fy, mm = wrench_array(
+            arrays.edges,
+            arrays.circles,
+            geo,
+            t[0, 0],
+            t[0, 1],
+            t[1, 0],
+            t[1, 1],
+            body_frame,
+            pha,
+            vxa,
+            vya,
+            oma,
+        )
     fx = fx * load
     fy = fy * load
     mm = mm * load
     return Wrench.from_world(fx, fy, mm, theta, shape, scalar)
+
+
+def _round_wrench(disk, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
+    """The wrench on a disk under Boussinesq or Hertz pressure: the circle of its radius with
+    G at its centre, by the elliptic kernel (:func:`slidespin.friction_wrench`, unit load),
+    scaled to ``load``."""
+    from .body import Body
+    from .wrench import friction_wrench
+
+    w = friction_wrench(Body(disk, pressure, 1.0), friction, vx, vy, omega, phi, g=1.0)
+    return Wrench(
+        w.force_x * load,
+        w.force_y * load,
+        w.moment * load,
+        w.tangential * load,
+        w.normal * load,
+        w.moment_paper * load,
+        w.theta,
+    )
 
 
 # ---------------------------------------------------------------------------------------------
@@ -172,8 +216,13 @@ def _map_prepare(footprint, pmap, arrays):
         else:
             polys.append(p.points if isinstance(p, Polygon) else p.as_polygon().points)
     return {
-        "f": pmap, "scale": scale, "g": (sx / total, sy / total), "pts": pts,
-        "w": w * pmap(pts[:, 0], pts[:, 1]) * scale, "polys": polys, "rings": rings,
+        "f": pmap,
+        "scale": scale,
+        "g": (sx / total, sy / total),
+        "pts": pts,
+        "w": w * pmap(pts[:, 0], pts[:, 1]) * scale,
+        "polys": polys,
+        "rings": rings,
         "frame": arrays.frame,
     }
 
@@ -219,27 +268,47 @@ def _map_adaptive(prep, tb, cx, cy, omega, tol, ext):
         if lo.size == 0:
             break
         mid = 0.5 * (lo + hi)
-        both = _map_panels(prep, tb, cx, cy, omega, np.concatenate((lo, lo, mid)),
-                           np.concatenate((hi, mid, hi)), _MAP_INNER)
+        both = _map_panels(
+            prep,
+            tb,
+            cx,
+            cy,
+            omega,
+            np.concatenate((lo, lo, mid)),
+            np.concatenate((hi, mid, hi)),
+            _MAP_INNER,
+        )
         k = lo.size
-        whole, halves = both[:k], both[k:2 * k] + both[2 * k:]
-        diff = np.maximum(np.abs(halves[:, :2] - whole[:, :2]).max(axis=1),
-                          np.abs(halves[:, 2] - whole[:, 2]) / ext)
+        whole, halves = both[:k], both[k : 2 * k] + both[2 * k :]
+        diff = np.maximum(
+            np.abs(halves[:, :2] - whole[:, :2]).max(axis=1),
+            np.abs(halves[:, 2] - whole[:, 2]) / ext,
+        )
         ok = (diff <= tol * (hi - lo) / (2.0 * np.pi)) | (hi - lo < 1e-13)
         total += halves[ok].sum(axis=0)
         lo, hi = np.concatenate((lo[~ok], mid[~ok])), np.concatenate((mid[~ok], hi[~ok]))
     else:
         if lo.size:
             mid = 0.5 * (lo + hi)
-            rest = _map_panels(prep, tb, cx, cy, omega, np.concatenate((lo, mid)),
-                               np.concatenate((mid, hi)), _MAP_INNER)
+            rest = _map_panels(
+                prep,
+                tb,
+                cx,
+                cy,
+                omega,
+                np.concatenate((lo, mid)),
+                np.concatenate((mid, hi)),
+                _MAP_INNER,
+            )
             total += rest.sum(axis=0)
             err_left = lo.size
     if err_left:
         warnings.warn(
             f"footprint_wrench: the pressure-map quadrature did not reach {tol:.1e} on "
             f"{err_left} angular panel(s) with the ICR at ({cx:.6g}, {cy:.6g}) m",
-            RuntimeWarning, stacklevel=5)
+            RuntimeWarning,
+            stacklevel=5,
+        )
     return total[:2], float(total[2])
 
 
