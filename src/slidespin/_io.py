@@ -20,7 +20,9 @@ def os_error_kind(exc: OSError) -> str:
     }.get(exc.errno, exc.strerror or type(exc).__name__)
 
 
-def read_regular_file(path, what: str, kind: str, max_bytes: int) -> bytes:
+def read_regular_file(
+    path: str | bytes | os.PathLike[str] | os.PathLike[bytes], what: str, kind: str, max_bytes: int
+) -> bytes:
     """The bytes of the regular file ``path`` (at most ``max_bytes``), or a one-line
     ``ValueError`` naming ``what`` and the path.
 
@@ -28,6 +30,7 @@ def read_regular_file(path, what: str, kind: str, max_bytes: int) -> bytes:
     with no writer does not wait); a larger file is refused.
     """
     name = os.fsdecode(os.fspath(path))
+    fd: int | None = None
     try:
         # O_NONBLOCK: opening a FIFO must not wait for a writer
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))

@@ -10,6 +10,7 @@ import math
 import numbers
 
 import numpy as np
+from numpy.typing import NDArray
 
 __all__ = [
     "positive", "finite", "in_range", "choice", "bounded", "symmetric", "real_array",
@@ -69,8 +70,11 @@ def bounded(name: str, value: object, lo: float, hi: float, unit: str = "") -> f
     The message names the parameter, the value, its unit and the closed range.
     """
     u = f" {unit}" if unit else ""
-    huge_int = isinstance(value, numbers.Integral) and not isinstance(value, (bool, np.bool_))
-    if huge_int and not -1e308 < value < 1e308:  # beyond float: OverflowError in float()
+    if (
+        isinstance(value, numbers.Integral)
+        and not isinstance(value, (bool, np.bool_))
+        and not -1e308 < int(value) < 1e308  # beyond float: OverflowError in float()
+    ):
         raise ValueError(
             f"{name} = {_short(value)}{u} is invalid; valid range: {_fmt_range(lo, hi, unit)}"
         )
@@ -86,7 +90,7 @@ def symmetric(name: str, value: object, bound: float, unit: str = "") -> float:
 
 
 def real_array(name: str, value: object, lo: float = -math.inf, hi: float = math.inf,
-               unit: str = "") -> np.ndarray:
+               unit: str = "") -> NDArray[np.float64]:
     """``value`` as a float array (a scalar gives a 0-d array), every entry finite in [lo, hi].
 
     Bools, strings, complex numbers, objects and ragged sequences are refused with the

@@ -19,6 +19,7 @@ import math
 from dataclasses import InitVar, dataclass
 
 import numpy as np
+from numpy.typing import NDArray
 
 from . import _validate as v
 
@@ -27,7 +28,7 @@ __all__ = ["FrictionTensor", "FRAMES"]
 FRAMES = ("plane", "body")
 
 
-def _rot(angle: float) -> np.ndarray:
+def _rot(angle: float) -> NDArray[np.float64]:
     c, s = math.cos(angle), math.sin(angle)
     return np.array([[c, -s], [s, c]])
 
@@ -112,7 +113,7 @@ class FrictionTensor:
         return self.fy - self.fx
 
     @property
-    def matrix(self) -> np.ndarray:
+    def matrix(self) -> NDArray[np.float64]:
         """2×2 tensor in its own frame (plane or body), principal axes turned by ``angle``."""
         base = np.array([[self.fx, self.f], [-self.f, self.fy]])
         if self.angle == 0.0:
@@ -120,7 +121,7 @@ class FrictionTensor:
         r = _rot(self.angle)
         return r @ base @ r.T
 
-    def world_matrix(self, phi: float = 0.0) -> np.ndarray:
+    def world_matrix(self, phi: float = 0.0) -> NDArray[np.float64]:
         """2×2 tensor in the fixed frame OXY when the body angle is ``phi`` [rad]."""
         m = self.matrix
         if self.frame == "body":
@@ -134,7 +135,8 @@ class FrictionTensor:
         return float(np.linalg.norm(self.matrix, 2))
 
 
-# ``angle_deg`` is an init-only argument; on an instance it reads the angle in degrees.
-FrictionTensor.angle_deg = property(  # type: ignore[assignment]
+# ``angle_deg`` is an init-only argument; on an instance it reads the angle in degrees. (A
+# dataclass InitVar has no class attribute that mypy knows of, so it cannot see this one.)
+FrictionTensor.angle_deg = property(  # type: ignore[attr-defined]
     lambda self: math.degrees(self.angle), doc="``angle`` in degrees (read-only)."
 )

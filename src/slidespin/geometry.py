@@ -17,8 +17,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from . import _validate as v
+
+if TYPE_CHECKING:
+    import numpy as np
+    from numpy.typing import NDArray
 
 __all__ = ["Ellipse", "Circle", "Patch"]
 
@@ -113,7 +118,7 @@ class Ellipse:
         """I/(m a²) of a uniform plate of this shape: (1 + κ²)/4 (MODEL §1)."""
         return (1.0 + self.aspect**2) / 4.0
 
-    def outline(self, n: int = 181):
+    def outline(self, n: int = 181) -> NDArray[np.float64]:
         """Body-frame outline points (ξ, η) [m], shape (n, 2), closed; n in [2, 1e6]."""
         import numpy as np
 

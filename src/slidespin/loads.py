@@ -24,10 +24,17 @@ import math
 import numbers
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _validate as v
+
+if TYPE_CHECKING:
+    from .body import Body
+
+_T = TypeVar("_T")
 
 __all__ = ["LOAD_FRAMES", "Incline", "Load", "applied_wrench"]
 
@@ -38,7 +45,7 @@ ForceSpec = tuple | Callable[[float], tuple]
 TorqueSpec = float | Callable[[float], float]
 
 
-def _check_pair(name: str, value) -> tuple[float, float]:
+def _check_pair(name: str, value: Any) -> tuple[float, float]:  # any value; checked here
     try:
         items = tuple(value)
     except TypeError:
@@ -51,7 +58,7 @@ def _check_pair(name: str, value) -> tuple[float, float]:
     return (v.finite(f"{name}[0]", _real(items[0])), v.finite(f"{name}[1]", _real(items[1])))
 
 
-def _interp(t, tt, vals) -> float:
+def _interp(t: float, tt: tuple[float, ...], vals: tuple[float, ...]) -> float:
     """Linear interpolation, constant beyond the ends, as (1 − w) v₀ + w v₁: never
     overflows for finite samples (np.interp forms the slope, which can)."""
     t = float(t)
@@ -64,7 +71,7 @@ def _interp(t, tt, vals) -> float:
     return (1.0 - w) * vals[i] + w * vals[i + 1]
 
 
-def _real(x):
+def _real(x: object) -> object:
     """Plain float for NumPy scalars (numbers.Real rejects none of them, but be explicit)."""
     if isinstance(x, np.generic):
         return x.item()
@@ -130,8 +137,15 @@ class Load:
             object.__setattr__(self, "at", at)
 
     @classmethod
-    def piecewise_linear(cls, times, fx, fy, torque=None, frame: str = "plane",
-                         at=None) -> Load:
+    def piecewise_linear(
+        cls,
+        times: ArrayLike,
+        fx: ArrayLike,
+        fy: ArrayLike,
+        torque: ArrayLike | None = None,
+        frame: str = "plane",
+        at: tuple[float, float] | None = None,
+    ) -> Load:
         """A load interpolated linearly between samples, constant beyond the first and last.
 
         Parameters
@@ -163,10 +177,17 @@ class Load:
                                  f"values: {t.size} finite numbers, one per time")
         tt, a, b, m = (tuple(float(x) for x in arr) for arr in (t, *cols))
 
-        def force(time, tt=tt, a=a, b=b):
+        def force(
+            time: float,
+            tt: tuple[float, ...] = tt,
+            a: tuple[float, ...] = a,
+            b: tuple[float, ...] = b,
+        ) -> tuple[float, float]:
             return (_interp(time, tt, a), _interp(time, tt, b))
 
-        def torque_fn(time, tt=tt, m=m):
+        def torque_fn(
+            time: float, tt: tuple[float, ...] = tt, m: tuple[float, ...] = m
+        ) -> float:
             return _interp(time, tt, m)
 
         return cls(force=force, torque=torque_fn if any(m) else 0.0, frame=frame, at=at)
@@ -188,7 +209,9 @@ class Load:
             return v.finite(f"torque({t!r})", _real(self.torque(t)))
         return self.torque
 
-    def wrench(self, t: float, phi: float = 0.0, mass_centre=(0.0, 0.0)):
+    def wrench(
+        self, t: float, phi: float = 0.0, mass_centre: tuple[float, float] = (0.0, 0.0)
+    ) -> tuple[float, float, float]:
         """Applied wrench (Qx, Qy, moment about G) in the fixed frame [N, N, N m].
 
         Parameters
@@ -275,8 +298,14 @@ class Incline:
         return (f * dx, f * dy)
 
 
-def applied_wrench(body, t: float, phi: float, load: Load | None = None,
-                   incline: Incline | None = None, g: float = 9.81):
+def applied_wrench(
+    body: Body,
+    t: float,
+    phi: float,
+    load: Load | None = None,
+    incline: Incline | None = None,
+    g: float = 9.81,
+) -> tuple[float, float, float]:
     """Total applied wrench (Qx, Qy, moment about G) [N, N, N m] of a load and a slope.
 
     Parameters
@@ -311,7 +340,7 @@ LOAD_KEYS = ("fx", "fy", "torque", "frame", "at", "times", "profile_fx", "profil
 INCLINE_KEYS = ("angle", "angle_deg", "downhill", "downhill_deg")
 
 
-def _table_value(where, build, *args, **kwargs):
+def _table_value(where: str, build: Callable[..., _T], *args: Any, **kwargs: Any) -> _T:
     try:
         return build(*args, **kwargs)
     except ValueError as exc:

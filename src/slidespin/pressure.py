@@ -23,11 +23,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar, Protocol
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from . import _validate as v
+
+if TYPE_CHECKING:
+    from .geometry import Ellipse
 
 __all__ = [
     "UniformPressure",
@@ -44,6 +48,16 @@ LAW_UNIFORM, LAW_LINEAR, LAW_BOUSSINESQ, LAW_HERTZ = 0, 1, 2, 3
 LAW_NAMES = ("uniform", "linear", "boussinesq", "hertz")
 
 
+class _SemiAxes(Protocol):
+    """A patch with semi-axes a, b [m]: an ellipse or a circle (or a ``Disk``, which is one)."""
+
+    @property
+    def a(self) -> float: ...
+
+    @property
+    def b(self) -> float: ...
+
+
 class _Law:
     __slots__ = ()
 
@@ -55,10 +69,12 @@ class _Law:
         """Pressure centroid (= mass centre G) in the body frame [m]."""
         return (0.0, 0.0)
 
-    def check_patch(self, patch) -> None:  # noqa: D401 - overridden where it matters
+    def check_patch(self, patch: _SemiAxes) -> None:  # noqa: D401 - overridden where it matters
         """Raise ``ValueError`` if this law is not valid on ``patch``."""
 
-    def density(self, patch, xi, eta, load: float = 1.0):
+    def density(
+        self, patch: Ellipse, xi: ArrayLike, eta: ArrayLike, load: float = 1.0
+    ) -> NDArray[np.float64]:
         """Pressure p(ξ, η) [Pa] at body-frame points (arrays allowed); 0 outside the patch.
 
         Parameters
@@ -138,11 +154,11 @@ class LinearPressure(_Law):
         """Pressure centroid (= mass centre G) in the body frame [m]: (ξc, ηc)."""
         return (self.xi_c, self.eta_c)
 
-    def core_measure(self, patch) -> float:
+    def core_measure(self, patch: _SemiAxes) -> float:
         """(ξc/a)² + (ηc/b)²; the pressure is non-negative iff this is ≤ 1/16."""
         return (self.xi_c / patch.a) ** 2 + (self.eta_c / patch.b) ** 2
 
-    def check_patch(self, patch) -> None:
+    def check_patch(self, patch: _SemiAxes) -> None:
         """Raise ``ValueError`` unless p ≥ 0 on the ellipse ``patch`` (the centroid lies in its
         core, (ξc/a)² + (ηc/b)² ≤ 1/16; MODEL §3)."""
         c = self.core_measure(patch)

@@ -20,8 +20,11 @@ import io
 import json
 import math
 from dataclasses import dataclass, field
+from os import PathLike
+from typing import TYPE_CHECKING, Any, overload
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from . import _ode
 from . import _validate as v
@@ -30,6 +33,12 @@ from ._kernel import wrench_array
 from .body import Body, State
 from .friction import FrictionTensor
 from .outcomes import ENDINGS, STATUSES, status_message
+
+if TYPE_CHECKING:
+    import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
+
+    from .loaded import LoadedTrajectory
+    from .loads import Incline, Load
 
 __all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "status_name"]
 
@@ -41,7 +50,7 @@ ENDING_TOL = _ode.ENDING_TOL
 MAX_STEPS_LIMIT = 1_000_000_000
 
 
-def check_solver_options(rtol, max_steps):
+def check_solver_options(rtol: float, max_steps: int) -> tuple[float, int]:
     """Validate ``rtol`` in (0, 1e-3] and ``max_steps`` an integer in [1, 1e9]."""
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     if (isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer))
@@ -71,7 +80,7 @@ def classify_ending(u_plane: float, u_spin: float, tol: float = ENDING_TOL) -> s
     return "mixed"
 
 
-def _beta(u_plane, u_spin, k):
+def _beta(u_plane: ArrayLike, u_spin: ArrayLike, k: float) -> NDArray[np.float64]:
     """β = v/ω = k u₁₂/u₃ (±inf for ω = 0, and where it overflows: a spin below 1e-308 of
     the speed)."""
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -131,20 +140,20 @@ class Trajectory:
         Integrator steps and right-hand-side evaluations.
     """
 
-    t: np.ndarray
-    x: np.ndarray
-    y: np.ndarray
-    phi: np.ndarray
-    vx: np.ndarray
-    vy: np.ndarray
-    omega: np.ndarray
-    speed: np.ndarray
-    theta: np.ndarray
-    beta: np.ndarray
-    tangential: np.ndarray
-    normal: np.ndarray
-    moment_paper: np.ndarray
-    path_length: np.ndarray
+    t: NDArray[np.float64]
+    x: NDArray[np.float64]
+    y: NDArray[np.float64]
+    phi: NDArray[np.float64]
+    vx: NDArray[np.float64]
+    vy: NDArray[np.float64]
+    omega: NDArray[np.float64]
+    speed: NDArray[np.float64]
+    theta: NDArray[np.float64]
+    beta: NDArray[np.float64]
+    tangential: NDArray[np.float64]
+    normal: NDArray[np.float64]
+    moment_paper: NDArray[np.float64]
+    path_length: NDArray[np.float64]
     t_stop: float
     stop_state: State
     beta_stop: float
@@ -168,7 +177,9 @@ class Trajectory:
             f"n_steps={self.n_steps}, n_points={self.t.size})"
         )
 
-    def animate(self, path, fps: int = 20, frames: int = 60, **kwargs) -> str:
+    def animate(
+        self, path: str | PathLike[str], fps: int = 20, frames: int = 60, **kwargs: Any
+    ) -> str:
         """Write an animated GIF of the motion (:func:`slidespin.animate.animate`)."""
         from .animate import animate
 
@@ -190,7 +201,7 @@ class Trajectory:
         of the extent of a footprint (:attr:`slidespin.Body.length_unit`)."""
         return self.beta_stop / self.body.length_unit
 
-    def summary(self) -> dict:
+    def summary(self) -> dict[str, Any]:
         """The stop results as a JSON-ready dict (SI units).
 
         Non-finite values are ``None`` (JSON ``null``), always for a reason that ``ending``
@@ -220,7 +231,7 @@ class Trajectory:
             "n_steps": int(self.n_steps),
         }
 
-    def to_json(self, path=None) -> str:
+    def to_json(self, path: str | PathLike[str] | None = None) -> str:
         """Write (or return) the stop summary as JSON."""
         text = json.dumps(self.summary(), indent=2)
         if path is not None:
@@ -233,12 +244,12 @@ class Trajectory:
         "tangential", "normal", "moment_paper", "path_length",
     )
 
-    def to_pandas(self):
+    def to_pandas(self) -> pd.DataFrame:
         """The trajectory as a :class:`pandas.DataFrame`, one row per recorded step, the
         columns of :meth:`to_csv` (SI units); the stop summary is in ``DataFrame.attrs``.
         Needs pandas (``pip install pandas``)."""
         try:
-            import pandas as pd
+            import pandas as pd  # type: ignore[import-untyped]
         except ImportError:  # pragma: no cover - depends on the environment
             raise ImportError("Trajectory.to_pandas needs pandas: pip install pandas") from None
         df = pd.DataFrame({c: np.asarray(getattr(self, c), dtype=float) for c in self.COLUMNS})
@@ -249,7 +260,7 @@ class Trajectory:
         """A short summary table for notebooks (no arrays)."""
         return _html_table("Trajectory", self.summary())
 
-    def to_csv(self, path=None) -> str:
+    def to_csv(self, path: str | PathLike[str] | None = None) -> str:
         """Write (or return) the trajectory as CSV, one row per step (SI units)."""
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
@@ -264,6 +275,86 @@ class Trajectory:
         return text
 
 
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: None = ...,
+    incline: None = ...,
+    t_end: None = ...,
+) -> Trajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load,
+    incline: Incline | None = ...,
+    t_end: float | None = ...,
+) -> LoadedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline,
+    t_end: float | None = ...,
+) -> LoadedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline | None = ...,
+    t_end: float,
+) -> LoadedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline | None = ...,
+    t_end: float | None = ...,
+) -> Trajectory | LoadedTrajectory: ...
+
+
 def simulate(
     body: Body,
     friction: FrictionTensor,
@@ -273,10 +364,10 @@ def simulate(
     *,
     max_steps: int = 200_000,
     max_step: float | None = None,
-    load=None,
-    incline=None,
+    load: Load | None = None,
+    incline: Incline | None = None,
     t_end: float | None = None,
-):
+) -> Trajectory | LoadedTrajectory:
     """Integrate the motion of ``body`` from ``initial_state`` until it stops.
 
     Parameters
@@ -358,7 +449,6 @@ def simulate(
     s0 = initial_state
     vxn, vyn, wn = s0.vx / v_unit, s0.vy / v_unit, s0.omega * t_unit
     speed0 = math.sqrt(vxn * vxn + vyn * vyn + (k * wn) ** 2)
-    common = dict(body=body, friction=friction, initial_state=initial_state, g=g)
     if speed0 == 0.0:
         one = lambda x: np.array([float(x)])  # noqa: E731
         return Trajectory(
@@ -367,7 +457,7 @@ def simulate(
             tangential=one(0.0), normal=one(0.0), moment_paper=one(0.0), path_length=one(0.0),
             t_stop=0.0, stop_state=State(s0.x, s0.y, s0.phi), beta_stop=math.nan,
             theta_stop=math.nan, ending="at_rest", status="at_rest", n_steps=0, n_rhs=0,
-            **common,
+            body=body, friction=friction, initial_state=initial_state, g=g,
         )
     y0 = np.array(
         [vxn / speed0, vyn / speed0, k * wn / speed0, math.log(speed0), 0.0,
@@ -394,7 +484,7 @@ def simulate(
             par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
             par[_ode.P_BODY] != 0.0, rows[:, 7].copy(), u1.copy(), u2.copy(), u3 / k, 1e-12,
         )
-    load = body.mass * g
+    weight = body.mass * g  # the normal load m g [N]
     u12 = np.hypot(u1, u2)
     theta = np.arctan2(u2, u1)
     c, sn = np.cos(theta), np.sin(theta)
@@ -414,9 +504,9 @@ def simulate(
         speed=s * u12 * v_unit,
         theta=theta,
         beta=beta,
-        tangential=-(fx * c + fy * sn) * load,
-        normal=-(-fx * sn + fy * c) * load,
-        moment_paper=-mm * load * a,
+        tangential=-(fx * c + fy * sn) * weight,
+        normal=-(-fx * sn + fy * c) * weight,
+        moment_paper=-mm * weight * a,
         path_length=rows[:, 8] * a,
         t_stop=float(yend[4] * t_unit),
         stop_state=stop,
@@ -428,11 +518,16 @@ def simulate(
         n_rhs=int(nrhs),
         saddle_energy=math.exp(2.0 * term[1]) if math.isfinite(term[1]) else math.nan,
         eigenvalue_ratio=float(term[2]),
-        **common,
+        body=body,
+        friction=friction,
+        initial_state=initial_state,
+        g=g,
     )
 
 
-def _terminal_values(status, u12, u3, theta_star, beta_nat):
+def _terminal_values(
+    status: int, u12: float, u3: float, theta_star: float, beta_nat: float
+) -> tuple[str, float, float]:
     """(ending, β*/a, ϑ*) of a stop from its reported direction (|u₁₂|, u₃) and the
     integrator's ϑ* and k u₁₂/u₃ (MODEL §5, §9)."""
     status = int(status)
@@ -449,7 +544,7 @@ def _terminal_values(status, u12, u3, theta_star, beta_nat):
     return ending, float(beta_nat), float(theta_star)
 
 
-def _html_table(title: str, items: dict) -> str:
+def _html_table(title: str, items: dict[str, Any]) -> str:
     """A two-column HTML table of ``items`` (for ``_repr_html_``)."""
     from html import escape
 

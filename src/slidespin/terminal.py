@@ -41,9 +41,10 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq, root
 
 from . import _ode
@@ -54,7 +55,16 @@ from ._kernel import STATUS_OK, wrench_array, wrench_world
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .geometry import Circle
-from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
+from .pressure import (
+    BoussinesqPressure,
+    HertzPressure,
+    LinearPressure,
+    PressureLaw,
+    UniformPressure,
+)
+
+if TYPE_CHECKING:
+    from .footprint import Annulus
 
 __all__ = [
     "terminal_ratio",
@@ -320,12 +330,12 @@ class TerminalState:
     theta: float
     ending: str
     stable: bool
-    eigenvalues: tuple
-    u: tuple
+    eigenvalues: tuple[complex, ...]
+    u: tuple[float, ...]
     phi: float
     continuum: bool = False
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> dict[str, Any]:
         """JSON-ready dict (``inf``/``nan`` written as strings)."""
 
         def num(x):
@@ -556,7 +566,9 @@ def _mixed_points(par, phi, a_len, symmetric, n_theta=72, n_chi=28):
     return found
 
 
-def terminal_states(body: Body, friction: FrictionTensor, phi: float) -> tuple:
+def terminal_states(
+    body: Body, friction: FrictionTensor, phi: float
+) -> tuple[TerminalState, ...]:
     """All terminal motions of ``body`` at the body angle ``phi`` (MODEL §5–6).
 
     The terminal motions are the fixed points of the flow of the direction of motion on the
@@ -731,7 +743,12 @@ def _j_values(par, beta):
     return beta * (-m) / (-fx)
 
 
-def inertia_for_ratio(pressure, friction: FrictionTensor, ratio, patch=None):
+def inertia_for_ratio(
+    pressure: PressureLaw,
+    friction: FrictionTensor,
+    ratio: ArrayLike,
+    patch: Circle | Annulus | None = None,
+) -> float | NDArray[np.float64]:
     """J(β): the inertia ratio I* whose terminal ratio is β = v/(a ω) (circle, MODEL §6).
 
     Parameters
@@ -768,7 +785,9 @@ def _richardson(values, factor):
     return (q4 * r2 - r1) / (q4 - 1.0)
 
 
-def inertia_intervals(pressure, friction: FrictionTensor, patch=None) -> InertiaIntervals:
+def inertia_intervals(
+    pressure: PressureLaw, friction: FrictionTensor, patch: Circle | Annulus | None = None
+) -> InertiaIntervals:
     """Boundaries (I₁, I₂, I₃) of Table 2, computed numerically from J(β) (MODEL §6).
 
     Parameters
@@ -811,7 +830,7 @@ def inertia_intervals(pressure, friction: FrictionTensor, patch=None) -> Inertia
     )
 
 
-def paper_inertia_intervals(pressure, friction: FrictionTensor) -> InertiaIntervals:
+def paper_inertia_intervals(pressure: PressureLaw, friction: FrictionTensor) -> InertiaIntervals:
     """Boundaries (I₁, I₂, I₃) from the formulas printed in the paper's Table 2.
 
     ======================  ==================  ======================  ================
@@ -838,8 +857,12 @@ def paper_inertia_intervals(pressure, friction: FrictionTensor) -> InertiaInterv
     return InertiaIntervals(*vals)
 
 
-def circle_terminal_ratio(pressure, friction: FrictionTensor, inertia_ratio: float,
-                          patch=None) -> float:
+def circle_terminal_ratio(
+    pressure: PressureLaw,
+    friction: FrictionTensor,
+    inertia_ratio: float,
+    patch: Circle | Annulus | None = None,
+) -> float:
     """Terminal ratio k = v/(a ω) of a circular patch with inertia ratio I* (J⁻¹, MODEL §6).
 
     Returns ``inf`` for I* ≤ I₁ (pure sliding) and ``0.0`` for I* ≥ I₃ (pure spinning);
@@ -896,11 +919,11 @@ class PhasePortrait:
 
     body: Body
     friction: FrictionTensor
-    spin: tuple
-    speed: tuple
-    beta_stop: np.ndarray
-    endings: tuple
-    terminal: tuple
+    spin: tuple[NDArray[np.float64], ...]
+    speed: tuple[NDArray[np.float64], ...]
+    beta_stop: NDArray[np.float64]
+    endings: tuple[str, ...]
+    terminal: tuple[TerminalState, ...]
     phi: float
     theta: float
 

@@ -20,6 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from . import _validate as v
 from ._kernel import STATUS_OK, wrench_array
@@ -48,16 +49,24 @@ class Wrench:
         Direction ϑ of the velocity of G [rad] (0 when v = 0).
     """
 
-    force_x: float | np.ndarray
-    force_y: float | np.ndarray
-    moment: float | np.ndarray
-    tangential: float | np.ndarray
-    normal: float | np.ndarray
-    moment_paper: float | np.ndarray
-    theta: float | np.ndarray
+    force_x: float | NDArray[np.float64]
+    force_y: float | NDArray[np.float64]
+    moment: float | NDArray[np.float64]
+    tangential: float | NDArray[np.float64]
+    normal: float | NDArray[np.float64]
+    moment_paper: float | NDArray[np.float64]
+    theta: float | NDArray[np.float64]
 
     @classmethod
-    def from_world(cls, fx, fy, mm, theta, shape, scalar: bool) -> Wrench:
+    def from_world(
+        cls,
+        fx: NDArray[np.float64],
+        fy: NDArray[np.float64],
+        mm: NDArray[np.float64],
+        theta: NDArray[np.float64],
+        shape: tuple[int, ...],
+        scalar: bool,
+    ) -> Wrench:
         """The wrench from flat arrays of the force [N], moment [N m] and direction ϑ of the
         velocity of G, with the paper's F_τ, F_n, M_Cζ (eq. 4), in ``shape`` (floats if
         ``scalar``)."""
@@ -66,15 +75,18 @@ class Wrench:
         fn = -(-fx * s + fy * c)
         out = [x.reshape(shape) for x in (fx, fy, mm, ft, fn, -mm, theta)]
         if scalar:
-            out = [float(x) for x in out]
+            return cls(*(float(x) for x in out))
         return cls(*out)
 
-    def power(self, vx, vy, omega):
+    def power(
+        self, vx: float | NDArray[np.float64], vy: float | NDArray[np.float64],
+        omega: float | NDArray[np.float64],
+    ) -> float | NDArray[np.float64]:
         """Friction power F·v + M ω [W] for the state the wrench was computed at (≤ 0)."""
         return self.force_x * vx + self.force_y * vy + self.moment * omega
 
 
-def _check_array(name, value):
+def _check_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
     return v.real_array(name, value)
 
 
@@ -99,7 +111,16 @@ def _direction(vx, vy, omega, a):
     return out
 
 
-def motion_arrays(vx, vy, omega, phi):
+def motion_arrays(
+    vx: ArrayLike, vy: ArrayLike, omega: ArrayLike, phi: ArrayLike
+) -> tuple[
+    NDArray[np.float64],
+    NDArray[np.float64],
+    NDArray[np.float64],
+    NDArray[np.float64],
+    tuple[int, ...],
+    bool,
+]:
     """Validate and broadcast the motion state (arrays accepted): returns flat float arrays
     (vx, vy, ω, φ), the broadcast shape and whether every input was a scalar."""
     arrays = [_check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
@@ -112,17 +133,17 @@ def motion_arrays(vx, vy, omega, phi):
             + ", ".join(str(a.shape) for a in arrays)
             + " that do not broadcast together"
         ) from None
-    flat = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
-    return (*flat, b[0].shape, scalar)
+    vxf, vyf, omf, phf = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
+    return vxf, vyf, omf, phf, b[0].shape, scalar
 
 
 def friction_wrench(
     body: Body,
     friction: FrictionTensor,
-    vx,
-    vy,
-    omega,
-    phi=0.0,
+    vx: ArrayLike,
+    vy: ArrayLike,
+    omega: ArrayLike,
+    phi: ArrayLike = 0.0,
     g: float = 9.81,
     *,
     tol: float = 1e-12,
@@ -183,7 +204,7 @@ def friction_wrench(
         return footprint_wrench(body.patch, body.pressure, friction, vx, vy, omega, phi,
                                 load=body.mass * g)
     vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
-    a = body.patch.a
+    a = body.length_unit  # the semi-axis a of the ellipse
     par = body.kernel_params(friction, tol)
     from . import _ode
 
