@@ -14,9 +14,12 @@ chunk; each worker thread integrates in a fixed ~20 kB.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from . import _ode
 from . import _validate as v
@@ -25,6 +28,9 @@ from .body import Body
 from .friction import FrictionTensor
 from .outcomes import ENDINGS, STATUSES
 from .simulate import ENDING_TOL, check_solver_options
+
+if TYPE_CHECKING:
+    import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
 
 __all__ = ["StopResults", "simulate_many", "simulate_bodies", "simulate_cases", "CASE_FIELDS"]
 
@@ -86,11 +92,11 @@ class StopResults:
         fmt = lambda c: ", ".join(f"{k}: {n}" for k, n in sorted(c.items()))  # noqa: E731
         return f"StopResults({len(self)} cases; status {{{fmt(counts)}}}; ending {{{fmt(ends)}}})"
 
-    def to_pandas(self):
+    def to_pandas(self) -> pd.DataFrame:
         """The stop results as a :class:`pandas.DataFrame`, one row per case (the columns of
         :meth:`as_dict`, SI units; ``ending`` and ``status`` as strings). Needs pandas."""
         try:
-            import pandas as pd
+            import pandas as pd  # type: ignore[import-untyped]
         except ImportError:  # pragma: no cover - depends on the environment
             raise ImportError("StopResults.to_pandas needs pandas: pip install pandas") from None
         return pd.DataFrame(self.as_dict())
@@ -105,7 +111,7 @@ class StopResults:
         items.update({f"ending {k}": n for k, n in sorted(c["ending"].items())})
         return _html_table("StopResults", items)
 
-    def counts(self) -> dict:
+    def counts(self) -> dict[str, dict[str, int]]:
         """Number of cases per status and per ending: ``{"status": {...}, "ending": {...}}``."""
         from collections import Counter
 
@@ -122,7 +128,7 @@ class StopResults:
         """Status names (:data:`slidespin.outcomes.STATUSES`)."""
         return np.asarray(STATUSES, dtype=object)[self.status_code]
 
-    def as_dict(self) -> dict:
+    def as_dict(self) -> dict[str, np.ndarray]:
         """Column name → array, with string columns for ending and status."""
         out = {k: getattr(self, k) for k in (
             "t_stop", "x_stop", "y_stop", "phi_stop", "path_length", "beta_stop", "theta_stop",
@@ -132,7 +138,7 @@ class StopResults:
         return out
 
 
-def simulate_cases(cases: dict, rtol: float = 1e-10, max_steps: int = 200_000) -> StopResults:
+def simulate_cases(cases: dict[str, Any], rtol: float = 1e-10, max_steps: int = 200_000) -> StopResults:
     """Integrate N independent cases to their stops, in parallel over all cores.
 
     Parameters
@@ -297,7 +303,7 @@ def _check_run(initial_states, n, rtol, max_steps, g):
 def simulate_many(
     body: Body,
     friction: FrictionTensor,
-    initial_states,
+    initial_states: ArrayLike,
     g: float = 9.81,
     rtol: float = 1e-10,
     max_steps: int = 200_000,
@@ -346,9 +352,9 @@ def simulate_many(
 
 
 def simulate_bodies(
-    bodies,
-    friction,
-    initial_states,
+    bodies,  # sequence of Body (checked below)
+    friction: FrictionTensor | Iterable[FrictionTensor],
+    initial_states: ArrayLike,
     g: float = 9.81,
     rtol: float = 1e-10,
     max_steps: int = 200_000,
