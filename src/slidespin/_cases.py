@@ -14,7 +14,7 @@ import numpy as np
 from . import _validate as v
 from .pressure import LAW_NAMES
 
-__all__ = ["CASE_FIELDS", "validated_columns"]
+__all__ = ["CASE_FIELDS", "SHAPE_KEYS", "validated_columns", "footprint_geometry", "footprint_patch"]
 
 #: per-case inputs of :func:`slidespin.batch.simulate_cases` and their defaults (None: required)
 CASE_FIELDS = {
@@ -112,3 +112,116 @@ def validated_columns(cases: dict):
     _check("xi_c, eta_c (core measure (xi_c/a)^2 + (eta_c/b)^2)", core,
            ~is_lin | (core <= 1.0 / 16.0 * (1 + 1e-12)), "[0, 0.0625]")
     return col, inertia
+
+
+# ------------------------------------------------------------------------------------------
+# footprint sweeps: patch parameters per case (the keys of the TOML [patch] table)
+# ------------------------------------------------------------------------------------------
+#: footprint shapes a sweep may fix, and the sweep keys each takes (``vertices`` fixed only)
+SHAPE_KEYS = {
+    "disk": ("radius",),
+    "annulus": ("outer_radius", "inner_radius", "ring_width", "radius_ratio"),
+    "rectangle": ("length", "width", "aspect"),
+    "polygon": ("vertices", "scale"),
+    "pads": ("pad_shape", "n_pads", "pad_spacing", "pad_radius", "pad_length", "pad_width"),
+}
+#: most pads of a ``shape = "pads"`` sweep
+MAX_PADS = 64
+
+
+def _need(cols: dict, shape: str, key: str) -> np.ndarray:
+    if key not in cols:
+        raise ValueError(f"shape {shape!r} needs {key!r} (fix or vary it)")
+    return np.asarray(cols[key], dtype=float)
+
+
+def _ranged(name, arr, ok, valid):
+    with np.errstate(all="ignore"):
+        _check(name, arr, np.isfinite(arr) & ok, valid)
+
+
+def footprint_geometry(shape: str, cols: dict, n: int) -> dict:
+    """The geometry columns of ``n`` footprint cases, derived keys filled in.
+
+    ``cols`` holds the sweep keys of :data:`SHAPE_KEYS` given (fixed or varied); the result
+    holds every numeric key of the shape: ``annulus`` → ``outer_radius``, ``inner_radius``,
+    ``ring_width`` (R − r), ``radius_ratio`` (r/R); ``rectangle`` → ``length``, ``width``,
+    ``aspect`` (width/length); ``disk`` → ``radius``; ``polygon`` → ``scale``; ``pads`` →
+    ``n_pads``, ``pad_spacing`` and ``pad_radius`` or ``pad_length``, ``pad_width``. Values a
+    footprint refuses are left to its constructor (:func:`footprint_patch`); the ranges of
+    the derived keys are checked here, naming the key, the first bad case and its value.
+    """
+    if shape == "disk":
+        return {"radius": _need(cols, shape, "radius")}
+    if shape == "annulus":
+        big = _need(cols, shape, "outer_radius")
+        if "ring_width" in cols:
+            w = np.asarray(cols["ring_width"], dtype=float)
+            _ranged("ring_width", w, (w > 0) & (w <= big), "(0, outer_radius]")
+            small = np.maximum(big - w, 0.0)
+        elif "radius_ratio" in cols:
+            q = np.asarray(cols["radius_ratio"], dtype=float)
+            _ranged("radius_ratio", q, (q >= 0) & (q < 1), "[0, 1)")
+            small = q * big
+        else:
+            small = _need(cols, shape, "inner_radius")
+        with np.errstate(all="ignore"):
+            return {"outer_radius": big, "inner_radius": small, "ring_width": big - small,
+                    "radius_ratio": small / big}
+    if shape == "rectangle":
+        length = _need(cols, shape, "length")
+        if "aspect" in cols:
+            q = np.asarray(cols["aspect"], dtype=float)
+            _ranged("aspect", q, q > 0, "> 0 (width/length; the rectangle checks the rest)")
+            width = q * length
+        else:
+            width = _need(cols, shape, "width")
+        with np.errstate(all="ignore"):
+            return {"length": length, "width": width, "aspect": width / length}
+    if shape == "polygon":
+        s = np.asarray(cols.get("scale", np.ones(n)), dtype=float)
+        _ranged("scale", s, s > 0, "> 0")
+        return {"scale": np.broadcast_to(s, (n,)).copy()}
+    if shape == "pads":
+        k = np.asarray(cols.get("n_pads", np.full(n, 2.0)), dtype=float)
+        _ranged("n_pads", k, (k == np.round(k)) & (k >= 2) & (k <= MAX_PADS),
+                f"integer in [2, {MAX_PADS}]")
+        sp = _need(cols, shape, "pad_spacing")
+        _ranged("pad_spacing", sp, sp > 0, "> 0")
+        out = {"n_pads": np.broadcast_to(k, (n,)).copy(), "pad_spacing": sp}
+        if str(np.asarray(cols.get("pad_shape", ["disk"]))[0]) == "rectangle":
+            out["pad_length"] = _need(cols, shape, "pad_length")
+            out["pad_width"] = _need(cols, shape, "pad_width")
+        else:
+            out["pad_radius"] = _need(cols, shape, "pad_radius")
+        return out
+    raise ValueError(f"shape = {shape!r} is invalid; valid values: ellipse, "
+                     + ", ".join(SHAPE_KEYS))
+
+
+def footprint_patch(shape: str, geo: dict, vertices=None, pad_shape: str = "disk"):
+    """One footprint from one case's geometry values (a row of :func:`footprint_geometry`).
+
+    ``pads``: ``n_pads`` equal pads (disks of ``pad_radius`` or rectangles ``pad_length`` ×
+    ``pad_width``, length along ξ, unrotated) whose centres lie on a circle about the origin,
+    the first on the η axis, neighbours ``pad_spacing`` apart (two pads: at η = ±spacing/2,
+    runners side by side).
+    """
+    from .footprint import Annulus, Disk, Pads, Polygon, Rectangle
+
+    if shape == "disk":
+        return Disk(geo["radius"])
+    if shape == "annulus":
+        return Annulus(geo["inner_radius"], geo["outer_radius"])
+    if shape == "rectangle":
+        return Rectangle(geo["length"], geo["width"])
+    if shape == "polygon":
+        s = geo["scale"]
+        return Polygon([(s * float(x), s * float(y)) for x, y in vertices])
+    k = int(geo["n_pads"])
+    rho = geo["pad_spacing"] / (2.0 * math.sin(math.pi / k))
+    centres = [(rho * math.cos(math.pi / 2 + 2 * math.pi * i / k),
+                rho * math.sin(math.pi / 2 + 2 * math.pi * i / k)) for i in range(k)]
+    if pad_shape == "rectangle":
+        return Pads([Rectangle(geo["pad_length"], geo["pad_width"], centre=c) for c in centres])
+    return Pads([Disk(geo["pad_radius"], centre=c) for c in centres])

@@ -60,14 +60,18 @@ from pathlib import Path
 import numpy as np
 
 from . import _validate as v
-from ._cases import validated_columns
-from .batch import simulate_cases
+from ._cases import SHAPE_KEYS, footprint_geometry, footprint_patch, validated_columns
+from .batch import simulate_bodies, simulate_cases
 from .case import check_document, check_name
 from .pressure import LAW_NAMES
+from .sweep_loads import (LOAD_COLUMNS, LOAD_PARAMETERS, LOADED_COLUMNS, LOADED_STATUSES,
+                          LOADED_UNCONVERGED, MODES, STATICS_COLUMNS, STATICS_ENDINGS,
+                          STATICS_STATUSES, compute_loaded, compute_statics, load_columns)
 
 __all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "split_unconverged",
            "count_outcomes", "compute_chunk", "compute_chunks", "connect_dask", "PARAMETERS",
-           "SweepError", "SweepResult", "MAX_CASES", "MAX_AXIS", "MAX_CHUNK"]
+           "SweepError", "SweepResult", "MAX_CASES", "MAX_AXIS", "MAX_CHUNK", "SHAPES",
+           "chunk_columns", "to_pandas"]
 
 #: sweep parameters and their defaults (None: required, or derived from another one)
 PARAMETERS = {
@@ -75,10 +79,26 @@ PARAMETERS = {
     "eta_c": 0.0, "fx": None, "fy": None, "mu": None, "f": 0.0, "frame": "plane",
     "angle": 0.0, "mass": 1.0, "I_star": None, "moment_of_inertia": None, "g": 9.81,
     "v0": 0.0, "theta0": 0.0, "omega0": 0.0, "phi0": 0.0, "x0": 0.0, "y0": 0.0,
+    # footprints (issue #12): the keys of the TOML [patch] table, see _cases.SHAPE_KEYS
+    "shape": "ellipse", "radius": None, "outer_radius": None, "inner_radius": None,
+    "ring_width": None, "radius_ratio": None, "length": None, "width": None,
+    "vertices": None, "scale": 1.0, "pad_shape": "disk", "n_pads": 2.0, "pad_spacing": None,
+    "pad_radius": None, "pad_length": None, "pad_width": None,
+    # loads and tilt (issue #13, compute = "statics" | "loaded"): see slidespin.sweep_loads
+    **LOAD_PARAMETERS,
 }
-_STRING_PARAMS = {"law": LAW_NAMES, "frame": ("plane", "body")}
-_EXCLUSIVE = (("b", "e", "aspect"), ("fy", "mu"), ("I_star", "moment_of_inertia"))
-_TOP_KEYS = {"name", "description", "kind", "chunk_size", "rtol", "fixed", "vary", "random"}
+#: patch shapes of a sweep: the paper's ellipse (keys a, b | e | aspect) and the footprints
+SHAPES = ("ellipse", *SHAPE_KEYS)
+_ELLIPSE_KEYS = ("a", "b", "e", "aspect")
+_GEOMETRY_KEYS = set(_ELLIPSE_KEYS).union(*SHAPE_KEYS.values())
+_STRING_PARAMS = {"law": LAW_NAMES, "frame": ("plane", "body"), "shape": SHAPES,
+                  "pad_shape": ("disk", "rectangle"), "load_frame": ("plane", "body")}
+_FIXED_ONLY = ("shape", "pad_shape", "vertices")
+_EXCLUSIVE = (("b", "e", "aspect"), ("fy", "mu"), ("I_star", "moment_of_inertia"),
+              ("inner_radius", "ring_width", "radius_ratio"), ("width", "aspect"),
+              ("incline_angle", "incline_angle_deg"))
+_TOP_KEYS = {"name", "description", "kind", "chunk_size", "rtol", "fixed", "vary", "random",
+             "compute"}
 RESULT_COLUMNS = (
     "t_stop", "beta_stop", "theta_stop", "phi_stop", "x_stop", "y_stop", "path_length",
     "ending", "status", "saddle_energy", "n_steps",
@@ -133,6 +153,16 @@ class SweepSpec:
         text = json.dumps(self.data, sort_keys=True, separators=(",", ":"))
         return hashlib.sha256(text.encode()).hexdigest()
 
+    @property
+    def shape(self) -> str:
+        """The patch shape (``[fixed] shape``; ``"ellipse"`` by default)."""
+        return str(self.data.get("fixed", {}).get("shape", "ellipse"))
+
+    @property
+    def mode(self) -> str:
+        """What is computed per case: ``"stop"`` (default), ``"statics"`` or ``"loaded"``."""
+        return str(self.data.get("compute", "stop"))
+
     def varied(self) -> list[str]:
         """Names of the varied parameters, in spec order."""
         return list(self.data.get("vary", {}))
@@ -165,6 +195,8 @@ class SweepSpec:
                     rng.bit_generator.advance(start)
                     cols[k] = _random_values(k, spec, rng, stop - start)
         for k, val in fixed.items():
+            if k in ("vertices",):  # not a column: read from the spec by the footprint builder
+                continue
             cols[k] = np.full(idx.size, val, dtype=object if isinstance(val, str) else float)
         cols["case_id"] = idx
         return cols
@@ -253,6 +285,15 @@ def _only(table, allowed, where):
 def _check_value(name, value, param=None):
     """``value`` checked as a value of parameter ``param`` (default ``name``), named ``name``."""
     param = name if param is None else param
+    if param == "vertices":
+        if (not isinstance(value, list) or len(value) < 3
+                or not all(isinstance(p, list) and len(p) == 2 for p in value)):
+            raise SweepError(f"{name} = {value!r} is invalid; valid values: a list of at least "
+                             "3 pairs [xi, eta] in m")
+        for i, p in enumerate(value):
+            for j, x in enumerate(p):
+                v.finite(f"{name}[{i}][{j}]", x)
+        return value
     if param in _STRING_PARAMS:
         return v.choice(name, value, _STRING_PARAMS[param])
     return v.finite(name, value)
@@ -270,10 +311,28 @@ def _validate_spec(data: dict) -> SweepSpec:
     if both:
         raise SweepError(f"parameter {both[0]!r} is both fixed and varied")
     given = set(fixed) | set(vary)
+    mode = v.choice("compute", data.get("compute", "stop"), MODES)
+    for k in _FIXED_ONLY:
+        if k in vary:
+            raise SweepError(f"{k!r} cannot be varied; fix it in [fixed] (one {k} per sweep)")
+    shape = _check_value("[fixed] shape", fixed.get("shape", "ellipse"), "shape")
+    allowed = set(_ELLIPSE_KEYS) if shape == "ellipse" else set(SHAPE_KEYS[shape])
+    for k in sorted(given & _GEOMETRY_KEYS - allowed):
+        raise SweepError(f"shape = {shape!r} does not take {k!r}; valid patch keys: "
+                         f"{', '.join(sorted(allowed))}")
+    if mode == "stop":
+        for k in sorted(given & set(LOAD_PARAMETERS)):
+            raise SweepError(f"{k!r} is a load, tilt or time bound: it needs compute = "
+                             "'statics' or 'loaded' (the default 'stop' coasts on a level plane)")
+    elif mode == "statics" and "t_end" in given:
+        raise SweepError("'t_end' is for compute = 'loaded'; compute = 'statics' has no time")
     for group in _EXCLUSIVE:
         if len(given & set(group)) > 1:
             raise SweepError(f"give at most one of {', '.join(group)}")
-    for req in ("a", "fx"):
+    for req in ("a",) if shape == "ellipse" else ():
+        if req not in given:
+            raise SweepError(f"the sweep spec must fix or vary {req!r}")
+    for req in ("fx",):
         if req not in given:
             raise SweepError(f"the sweep spec must fix or vary {req!r}")
     if not given & {"fy", "mu"}:
@@ -317,7 +376,11 @@ def _validate_spec(data: dict) -> SweepSpec:
     # validate every case's physics up front (cheap: no integration), so that a bad value
     # fails before any work starts, naming the parameter
     for start in range(0, spec.n_cases, 200_000):
-        _case_fields(spec.parameters(start, start + 200_000))
+        cols = spec.parameters(start, start + 200_000)
+        if spec.shape == "ellipse" and spec.mode == "stop":
+            _case_fields(cols)
+        else:  # builds each distinct body once (a footprint checks itself on construction)
+            _case_inputs(spec, cols)
     return spec
 
 
@@ -392,17 +455,204 @@ def _case_fields(cols: dict) -> dict:
     return fields
 
 
+@dataclass(frozen=True)
+class _Inputs:
+    """The validated inputs of a block of cases, as objects for the per-case engines."""
+
+    table: dict  # input columns of the chunk file (case_id first)
+    bodies: list
+    frictions: list
+    states: np.ndarray  # (N, 6): x, y, phi, vx, vy, omega
+    g: np.ndarray
+    loads: dict | None  # sweep_loads.load_columns (statics and loaded sweeps)
+
+
+def _col(cols: dict, k: str) -> np.ndarray:
+    """Column ``k`` of the cases, or its default from :data:`PARAMETERS`."""
+    if k in cols:
+        return cols[k]
+    d = PARAMETERS[k]
+    return np.full(cols["case_id"].size, d, dtype=object if isinstance(d, str) else float)
+
+
+def _case_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
+    """Bodies, tensors, states and the input columns of the cases ``cols`` (any shape, any
+    mode): one Body per distinct patch, pressure, mass and inertia, one tensor per distinct
+    tensor, so that the batch engine shares their compiled arrays."""
+    try:
+        return _build_inputs(spec, cols)
+    except SweepError:
+        raise
+    except ValueError as exc:
+        raise SweepError(str(exc)) from None
+
+
+def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
+    from .body import Body
+    from .friction import FrictionTensor
+    from .geometry import Ellipse
+    from .pressure import pressure_law_from_name
+
+    n = cols["case_id"].size
+    shape = spec.shape
+    if shape == "ellipse":
+        fields = _case_fields(cols)
+        table = _input_table(cols, fields)
+        geo_cols = {"a": fields["a"], "b": fields["b"]}
+        inertia = fields["moment_of_inertia"]
+        i_star = None
+    else:
+        geo_cols = footprint_geometry(shape, cols, n)
+        table = {"case_id": cols["case_id"].astype(np.int64), "shape": np.full(n, shape)}
+        table.update(geo_cols)
+        if shape == "pads":
+            table["pad_shape"] = np.full(n, spec.data["fixed"].get("pad_shape", "disk"))
+        inertia = cols["moment_of_inertia"].astype(float) if "moment_of_inertia" in cols else None
+        i_star = cols["I_star"].astype(float) if "I_star" in cols else None
+    vertices = spec.data.get("fixed", {}).get("vertices")
+    pad_shape = spec.data.get("fixed", {}).get("pad_shape", "disk")
+    law, xi_c, eta_c = _col(cols, "law"), _col(cols, "xi_c").astype(float), \
+        _col(cols, "eta_c").astype(float)
+    mass = _col(cols, "mass").astype(float)
+    fx = _col(cols, "fx").astype(float)
+    fy = cols["fy"].astype(float) if "fy" in cols else fx + cols["mu"].astype(float)
+    names = list(geo_cols)
+    geo = np.column_stack([np.asarray(geo_cols[k], dtype=float) for k in names])
+    bodies, frictions = [], []
+    body_cache: dict = {}
+    fr_cache: dict = {}
+    f, frame, angle = (_col(cols, "f").astype(float), _col(cols, "frame"),
+                       _col(cols, "angle").astype(float))
+    for i in range(n):
+        key = (tuple(geo[i]), str(law[i]), xi_c[i], eta_c[i], mass[i],
+               None if inertia is None else inertia[i], None if i_star is None else i_star[i])
+        body = body_cache.get(key)
+        if body is None:
+            row = dict(zip(names, geo[i].tolist()))
+            try:
+                patch = (Ellipse(row["a"], row["b"]) if shape == "ellipse"
+                         else footprint_patch(shape, row, vertices, pad_shape))
+                pl = pressure_law_from_name(str(law[i]), **(
+                    {"xi_c": float(xi_c[i]), "eta_c": float(eta_c[i])}
+                    if str(law[i]).lower() == "linear" else {}))
+                if i_star is not None:
+                    body = Body.from_inertia_ratio(patch, pl, float(mass[i]), float(i_star[i]))
+                else:
+                    body = Body(patch, pl, float(mass[i]),
+                                None if inertia is None else float(inertia[i]))
+            except ValueError as exc:
+                what = ", ".join(f"{k} = {x!r}" for k, x in row.items())
+                raise SweepError(f"case {int(cols['case_id'][i])} ({shape}: {what}): {exc}"
+                                 ) from None
+            body_cache[key] = body
+        bodies.append(body)
+        fkey = (fx[i], fy[i], f[i], str(frame[i]), angle[i])
+        fr = fr_cache.get(fkey)
+        if fr is None:
+            fr = fr_cache[fkey] = FrictionTensor(float(fx[i]), float(fy[i]), float(f[i]),
+                                                 str(frame[i]), float(angle[i]))
+        frictions.append(fr)
+    v0 = _col(cols, "v0").astype(float)
+    th = _col(cols, "theta0").astype(float)
+    fields = dict(
+        law=law, xi_c=xi_c, eta_c=eta_c, fx=fx, fy=fy, f=f, frame=frame, angle=angle,
+        mass=mass, moment_of_inertia=np.array([b.moment_of_inertia for b in bodies]),
+        g=_col(cols, "g").astype(float), x=_col(cols, "x0").astype(float),
+        y=_col(cols, "y0").astype(float), phi=_col(cols, "phi0").astype(float),
+        vx=v0 * np.cos(th), vy=v0 * np.sin(th), omega=_col(cols, "omega0").astype(float),
+    )
+    if shape != "ellipse":
+        if (v0 < 0).any():
+            i = int(np.flatnonzero(v0 < 0)[0])
+            raise SweepError(f"v0 = {float(v0[i])!r} (case {i}) is invalid; valid range: >= 0")
+        # the ranges of the batch engine (speed, spin, position, g, coefficients, I*), with
+        # the footprint's length unit in the place of a (its own pressure check is the
+        # Body's: the ellipse's core condition of the linear law does not apply)
+        unit = np.array([b.length_unit for b in bodies])
+        validated_columns({**{k: fields[k] for k in fields if k != "law"},
+                           "a": unit, "b": unit, "law": "uniform"})
+        table.update(_common_table(fields, unit))
+    states = np.column_stack([fields[k] for k in ("x", "y", "phi", "vx", "vy", "omega")])
+    loads = None
+    if spec.mode != "stop":
+        loads = load_columns(cols, n, spec.mode)
+        for k in LOAD_COLUMNS:
+            table[k] = loads[k].astype(str) if loads[k].dtype == object else loads[k]
+    return _Inputs(table, bodies, frictions, states, fields["g"], loads)
+
+
+def _common_table(fields: dict, unit: np.ndarray) -> dict:
+    """The tensor, body and initial-state columns of a footprint chunk."""
+    out = {"length_unit": unit}
+    for k in ("law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
+              "moment_of_inertia", "g", "x", "y", "phi", "vx", "vy", "omega"):
+        val = np.asarray(fields[k])
+        out[_RENAMED.get(k, k)] = val.astype(str) if val.dtype == object else val
+    out["I_star"] = out["moment_of_inertia"] / (out["mass"] * unit ** 2)
+    out["mu"] = out["fy"] - out["fx"]
+    out["v0"] = np.hypot(out["vx0"], out["vy0"])
+    out["theta0"] = np.arctan2(out["vy0"], out["vx0"])
+    return out
+
+
+_RENAMED = {"x": "x0", "y": "y0", "phi": "phi0", "vx": "vx0", "vy": "vy0", "omega": "omega0"}
+
+
 def compute_chunk(spec_data: dict, index: int) -> dict:
     """Compute chunk ``index`` of a sweep (a pure function: usable as a Dask task).
 
-    Returns a dict of equal-length columns: the case inputs and the stop results.
+    Returns a dict of equal-length columns (:func:`chunk_columns`): the case inputs and the
+    results (the stop, the statics, or the loaded run: the spec's ``compute``).
     """
     spec = load_spec(spec_data) if not isinstance(spec_data, SweepSpec) else spec_data
     _limit_threads_in_dask_worker()
     start = index * spec.chunk_size
     cols = spec.parameters(start, start + spec.chunk_size)
-    fields = _case_fields(cols)
-    res = simulate_cases(fields, rtol=float(spec.data.get("rtol", 1e-10)))
+    rtol = float(spec.data.get("rtol", 1e-10))
+    if spec.shape == "ellipse" and spec.mode == "stop":
+        fields = _case_fields(cols)
+        out = _input_table(cols, fields)
+        _add_results(out, simulate_cases(fields, rtol=rtol))
+        return out
+    inp = _case_inputs(spec, cols)
+    out = dict(inp.table)
+    given = set(spec.data.get("fixed", {})) | set(spec.data.get("vary", {}))
+    if spec.mode == "statics":
+        out.update(compute_statics(inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {},
+                                   given))
+    elif spec.mode == "loaded":
+        out.update(compute_loaded(inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {},
+                                  given, rtol))
+    else:
+        # one batch per value of g (simulate_bodies shares g across its cases)
+        parts = []
+        for gv in np.unique(inp.g):
+            sel = np.flatnonzero(inp.g == gv)
+            res = simulate_bodies([inp.bodies[i] for i in sel], [inp.frictions[i] for i in sel],
+                                  inp.states[sel], float(gv), rtol).as_dict()
+            parts.append((sel, res))
+        for k in RESULT_COLUMNS:
+            col = None
+            for sel, res in parts:
+                val = np.asarray(res[k])
+                if col is None:
+                    col = np.empty(inp.g.size, dtype=object if val.dtype.kind in "OU"
+                                   else val.dtype)
+                col[sel] = val
+            assert col is not None
+            out[k] = col.astype(str) if col.dtype == object else col
+    return out
+
+
+def _add_results(out: dict, res) -> None:
+    d = res.as_dict()
+    for k in RESULT_COLUMNS:
+        val = d[k]
+        out[k] = val.astype(str) if val.dtype == object else val
+
+
+def _input_table(cols: dict, fields: dict) -> dict:
+    """The input columns of an ellipse chunk (the layout of every earlier sweep)."""
     out = {"case_id": cols["case_id"].astype(np.int64)}
     for k in ("a", "b", "law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
               "moment_of_inertia", "g", "x", "y", "phi", "vx", "vy", "omega"):
@@ -414,10 +664,6 @@ def compute_chunk(spec_data: dict, index: int) -> dict:
     out["aspect"] = out["b"] / out["a"]
     out["v0"] = np.hypot(out["vx0"], out["vy0"])
     out["theta0"] = np.arctan2(out["vy0"], out["vx0"])
-    d = res.as_dict()
-    for k in RESULT_COLUMNS:
-        val = d[k]
-        out[k] = val.astype(str) if val.dtype == object else val
     return out
 
 
@@ -457,6 +703,62 @@ CHUNK_COLUMNS = (
     "moment_of_inertia", "g", "x0", "y0", "phi0", "vx0", "vy0", "omega0", "I_star", "mu",
     "aspect", "v0", "theta0",
 ) + RESULT_COLUMNS
+#: the geometry columns of a footprint chunk, per shape (derived keys included)
+_SHAPE_COLUMNS = {
+    "disk": ("radius",),
+    "annulus": ("outer_radius", "inner_radius", "ring_width", "radius_ratio"),
+    "rectangle": ("length", "width", "aspect"),
+    "polygon": ("scale",),
+}
+_FOOTPRINT_COMMON = (
+    "length_unit", "law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
+    "moment_of_inertia", "g", "x0", "y0", "phi0", "vx0", "vy0", "omega0", "I_star", "mu", "v0",
+    "theta0",
+)
+
+
+def chunk_columns(spec: SweepSpec) -> tuple:
+    """The columns of every chunk file of ``spec``, in order: inputs, derived inputs, results.
+
+    An ellipse sweep computing stops has :data:`CHUNK_COLUMNS` (the layout of every earlier
+    sweep). A footprint sweep has ``shape``, its geometry columns (``annulus``:
+    ``outer_radius``, ``inner_radius``, ``ring_width``, ``radius_ratio``; ``rectangle``:
+    ``length``, ``width``, ``aspect``; ``disk``: ``radius``; ``polygon``: ``scale``;
+    ``pads``: ``n_pads``, ``pad_spacing``, the pad's size and ``pad_shape``) and
+    ``length_unit`` (ℓ of I* = I/(m ℓ²)) in the place of ``a``, ``b``, ``aspect``. Statics
+    and loaded sweeps add the load and tilt columns and their own results
+    (:mod:`slidespin.sweep_loads`).
+    """
+    shape = spec.shape
+    if shape == "ellipse":
+        inputs = CHUNK_COLUMNS[: -len(RESULT_COLUMNS)]
+    else:
+        if shape == "pads":
+            size = (("pad_length", "pad_width") if spec.data["fixed"].get("pad_shape") ==
+                    "rectangle" else ("pad_radius",))
+            geo: tuple = ("n_pads", "pad_spacing", *size, "pad_shape")
+        else:
+            geo = _SHAPE_COLUMNS[shape]
+        inputs = ("case_id", "shape", *geo, *_FOOTPRINT_COMMON)
+    if spec.mode == "statics":
+        return inputs + LOAD_COLUMNS + STATICS_COLUMNS
+    if spec.mode == "loaded":
+        return inputs + LOAD_COLUMNS + LOADED_COLUMNS
+    return inputs + RESULT_COLUMNS
+
+
+def _vocabulary(spec: SweepSpec) -> tuple:
+    """(statuses, endings) a chunk of ``spec`` may hold."""
+    from .outcomes import ENDINGS, STATUSES
+    from .loaded import LOADED_ENDINGS
+
+    if spec.mode == "statics":
+        return STATICS_STATUSES, STATICS_ENDINGS
+    if spec.mode == "loaded":
+        return LOADED_STATUSES, LOADED_ENDINGS
+    return STATUSES, ENDINGS
+
+
 LOCK = ".lock"
 #: largest manifest read (its chunk list has one number per chunk)
 MAX_MANIFEST_BYTES = 128_000_000
@@ -499,13 +801,13 @@ def _parquet_write(table, path) -> None:
     pq.write_table(table, path)
 
 
-def _write_chunk(out: Path, index: int, table: dict) -> None:
+def _write_chunk(out: Path, index: int, table: dict, columns: tuple = CHUNK_COLUMNS) -> None:
     import pyarrow as pa
 
     path = _chunk_path(out, index)
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
     try:
-        _parquet_write(pa.table({k: np.asarray(table[k]) for k in CHUNK_COLUMNS}), tmp)
+        _parquet_write(pa.table({k: np.asarray(table[k]) for k in columns}), tmp)
         with open(tmp, "rb") as fh:
             os.fsync(fh.fileno())
         os.replace(tmp, path)
@@ -541,15 +843,14 @@ def _read_chunk(path: Path):
 def _verify_chunk(out: Path, spec: SweepSpec, index: int):
     """The status and ending columns of chunk ``index`` if its file is sound (readable,
     the right columns, rows and case numbers, known statuses), else ``None``."""
-    from .outcomes import ENDINGS, STATUSES
-
+    statuses, endings = _vocabulary(spec)
     start = index * spec.chunk_size
     n = min(spec.chunk_size, spec.n_cases - start)
     try:
         table = _read_chunk(_chunk_path(out, index))
     except SweepError:
         return None
-    if tuple(table.column_names) != CHUNK_COLUMNS or table.num_rows != n:
+    if tuple(table.column_names) != chunk_columns(spec) or table.num_rows != n:
         return None
     try:
         ids = table.column("case_id").to_numpy()
@@ -559,7 +860,7 @@ def _verify_chunk(out: Path, spec: SweepSpec, index: int):
         return None
     if not np.array_equal(ids, np.arange(start, start + n)):
         return None
-    if not (np.isin(status, STATUSES).all() and np.isin(ending, ENDINGS).all()):
+    if not (np.isin(status, statuses).all() and np.isin(ending, endings).all()):
         return None
     return status, ending
 
@@ -578,7 +879,7 @@ def count_outcomes(status, ending=None) -> dict:
     out = {"status": tally(status, STATUS_ORDER)}
     if ending is not None:
         out["ending"] = tally(ending, ENDINGS)
-    out["unconverged"] = sum(c for k, c in out["status"].items() if k in UNCONVERGED)
+    out["unconverged"] = sum(c for k, c in out["status"].items() if k in UNCONVERGED or k in LOADED_UNCONVERGED)
     return out
 
 
@@ -607,7 +908,7 @@ def _write_manifest(out: Path, spec: SweepSpec, done: set[int], counts: dict | N
         # over the chunks done (all cases once complete)
         "status_counts": dict(counts["status"]),
         "ending_counts": dict(counts["ending"]),
-        "unconverged": sum(c for k, c in counts["status"].items() if k in UNCONVERGED),
+        "unconverged": sum(c for k, c in counts["status"].items() if k in UNCONVERGED or k in LOADED_UNCONVERGED),
     }
     _atomic_write_bytes(out / MANIFEST, (json.dumps(doc, indent=1) + "\n").encode())
 
@@ -815,7 +1116,7 @@ class SweepResult:
         """Cases whose status is in :data:`slidespin.outcomes.UNCONVERGED`."""
         from .outcomes import UNCONVERGED
 
-        return sum(c for k, c in self.status_counts.items() if k in UNCONVERGED)
+        return sum(c for k, c in self.status_counts.items() if k in UNCONVERGED or k in LOADED_UNCONVERGED)
 
     @property
     def n_flagged(self) -> int:
@@ -824,9 +1125,14 @@ class SweepResult:
 
         return sum(c for k, c in self.status_counts.items() if k in FLAGGED)
 
+    def to_pandas(self, *, include_unconverged: bool = False):
+        """The sweep's results as a :class:`pandas.DataFrame` (:func:`to_pandas` of
+        :attr:`out`)."""
+        return to_pandas(self.out, include_unconverged=include_unconverged)
+
 
 def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | None = None,
-          task_cases: int = MIN_TASK_CASES) -> SweepResult:
+          task_cases: int | None = None) -> SweepResult:
     """Run (or resume) a parameter sweep and store its results in ``out``.
 
     Parameters
@@ -846,8 +1152,10 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
         directory is refused, and a directory of a different spec always is.
     progress : bool or None
         Progress bar on stderr; ``None`` means only when stderr is a terminal.
-    task_cases : int, default 1000
+    task_cases : int or None
         With an executor, the least number of cases per task (whole chunks are grouped).
+        ``None``: :data:`MIN_TASK_CASES` for stop sweeps, one chunk per task for statics and
+        loaded sweeps (a loaded case takes milliseconds to seconds).
 
     Returns
     -------
@@ -861,9 +1169,12 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
         and ``resume=True`` completes the sweep.
     """
     _require_pyarrow()
-    if isinstance(task_cases, bool) or not isinstance(task_cases, int) or task_cases < 1:
+    if task_cases is not None and (isinstance(task_cases, bool) or not isinstance(task_cases, int)
+                                   or task_cases < 1):
         raise SweepError(f"task_cases = {task_cases!r} is invalid; valid range: integer >= 1")
     spec = load_spec(spec)
+    if task_cases is None:
+        task_cases = MIN_TASK_CASES if spec.mode == "stop" else 1
     out = Path(out)
     _check_out(out)  # before creating anything
     if not out.is_dir():
@@ -885,9 +1196,10 @@ def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult
     show = sys.stderr.isatty() if progress is None else bool(progress)
     bar = _Progress(spec.n_cases, sum(_chunk_len(spec, i) for i in done), show)
     t0 = time.perf_counter()
+    columns = chunk_columns(spec)
 
     def finish(i, table):
-        _write_chunk(out, i, table)
+        _write_chunk(out, i, table, columns)
         done.add(i)
         _add_counts(counts, table["status"], table["ending"])
         _write_manifest(out, spec, done, counts)
@@ -994,6 +1306,35 @@ def read_sweep(out, *, include_unconverged: bool = False) -> dict:
     return cols if include_unconverged else split_unconverged(cols)[0]
 
 
+def to_pandas(out, *, include_unconverged: bool = False):
+    """A sweep directory's results as a :class:`pandas.DataFrame`, one row per case.
+
+    The table of :func:`read_sweep` (same columns, sorted by ``case_id``, unconverged cases
+    left out unless ``include_unconverged``), read from the Parquet chunks; the spec, its
+    name and the cases left out per status are in ``DataFrame.attrs``. Needs pandas
+    (``pip install pandas``; it is in the ``test`` extra).
+
+    Raises
+    ------
+    ImportError
+        If pandas is not installed (the message says how to install it).
+    SweepError
+        If ``out`` is not a sweep directory or a chunk is unreadable.
+    """
+    try:
+        import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
+    except ImportError:  # pragma: no cover - depends on the environment
+        raise ImportError("slidespin.sweep.to_pandas needs pandas: pip install pandas "
+                          "(or pip install 'slidespin[test]')") from None
+    table = read_sweep(out, include_unconverged=True)
+    kept, left = (table, {}) if include_unconverged else split_unconverged(table)
+    df = pd.DataFrame({k: np.asarray(val) for k, val in kept.items()})
+    man = _read_manifest(Path(out)) or {}
+    spec = man.get("spec", {}) if isinstance(man.get("spec"), dict) else {}
+    df.attrs.update(name=spec.get("name", ""), spec=spec, left_out=left)
+    return df
+
+
 def split_unconverged(table: dict):
     """``(kept, left_out)``: the table without the unconverged cases, and the number left out
     per status (``{}`` if none). A table without a ``status`` column is kept whole."""
@@ -1002,7 +1343,7 @@ def split_unconverged(table: dict):
     if not table or "status" not in table:
         return table, {}
     status = np.asarray(table["status"]).astype(str)
-    bad = np.isin(status, sorted(UNCONVERGED))
+    bad = np.isin(status, sorted(UNCONVERGED | LOADED_UNCONVERGED))
     if not bad.any():
         return table, {}
     left = {k: int(c) for k, c in zip(*np.unique(status[bad], return_counts=True))}
