@@ -19,9 +19,17 @@ name                   meaning                                         bounds
                                                                        FrictionTensor's range
 ``f``                  skew coefficient of 𝔽                           FrictionTensor's range
 ``angle``              angle of 𝔽's principal axes [rad]               any
-``xi_c``, ``eta_c``    linear law's pressure centroid = G [m] (eq. 10)  |ξc| ≤ a/4, |ηc| ≤ b/4
+``xi_c``, ``eta_c``    linear law's pressure centroid = G [m] (eq. 10)  |ξc| ≤ a/4, |ηc| ≤ b/4;
+                                                                       a footprint: its core
 ``moment_of_inertia``  I about G [kg m²]                               [1e-4, 1e4] × the guess
 =====================  ==============================================  =========================
+
+The body may rest on an ellipse or on any footprint of :mod:`slidespin.footprint` (uniform or
+linear pressure, MODEL §10). G of the linear law is kept in the core of the patch, where the
+pressure is ≥ 0: the ellipse's (ξc/a)² + (ηc/b)² ≤ 1/16, a footprint's core (for a rectangle
+the middle-third rhombus |ξc|/(L/6) + |ηc|/(W/6) ≤ 1); a trial G outside it is projected onto
+it towards the area centroid. On a footprint the length a below is its extent ℓ
+(:attr:`slidespin.Body.length_unit`).
 
 The tensor's ``frame`` (plane or body) is discrete and is not fitted by :func:`fit`: it is
 taken from the ``friction`` given. :func:`compare_frames` fits both frames and returns the
@@ -43,7 +51,7 @@ under translation). Trajectories depend on the parameters smoothly except throug
 time, where x(t) is still continuously differentiable (the velocity vanishes at the stop).
 
 Identifiability. The Jacobian is scaled by each parameter's typical size (``fx``, ``fy``,
-``f``: max(fx, fy) of the guess; ``angle``: 1 rad; ``xi_c``, ``eta_c``: a/4, b/4; ``I``: its
+``f``: max(fx, fy) of the guess; ``angle``: 1 rad; ``xi_c``, ``eta_c``: a/4, b/4 (ℓ/4 on a footprint); ``I``: its
 guess; start positions: a; start velocities: the run's speed scale). A singular value s < 1 of
 that matrix is a combination of parameters that a change of its typical size moves the total
 χ² by less than 1: the data cannot determine it. Parameters taking part in it (weight ≥ 0.1)
@@ -248,8 +256,10 @@ def read_runs(path, *, labels: bool = False):
         One line naming the file, the column and the line of the file.
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise ValueError(f"data file path = {path!r} ({type(path).__name__}) is invalid; "
-                         "valid values: a str or os.PathLike path to a CSV file")
+        raise ValueError(
+            f"data file path = {path!r} ({type(path).__name__}) is invalid; "
+            "valid values: a str or os.PathLike path to a CSV file"
+        )
     name = os.fsdecode(os.fspath(path))
     raw = read_regular_file(path, "data file", "CSV", MAX_DATA_BYTES)
     try:
@@ -283,9 +293,7 @@ def read_runs(path, *, labels: bool = False):
     runs: dict[str, dict[str, list]] = {}
     for line, r in lines[1:]:
         if len(r) != len(cols):
-            raise ValueError(
-                f"{name}: line {line} has {len(r)} fields; the header has {len(cols)}"
-            )
+            raise ValueError(f"{name}: line {line} has {len(r)} fields; the header has {len(cols)}")
         label = "0"
         vals = {}
         for c, cell in zip(cols, r):
@@ -374,6 +382,30 @@ def trajectory_at(traj, t) -> dict:
     return {c: val[..., i] for i, c in enumerate(CHANNELS)}
 
 
+def _core_scale(patch, offset: tuple[float, float]) -> float:
+    """Largest s in [0, 1] for which the linear law with G = r_c + s·offset is ≥ 0 on the
+    footprint ``patch`` (r_c its area centroid; MODEL §10).
+
+    The law is p ∝ 1 + gᵀ(r − r_c) with J g = A (r_G − r_c): g is linear in the offset, so the
+    minimum of gᵀ(r − r_c) over the footprint (at a polygon vertex or on a disk's rim) scales
+    with s and p ≥ 0 holds up to s = −1/min.
+    """
+    d = np.asarray(offset, dtype=float)
+    if not np.any(d):
+        return 1.0
+    rc = np.asarray(patch.centroid, dtype=float)
+    grad = np.linalg.solve(np.asarray(patch.second_moment, dtype=float), patch.area * d)
+    arrays = patch.to_arrays()
+    low = math.inf
+    if arrays.edges.size:
+        low = float(np.min((arrays.edges[:, :2] - rc) @ grad))
+    gn = float(np.hypot(*grad))
+    for xo, yo, radius, sign in arrays.circles:
+        if sign > 0:
+            low = min(low, float(grad @ (np.array([xo, yo]) - rc)) - gn * radius)
+    return 1.0 if low >= -1.0 else -1.0 / low
+
+
 def _wrap(a):
     return (a + np.pi) % (2.0 * np.pi) - np.pi
 
@@ -381,8 +413,9 @@ def _wrap(a):
 class _Problem:
     """Parameter bookkeeping and residuals of one fit (internal; not part of the API)."""
 
-    def __init__(self, runs, body, friction, free, start_fixed, start_free, guess, g, rtol,
-                 max_step, fd_step):
+    def __init__(
+        self, runs, body, friction, free, start_fixed, start_free, guess, g, rtol, max_step, fd_step
+    ):
         self.runs = runs
         self.body = body
         self.friction = friction
@@ -391,22 +424,63 @@ class _Problem:
         self.rtol = rtol
         self.max_step = max_step
         self.fd_step = fd_step
-        a, b = body.patch.a, body.patch.b
+        a = body.length_unit  # the semi-axis a of an ellipse, the extent of a footprint
+        xg, yg = body.mass_centre
         base = {
-            "fx": friction.fx, "fy": friction.fy, "f": friction.f, "angle": friction.angle,
-            "xi_c": body.pressure.centroid[0], "eta_c": body.pressure.centroid[1],
+            "fx": friction.fx,
+            "fy": friction.fy,
+            "f": friction.f,
+            "angle": friction.angle,
+            "xi_c": xg,
+            "eta_c": yg,
             "moment_of_inertia": body.moment_of_inertia,
         }
         self.base = base
+        if body.is_footprint:
+            # G's range: the core of the footprint (p >= 0) along each axis through the
+            # area centroid; objects() projects a point outside the core back onto it
+            cx, cy = body.patch.centroid
+            xi_lo, xi_hi = (
+                cx + sgn * a * _core_scale(body.patch, (sgn * a, 0.0)) for sgn in (-1.0, 1.0)
+            )
+            eta_lo, eta_hi = (
+                cy + sgn * a * _core_scale(body.patch, (0.0, sgn * a)) for sgn in (-1.0, 1.0)
+            )
+            typ_xi = typ_eta = a / 4.0
+        else:
+            b = body.patch.b
+            xi_lo, xi_hi, eta_lo, eta_hi = -a / 4.0, a / 4.0, -b / 4.0, b / 4.0
+            typ_xi, typ_eta = a / 4.0, b / 4.0
         fmax = max(friction.fx, friction.fy)
-        typ = {"fx": fmax, "fy": fmax, "f": fmax, "angle": 1.0, "xi_c": a / 4.0,
-               "eta_c": b / 4.0, "moment_of_inertia": body.moment_of_inertia}
-        c_lo, c_hi = getattr(v, "COEFFICIENT", (1e-9, np.inf))  # FrictionTensor's range
-        skew = getattr(v, "SKEW", np.inf)
-        lo = {"fx": c_lo, "fy": c_lo, "f": -skew, "angle": -np.inf, "xi_c": -a / 4.0,
-              "eta_c": -b / 4.0, "moment_of_inertia": 1e-4 * body.moment_of_inertia}
-        hi = {"fx": c_hi, "fy": c_hi, "f": skew, "angle": np.inf, "xi_c": a / 4.0,
-              "eta_c": b / 4.0, "moment_of_inertia": 1e4 * body.moment_of_inertia}
+        typ = {
+            "fx": fmax,
+            "fy": fmax,
+            "f": fmax,
+            "angle": 1.0,
+            "xi_c": typ_xi,
+            "eta_c": typ_eta,
+            "moment_of_inertia": body.moment_of_inertia,
+        }
+        c_lo, c_hi = v.COEFFICIENT  # FrictionTensor's range
+        skew = v.SKEW
+        lo = {
+            "fx": c_lo,
+            "fy": c_lo,
+            "f": -skew,
+            "angle": -np.inf,
+            "xi_c": xi_lo,
+            "eta_c": eta_lo,
+            "moment_of_inertia": 1e-4 * body.moment_of_inertia,
+        }
+        hi = {
+            "fx": c_hi,
+            "fy": c_hi,
+            "f": skew,
+            "angle": np.inf,
+            "xi_c": xi_hi,
+            "eta_c": eta_hi,
+            "moment_of_inertia": 1e4 * body.moment_of_inertia,
+        }
         names, x0, typs, lbs, ubs, owner = [], [], [], [], [], []
         for p in free:
             names.append(p)
@@ -426,9 +500,16 @@ class _Problem:
             self.start_base.append(vals.copy())
             idx = []
             if start_fixed[k] is None:
-                comps = start_free if start_free is not None else tuple(
-                    comp for c in CHANNELS if c in run and np.isfinite(run[c]).any()
-                    for comp in (c, _PAIR[c]))
+                comps = (
+                    start_free
+                    if start_free is not None
+                    else tuple(
+                        comp
+                        for c in CHANNELS
+                        if c in run and np.isfinite(run[c]).any()
+                        for comp in (c, _PAIR[c])
+                    )
+                )
                 for comp in START:
                     if comp in comps:
                         j = START.index(comp)
@@ -467,7 +548,7 @@ class _Problem:
             i = self.slices[k].start
             for c, m in items:
                 cnt = int(m.sum())
-                self.chan_of_row[i:i + cnt] = c
+                self.chan_of_row[i : i + cnt] = c
                 i += cnt
         self.sigma = {c: 1.0 for c in CHANNELS}
         self._cache = None
@@ -480,16 +561,23 @@ class _Problem:
         return vals
 
     def objects(self, vals):
-        fr = FrictionTensor(vals["fx"], vals["fy"], vals["f"], self.friction.frame,
-                            vals["angle"])
+        fr = FrictionTensor(vals["fx"], vals["fy"], vals["f"], self.friction.frame, vals["angle"])
         pressure = self.body.pressure
         if "xi_c" in self.free or "eta_c" in self.free:
             xi, eta = vals["xi_c"], vals["eta_c"]
-            a, b = self.body.patch.a, self.body.patch.b
-            c = (xi / a) ** 2 + (eta / b) ** 2
-            if c > 1.0 / 16.0:  # radial projection onto the core of the patch
-                s = math.sqrt(1.0 / 16.0 / c) * (1.0 - 1e-12)
-                xi, eta = xi * s, eta * s
+            patch = self.body.patch
+            if self.body.is_footprint:
+                # projection towards the area centroid onto the core (p >= 0 on the footprint)
+                cx, cy = patch.centroid
+                s = _core_scale(patch, (xi - cx, eta - cy))
+                if s < 1.0:
+                    s *= 1.0 - 1e-12
+                    xi, eta = cx + s * (xi - cx), cy + s * (eta - cy)
+            else:
+                c = (xi / patch.a) ** 2 + (eta / patch.b) ** 2
+                if c > 1.0 / 16.0:  # radial projection onto the core of the patch
+                    s = math.sqrt(1.0 / 16.0 / c) * (1.0 - 1e-12)
+                    xi, eta = xi * s, eta * s
             pressure = LinearPressure(xi, eta)
         body = Body(self.body.patch, pressure, self.body.mass, vals["moment_of_inertia"])
         return body, fr
@@ -506,8 +594,9 @@ class _Problem:
 
         body, fr = self.objects(vals)
         state = State(*start)
-        traj = simulate(body, fr, state, g=self.g, rtol=self.rtol, max_step=self.max_step,
-                        max_steps=QUICK_STEPS)
+        traj = simulate(
+            body, fr, state, g=self.g, rtol=self.rtol, max_step=self.max_step, max_steps=QUICK_STEPS
+        )
         if traj.status == "max_steps":
             # A slow approach to the stop (MODEL §9, e.g. near pure sliding) may take many
             # steps at speeds that no longer move the body visibly, or after the last
@@ -519,8 +608,7 @@ class _Problem:
             i = max(0, traj.t.size - 2)
             s_end = math.hypot(traj.speed[i], k * traj.omega[i])
             if traj.t[i] < t_need and not s_end <= 1e-9 * s0:
-                traj = simulate(body, fr, state, g=self.g, rtol=self.rtol,
-                                max_step=self.max_step)
+                traj = simulate(body, fr, state, g=self.g, rtol=self.rtol, max_step=self.max_step)
         return traj
 
     def model_run(self, vals, start, k):
@@ -546,8 +634,9 @@ class _Problem:
 
     def raw_residuals(self, p) -> np.ndarray:
         vals = self.physical(p)
-        return np.concatenate([self.raw_residual_run(vals, self.start(p, k), k)
-                               for k in range(len(self.runs))])
+        return np.concatenate(
+            [self.raw_residual_run(vals, self.start(p, k), k) for k in range(len(self.runs))]
+        )
 
     def residuals(self, p) -> np.ndarray:
         key = p.tobytes()
@@ -584,8 +673,11 @@ class _Problem:
                 vals_up, vals_dn = p.copy(), p.copy()
                 vals_up[i], vals_dn[i] = up, dn
                 r_up = self.raw_residual_run(self.physical(vals_up), self.start(vals_up, k), k)
-                r_dn = (r0[sl] / w[sl] if dn == p[i] else self.raw_residual_run(
-                    self.physical(vals_dn), self.start(vals_dn, k), k))
+                r_dn = (
+                    r0[sl] / w[sl]
+                    if dn == p[i]
+                    else self.raw_residual_run(self.physical(vals_dn), self.start(vals_dn, k), k)
+                )
                 if up == p[i]:
                     r_up = r0[sl] / w[sl]
                 d = r_up - r_dn
@@ -775,10 +867,95 @@ class FitResult:
         parts = []
         for k, val in self.estimates.items():
             se = self.std_errors[k]
-            parts.append(f"{k}={val:.6g} ± {se:.2g}" if math.isfinite(se)
-                         else f"{k}={val:.6g} (not identifiable)")
-        return (f"FitResult({', '.join(parts)}; chi2/dof={self.reduced_chi2:.3g}, "
-                f"runs={self.n_runs}, points={self.n_points}, success={self.success})")
+            parts.append(
+                f"{k}={val:.6g} ± {se:.2g}"
+                if math.isfinite(se)
+                else f"{k}={val:.6g} (not identifiable)"
+            )
+        notes = f", warnings={len(self.warnings)}" if self.warnings else ""
+        return (
+            f"FitResult({', '.join(parts)}; chi2/dof={self.reduced_chi2:.3g}, "
+            f"runs={self.n_runs}, points={self.n_points}, success={self.success}{notes})"
+        )
+
+    def _repr_html_(self) -> str:
+        """Estimates ± standard errors, 95 % intervals, the fit's warnings (identifiability,
+        correlations, bounds) and its goodness for notebooks (no arrays)."""
+        from html import escape
+
+        head = "".join(
+            f"<th>{h}</th>" for h in ("parameter", "estimate", "std error", "95% interval")
+        )
+        rows = []
+        for k, val in self.estimates.items():
+            se = self.std_errors[k]
+            if math.isfinite(se):
+                lo, hi = self.interval(k)
+                cells = (f"{val:.6g}", f"{se:.3g}", f"[{lo:.6g}, {hi:.6g}]")
+            else:
+                cells = (f"{val:.6g}", "inf", "not identifiable")
+            rows.append(
+                f"<tr><th style='text-align:left'>{escape(k)}</th>"
+                + "".join(f"<td>{c}</td>" for c in cells)
+                + "</tr>"
+            )
+        stats = {
+            "chi2 / dof": f"{self.chi2:.6g} / {self.dof} = {self.reduced_chi2:.4g}",
+            "points, runs": f"{self.n_points} values in {self.n_runs} run(s)",
+            "noise sigma": ", ".join(
+                f"{c} {x:.3g} {_UNITS[c]}{' (estimated)' if self.sigma_estimated[c] else ''}"
+                for c, x in self.sigma.items()
+            ),
+            "converged": f"{self.success} ({self.message})",
+        }
+        for m in self.warnings:
+            stats.setdefault("warnings", "")
+            stats["warnings"] += ("<br>" if stats["warnings"] else "") + escape(m)
+        for k, text in stats.items():
+            body = text if k == "warnings" else escape(text)
+            rows.append(
+                f"<tr><th style='text-align:left'>{escape(k)}</th><td colspan='3'>{body}</td></tr>"
+            )
+        return f"<table><caption>FitResult</caption><tr>{head}</tr>{''.join(rows)}</table>"
+
+    def to_pandas(self, level: float = 0.95):
+        """Every fitted parameter as a :class:`pandas.DataFrame` (one row each, indexed by
+        :attr:`parameter_names`): ``estimate``, ``std_error`` and the normal-approximation
+        interval at ``level`` (``ci_low``, ``ci_high``; ±inf where not identifiable), and
+        ``identifiable``. The free physical parameters come first, then each run's start
+        components ``run{k}.{x|y|phi|vx|vy|omega}``; the goodness of fit (:meth:`summary`)
+        is in ``DataFrame.attrs``. Needs pandas (``pip install pandas``)."""
+        try:
+            import pandas as pd  # type: ignore[import-untyped]  # no stubs installed
+        except ImportError:  # pragma: no cover - depends on the environment
+            raise ImportError("FitResult.to_pandas needs pandas: pip install pandas") from None
+        from scipy.stats import norm
+
+        level = v.in_range("level", level, 0.0, 1.0, lo_open=True, hi_open=True)
+        z = float(norm.ppf(0.5 + level / 2.0))
+        est, se = [], []
+        for name, val in zip(self.parameter_names, self.values):
+            if name in self.std_errors:
+                est.append(self.estimates[name])
+                se.append(self.std_errors[name])
+            else:
+                run, comp = name.split(".")
+                est.append(float(val))
+                se.append(self.start_errors[int(run[3:])][comp])
+        e, s = np.array(est, dtype=float), np.array(se, dtype=float)
+        df = pd.DataFrame(
+            {
+                "estimate": e,
+                "std_error": s,
+                "ci_low": e - z * s,
+                "ci_high": e + z * s,
+                "identifiable": [bool(self.identifiable[n]) for n in self.parameter_names],
+            },
+            index=pd.Index(list(self.parameter_names), name="parameter"),
+        )
+        df.attrs.update(self.summary())
+        df.attrs["level"] = level
+        return df
 
     @property
     def names(self) -> tuple:
@@ -797,8 +974,10 @@ class FitResult:
         """Correlation among the free physical parameters as a nested dict."""
         n = len(self.estimates)
         names = list(self.estimates)
-        return {a: {b: _num(self.correlation[i, j]) for j, b in enumerate(names)}
-                for i, a in enumerate(names[:n])}
+        return {
+            a: {b: _num(self.correlation[i, j]) for j, b in enumerate(names)}
+            for i, a in enumerate(names[:n])
+        }
 
     def summary(self) -> dict:
         """JSON-ready dict (non-finite numbers are ``None``)."""
@@ -850,8 +1029,12 @@ class FitResult:
         if len(names) > 1:
             lines.append("correlation:")
             for i, a in enumerate(names):
-                row = " ".join(f"{self.correlation[i, j]:+7.3f}" if math.isfinite(
-                    self.correlation[i, j]) else f"{'n/a':>7}" for j in range(len(names)))
+                row = " ".join(
+                    f"{self.correlation[i, j]:+7.3f}"
+                    if math.isfinite(self.correlation[i, j])
+                    else f"{'n/a':>7}"
+                    for j in range(len(names))
+                )
                 lines.append(f"  {a:<16} {row}")
         for k, st in enumerate(self.starts):
             lines.append(
@@ -861,13 +1044,16 @@ class FitResult:
         rms = ", ".join(f"{c} {x:.3g} {_UNITS[c]}" for c, x in self.rms.items())
         sig = ", ".join(
             f"{c} {x:.3g} {_UNITS[c]}{' (estimated)' if self.sigma_estimated[c] else ''}"
-            for c, x in self.sigma.items())
+            for c, x in self.sigma.items()
+        )
         lines += [
             f"chi2 / dof        : {self.chi2:.6g} / {self.dof} = {self.reduced_chi2:.4g}",
             f"rms residual      : {rms}",
             f"noise sigma       : {sig}",
-            (f"points, runs      : {self.n_points} values in {self.n_runs} run(s); "
-             f"{self.nfev} evaluations, {self.seconds:.3g} s"),
+            (
+                f"points, runs      : {self.n_points} values in {self.n_runs} run(s); "
+                f"{self.nfev} evaluations, {self.seconds:.3g} s"
+            ),
             f"converged         : {self.success} ({self.message})",
         ]
         return "\n".join(lines)
@@ -888,8 +1074,9 @@ def _check_free(free, body):
     try:
         free = tuple(free)
     except TypeError:
-        raise ValueError(f"free = {free!r} is invalid; valid values: names from "
-                         f"{', '.join(PARAMETERS)}") from None
+        raise ValueError(
+            f"free = {free!r} is invalid; valid values: names from {', '.join(PARAMETERS)}"
+        ) from None
     for p in free:
         if p not in PARAMETERS:
             raise ValueError(
@@ -915,11 +1102,15 @@ def _check_states(name, value, n, allow_none):
     if isinstance(value, (list, tuple)) and len(value) == n:
         for i, s in enumerate(value):
             if not (isinstance(s, State) or (allow_none and s is None)):
-                raise ValueError(f"{name}[{i}] = {s!r} is invalid; valid values: a State"
-                                 + (" or None" if allow_none else ""))
+                raise ValueError(
+                    f"{name}[{i}] = {s!r} is invalid; valid values: a State"
+                    + (" or None" if allow_none else "")
+                )
         return list(value)
-    raise ValueError(f"{name} = {value!r} is invalid; valid values: None, a State, or a list of "
-                     f"{n} States (one per run)")
+    raise ValueError(
+        f"{name} = {value!r} is invalid; valid values: None, a State, or a list of "
+        f"{n} States (one per run)"
+    )
 
 
 def fit(
@@ -1008,7 +1199,7 @@ def fit(
     from scipy.optimize import least_squares
 
     t_start = time.perf_counter()
-    check_body_friction(body, friction, elliptic_only="fit")
+    check_body_friction(body, friction)
     runs = as_runs(data)
     free = _check_free(free, body)
     loss = v.choice("loss", loss, LOSSES)
@@ -1018,8 +1209,9 @@ def fit(
     max_step = None if max_step is None else v.positive("max_step", max_step)
     fd_step = v.in_range("fd_step", fd_step, MIN_FD_STEP, MAX_FD_STEP)
     corr_limit = v.in_range("corr_limit", corr_limit, 0.0, 1.0, lo_open=True)
-    if max_nfev is not None and (isinstance(max_nfev, bool) or not isinstance(
-            max_nfev, numbers.Integral) or max_nfev < 1):
+    if max_nfev is not None and (
+        isinstance(max_nfev, bool) or not isinstance(max_nfev, numbers.Integral) or max_nfev < 1
+    ):
         raise ValueError(f"max_nfev = {max_nfev!r} is invalid; valid range: integer >= 1")
     n = len(runs)
     fixed = _check_states("starts", starts, n, True)
@@ -1028,14 +1220,17 @@ def fit(
         start_free = tuple(start_free)
         for c in start_free:
             if c not in START:
-                raise ValueError(f"start_free component {c!r} is unknown; valid: "
-                                 f"{', '.join(START)}")
+                raise ValueError(
+                    f"start_free component {c!r} is unknown; valid: {', '.join(START)}"
+                )
     present = [c for c in CHANNELS if any(c in r and np.isfinite(r[c]).any() for r in runs)]
     given = {}
     if sigma is not None:
         if not isinstance(sigma, Mapping):
-            raise ValueError(f"sigma = {sigma!r} is invalid; valid values: a dict such as "
-                             "{'x': 1e-3, 'y': 1e-3, 'phi': 1e-2}")
+            raise ValueError(
+                f"sigma = {sigma!r} is invalid; valid values: a dict such as "
+                "{'x': 1e-3, 'y': 1e-3, 'phi': 1e-2}"
+            )
         for c, s in sigma.items():
             if c not in CHANNELS:
                 raise ValueError(f"sigma channel {c!r} is unknown; valid: x, y, phi")
@@ -1046,8 +1241,9 @@ def fit(
             guess_states.append(fixed[k])
         else:
             guess_states.append(_guess_start(run, guesses[k] or State()))
-    prob = _Problem(runs, body, friction, free, fixed, start_free, guess_states, g, rtol,
-                    max_step, fd_step)
+    prob = _Problem(
+        runs, body, friction, free, fixed, start_free, guess_states, g, rtol, max_step, fd_step
+    )
     n_par = len(prob.names)
     if prob.n_obs <= n_par:
         raise ValueError(
@@ -1055,22 +1251,36 @@ def fit(
             f"({', '.join(prob.names)}); need more values than parameters"
         )
     estimated = {c: c not in given for c in present}
-    floor = {"x": 1e-10 * body.patch.a, "y": 1e-10 * body.patch.a, "phi": 1e-10}
+    floor = {"x": 1e-10 * body.length_unit, "y": 1e-10 * body.length_unit, "phi": 1e-10}
     for c in present:
         prob.sigma[c] = given.get(c) or max(_noise_from_data(runs, c), floor[c])
 
     p = np.clip(prob.x0, prob.lb, prob.ub)
     fun = prob.residuals
+
     def jac(q):
         return prob.jacobian(q)
+
     nfev = 0
     res = None
     caught: list[str] = []
     for _ in range(6):
         with _one_blas_thread():
-                res = least_squares(fun, p, jac=jac, bounds=(prob.lb, prob.ub), x_scale=prob.typ,
-                                loss=loss, f_scale=f_scale, method="trf", ftol=1e-9,
-                                xtol=1e-9, gtol=1e-9, max_nfev=max_nfev, tr_solver=TR_SOLVER)
+            res = least_squares(
+                fun,
+                p,
+                jac=jac,
+                bounds=(prob.lb, prob.ub),
+                x_scale=prob.typ,
+                loss=loss,
+                f_scale=f_scale,
+                method="trf",
+                ftol=1e-9,
+                xtol=1e-9,
+                gtol=1e-9,
+                max_nfev=max_nfev,
+                tr_solver=TR_SOLVER,
+            )
         p = res.x
         nfev += int(res.nfev)
         if not any(estimated.values()):
@@ -1092,6 +1302,7 @@ def fit(
             prob.sigma[c] = s
         if not changed:
             break
+    assert res is not None  # the loop runs at least once
 
     # covariance, identifiability
     r = prob.residuals(p)
@@ -1118,8 +1329,7 @@ def fit(
     if np.any(p_null != p):
         J0 = prob.jacobian(p_null)
         if loss != "linear":
-            J0 = J0 * np.sqrt(_loss_weights((prob.residuals(p_null) / f_scale) ** 2,
-                                            loss))[:, None]
+            J0 = J0 * np.sqrt(_loss_weights((prob.residuals(p_null) / f_scale) ** 2, loss))[:, None]
         not_ident |= _undetermined(J0, prob.typ)[2]
     for j in not_ident:
         se[j] = math.inf
@@ -1128,13 +1338,19 @@ def fit(
     names = prob.names
     identifiable = {name: (j not in not_ident) for j, name in enumerate(names)}
 
-    msgs = []
+    msgs: list[tuple[type[FitWarning], str]] = []
     if not_ident:
         which = [names[j] for j in sorted(not_ident)]
-        msgs.append((IdentifiabilityWarning,
-                     (f"the data cannot determine {', '.join(which)}: a change of their "
-                      "typical size moves chi2 by less than 1 (standard errors reported as "
-                      "inf)")))
+        msgs.append(
+            (
+                IdentifiabilityWarning,
+                (
+                    f"the data cannot determine {', '.join(which)}: a change of their "
+                    "typical size moves chi2 by less than 1 (standard errors reported as "
+                    "inf)"
+                ),
+            )
+        )
     pairs = []
     for i in range(n_par):
         for j in range(i + 1, n_par):
@@ -1143,13 +1359,21 @@ def fit(
             if abs(corr[i, j]) > corr_limit:
                 pairs.append(f"{names[i]} and {names[j]} ({corr[i, j]:+.4f})")
     if pairs:
-        msgs.append((IdentifiabilityWarning,
-                     "the data hardly separate " + "; ".join(pairs)
-                     + f" (|correlation| > {corr_limit:g}): only a combination is determined"))
+        msgs.append(
+            (
+                IdentifiabilityWarning,
+                "the data hardly separate "
+                + "; ".join(pairs)
+                + f" (|correlation| > {corr_limit:g}): only a combination is determined",
+            )
+        )
     if not res.success:
         msgs.append((FitWarning, f"the least-squares fit did not converge: {res.message}"))
-    at_bound = [f"{names[j]} = {p[j]:.6g} (valid range [{prob.lb[j]:.6g}, {prob.ub[j]:.6g}])"
-                for j in range(n_par) if res.active_mask[j] != 0]
+    at_bound = [
+        f"{names[j]} = {p[j]:.6g} (valid range [{prob.lb[j]:.6g}, {prob.ub[j]:.6g}])"
+        for j in range(n_par)
+        if res.active_mask[j] != 0
+    ]
     if at_bound:
         msgs.append((FitWarning, f"the fit ended at a bound: {'; '.join(at_bound)}"))
     for cls, m in msgs:
@@ -1165,8 +1389,7 @@ def fit(
         at, traj = prob.model_run(vals, st, k)
         trajs.append(traj)
         start_states.append(State(*st))
-        start_errs.append({names[i].split(".")[-1]: float(se[i])
-                           for _, i in prob.start_index[k]})
+        start_errs.append({names[i].split(".")[-1]: float(se[i]) for _, i in prob.start_index[k]})
         dd = {"t": run["t"].copy()}
         ff = {"t": run["t"].copy()}
         rr = {"t": run["t"].copy()}
@@ -1236,8 +1459,7 @@ def frame_score(result: FitResult) -> float:
     return score
 
 
-def compare_frames(data, body: Body, friction: FrictionTensor, free=("fx", "fy", "f"),
-                   **kwargs):
+def compare_frames(data, body: Body, friction: FrictionTensor, free=("fx", "fy", "f"), **kwargs):
     """Fit with the tensor fixed to the plane and to the body; return the better fit.
 
     The frame is discrete, so it is chosen by fitting both (same free parameters, same
@@ -1261,5 +1483,5 @@ def compare_frames(data, body: Body, friction: FrictionTensor, free=("fx", "fy",
     for frame in ("plane", "body"):
         fits[frame] = fit(data, body, replace(friction, frame=frame), free, **kwargs)
         scores[frame] = frame_score(fits[frame])
-    best = min(scores, key=scores.get)
+    best = min(scores, key=lambda frame: scores[frame])
     return fits[best], scores, fits

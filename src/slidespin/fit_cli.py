@@ -47,28 +47,54 @@ def configure(parser) -> None:
     parser.epilog = (
         "DATA.csv columns: t [s], x, y [m], phi [rad] (any of x, y, phi may be absent; an empty "
         "cell is a missing value) and an optional run label column 'run'. Free parameters: "
-        + ", ".join(PARAMETERS) + ". The tensor's frame is taken from the case file unless "
+        + ", ".join(PARAMETERS)
+        + ". The tensor's frame is taken from the case file unless "
         "--frame says otherwise."
     )
     parser.add_argument("data", metavar="DATA.csv", help="tracked runs (CSV)")
-    parser.add_argument("--case", required=True, metavar="CASE.toml",
-                        help="body, friction (start guess) and g, as for 'slidespin simulate'")
-    parser.add_argument("--free", default="fx,fy,f", metavar="NAMES",
-                        help="comma-separated parameters to fit (default fx,fy,f)")
-    parser.add_argument("--sigma", default=None, metavar="x=SX,y=SY,phi=SPHI",
-                        help="noise level of channels [m, rad]; others are estimated from the "
-                        "residuals")
-    parser.add_argument("--loss", default="linear", choices=LOSSES,
-                        help="least-squares loss; a robust one limits outliers (default linear)")
-    parser.add_argument("--frame", default="case", choices=("case", "plane", "body", "best"),
-                        help="frame of the tensor: as in the case file (default), plane, body, "
-                        "or best: fit both and keep the likelier")
-    parser.add_argument("--fixed-start", action="store_true",
-                        help="the case's [initial] state is the known start of every run")
+    parser.add_argument(
+        "--case",
+        required=True,
+        metavar="CASE.toml",
+        help="body, friction (start guess) and g, as for 'slidespin simulate'",
+    )
+    parser.add_argument(
+        "--free",
+        default="fx,fy,f",
+        metavar="NAMES",
+        help="comma-separated parameters to fit (default fx,fy,f)",
+    )
+    parser.add_argument(
+        "--sigma",
+        default=None,
+        metavar="x=SX,y=SY,phi=SPHI",
+        help="noise level of channels [m, rad]; others are estimated from the residuals",
+    )
+    parser.add_argument(
+        "--loss",
+        default="linear",
+        choices=LOSSES,
+        help="least-squares loss; a robust one limits outliers (default linear)",
+    )
+    parser.add_argument(
+        "--frame",
+        default="case",
+        choices=("case", "plane", "body", "best"),
+        help="frame of the tensor: as in the case file (default), plane, body, "
+        "or best: fit both and keep the likelier",
+    )
+    parser.add_argument(
+        "--fixed-start",
+        action="store_true",
+        help="the case's [initial] state is the known start of every run",
+    )
     parser.add_argument("--json", action="store_true", help="print the results as JSON")
-    parser.add_argument("--plot", metavar="OUT.png", default=None,
-                        help="write a figure of measured vs fitted paths and angles, with "
-                        "residuals")
+    parser.add_argument(
+        "--plot",
+        metavar="OUT.png",
+        default=None,
+        help="write a figure of measured vs fitted paths and angles, with residuals",
+    )
 
 
 def parse_sigma(text: str | None) -> dict | None:
@@ -86,8 +112,10 @@ def parse_sigma(text: str | None) -> dict | None:
         key, sep, val = item.partition("=")
         key = key.strip()
         if not sep or key not in CHANNELS:
-            raise ValueError(f"--sigma item {item!r} is invalid; valid: x=VALUE, y=VALUE, "
-                             "phi=VALUE (metres, radians), comma-separated")
+            raise ValueError(
+                f"--sigma item {item!r} is invalid; valid: x=VALUE, y=VALUE, "
+                "phi=VALUE (metres, radians), comma-separated"
+            )
         if key in out:
             raise ValueError(f"--sigma gives {key!r} twice")
         try:
@@ -141,8 +169,7 @@ def run(args) -> int:
         raise ValueError(f"--fixed-start needs an [initial] table in the case file {args.case!r}")
     free = _free(args.free, case.body)
     runs, labels = read_runs(args.data, labels=True)
-    kw = {"starts": case.initial_state} if args.fixed_start else {
-        "start_guess": case.initial_state}
+    kw = {"starts": case.initial_state} if args.fixed_start else {"start_guess": case.initial_state}
     friction = case.friction
     if args.frame in ("plane", "body"):
         friction = dataclasses.replace(friction, frame=args.frame)
@@ -151,11 +178,13 @@ def run(args) -> int:
         warnings.simplefilter("always")
         try:
             if args.frame == "best":
-                res, scores, _ = compare_frames(runs, case.body, friction, free, sigma=sigma,
-                                                loss=args.loss, g=case.g, **kw)
+                res, scores, _ = compare_frames(
+                    runs, case.body, friction, free, sigma=sigma, loss=args.loss, g=case.g, **kw
+                )
             else:
-                res = fit(runs, case.body, friction, free, sigma=sigma, loss=args.loss,
-                          g=case.g, **kw)
+                res = fit(
+                    runs, case.body, friction, free, sigma=sigma, loss=args.loss, g=case.g, **kw
+                )
         except ValueError as exc:
             raise ValueError(f"{args.data}: {exc}") from None
     del caught  # the chosen fit's own warnings are in res.warnings (not the other frame's)
@@ -183,8 +212,10 @@ def run(args) -> int:
         print(f"case        : {case.name or args.case} (frame {res.friction.frame})")
         if scores is not None:
             other = "body" if res.friction.frame == "plane" else "plane"
-            print(f"frame       : {res.friction.frame} is likelier than {other}: -2 log L "
-                  f"lower by {scores[other] - scores[res.friction.frame]:.4g}")
+            print(
+                f"frame       : {res.friction.frame} is likelier than {other}: -2 log L "
+                f"lower by {scores[other] - scores[res.friction.frame]:.4g}"
+            )
         print(res.table(labels))
     if files:
         write_outputs(files)
@@ -221,12 +252,13 @@ def plot_fit(result, labels=None, title=None):
             ax_ra.plot(d["t"], r["phi"] * 1e3, ".", ms=3, color=col, label=name)
         for c, mk in (("x", "."), ("y", "x")):
             if c in d:
-                ax_rp.plot(d["t"], r[c] * 1e3, mk, ms=3, color=col,
-                           label=f"{name}: {c}")
+                ax_rp.plot(d["t"], r[c] * 1e3, mk, ms=3, color=col, label=f"{name}: {c}")
     ax_path.set(xlabel="x [m]", ylabel="y [m]", title="path of G: measured (dots), fitted")
     ax_path.set_aspect("equal", adjustable="datalim")
     ax_phi.set(xlabel="t [s]", ylabel="phi [rad]", title="body angle: measured, fitted")
-    ax_rp.set(xlabel="t [s]", ylabel="residual [mm]", title="position residuals (x dots, y crosses)")
+    ax_rp.set(
+        xlabel="t [s]", ylabel="residual [mm]", title="position residuals (x dots, y crosses)"
+    )
     ax_ra.set(xlabel="t [s]", ylabel="residual [mrad]", title="angle residuals")
     for ax in (ax_rp, ax_ra):
         ax.axhline(0.0, color="0.5", lw=0.8)
@@ -236,11 +268,21 @@ def plot_fit(result, labels=None, title=None):
             if ax in (ax_path, ax_phi) and ax.get_legend_handles_labels()[0]:
                 ax.legend(fontsize=8)
         else:
-            ax.text(0.5, 0.5, "not measured", ha="center", va="center",
-                    transform=ax.transAxes, color="0.5")
+            ax.text(
+                0.5,
+                0.5,
+                "not measured",
+                ha="center",
+                va="center",
+                transform=ax.transAxes,
+                color="0.5",
+            )
     est = ", ".join(
         f"{k} = {val:.4g} ± {result.std_errors[k]:.2g}" for k, val in result.estimates.items()
     )
-    fig.suptitle((f"{title}\n" if title else "") + (est or "start states only")
-                 + f"   (chi2/dof = {result.reduced_chi2:.3g})")
+    fig.suptitle(
+        (f"{title}\n" if title else "")
+        + (est or "start states only")
+        + f"   (chi2/dof = {result.reduced_chi2:.3g})"
+    )
     return fig
