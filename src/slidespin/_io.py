@@ -46,11 +46,14 @@ def read_regular_file(
         if stat.S_ISDIR(st.st_mode):
             raise ValueError(f"{what} {name!r} is a directory, not a {kind} file")
         if not stat.S_ISREG(st.st_mode):
-            raise ValueError(f"{what} {name!r} is not a regular file (a pipe, socket or "
-                             f"device); valid: a {kind} file")
+            raise ValueError(
+                f"{what} {name!r} is not a regular file (a pipe, socket or "
+                f"device); valid: a {kind} file"
+            )
         if st.st_size > max_bytes:
-            raise ValueError(f"{what} {name!r} is {st.st_size} bytes; valid: at most "
-                             f"{max_bytes} bytes")
+            raise ValueError(
+                f"{what} {name!r} is {st.st_size} bytes; valid: at most {max_bytes} bytes"
+            )
         with os.fdopen(fd, "rb") as fh:
             fd = None
             raw = fh.read(max_bytes + 1)
@@ -60,6 +63,7 @@ def read_regular_file(
         if fd is not None:
             os.close(fd)
     if len(raw) > max_bytes:  # grew while being read
-        raise ValueError(f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most "
-                         f"{max_bytes} bytes")
+        raise ValueError(
+            f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most {max_bytes} bytes"
+        )
     return raw

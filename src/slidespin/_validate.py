@@ -13,9 +13,25 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "positive", "finite", "in_range", "choice", "bounded", "symmetric", "real_array",
-    "LENGTH", "MASS", "INERTIA_RATIO", "ASPECT", "COEFFICIENT", "SKEW", "GRAVITY", "WRENCH_TOL",
-    "SPEED", "SPIN", "POSITION", "RATIO",
+    "positive",
+    "finite",
+    "in_range",
+    "choice",
+    "bounded",
+    "symmetric",
+    "real_array",
+    "LENGTH",
+    "MASS",
+    "INERTIA_RATIO",
+    "ASPECT",
+    "COEFFICIENT",
+    "SKEW",
+    "GRAVITY",
+    "WRENCH_TOL",
+    "SPEED",
+    "SPIN",
+    "POSITION",
+    "RATIO",
 ]
 
 # ------------------------------------------------------------------------------------------
@@ -40,7 +56,9 @@ RATIO = (1e-9, 1e9)  # β/a in terminal-ratio inputs
 
 def _as_float(name: str, value: object) -> float:
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise ValueError(f"{name} must be a real number, got {_short(value)} ({type(value).__name__})")
+        raise ValueError(
+            f"{name} must be a real number, got {_short(value)} ({type(value).__name__})"
+        )
     try:
         return float(value)
     except (OverflowError, ValueError, TypeError):
@@ -89,8 +107,9 @@ def symmetric(name: str, value: object, bound: float, unit: str = "") -> float:
     return bounded(name, value, -bound, bound, unit)
 
 
-def real_array(name: str, value: object, lo: float = -math.inf, hi: float = math.inf,
-               unit: str = "") -> NDArray[np.float64]:
+def real_array(
+    name: str, value: object, lo: float = -math.inf, hi: float = math.inf, unit: str = ""
+) -> NDArray[np.float64]:
     """``value`` as a float array (a scalar gives a 0-d array), every entry finite in [lo, hi].
 
     Bools, strings, complex numbers, objects and ragged sequences are refused with the
@@ -101,7 +120,9 @@ def real_array(name: str, value: object, lo: float = -math.inf, hi: float = math
     try:
         arr = np.asarray(value)
     except (ValueError, TypeError, OverflowError):
-        raise ValueError(f"{name} must be a real number or array of them, got {_short(value)}") from None
+        raise ValueError(
+            f"{name} must be a real number or array of them, got {_short(value)}"
+        ) from None
     if arr.dtype.kind == "O" and arr.ndim == 0:  # e.g. an int beyond int64 or a Fraction
         arr = np.asarray(_as_float(name, value))
     if arr.dtype.kind not in "fiu":
@@ -111,8 +132,11 @@ def real_array(name: str, value: object, lo: float = -math.inf, hi: float = math
     if bad.any():
         x = float(arr[bad].flat[0])
         u = f" {unit}" if unit else ""
-        rng = ("any finite real number" if lo == -math.inf and hi == math.inf
-               else _fmt_range(lo, hi, unit))
+        rng = (
+            "any finite real number"
+            if lo == -math.inf and hi == math.inf
+            else _fmt_range(lo, hi, unit)
+        )
         word = "is not finite" if not math.isfinite(x) else "is invalid"
         raise ValueError(f"{name} = {x!r}{u} {word}; valid range: {rng}")
     return arr

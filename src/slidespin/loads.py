@@ -169,12 +169,16 @@ class Load:
         cols = [v.real_array(name, c) for name, c in (("fx", fx), ("fy", fy))]
         cols.append(np.zeros_like(t) if torque is None else v.real_array("torque", torque))
         if t.ndim != 1 or t.size < 2 or not np.all(np.isfinite(t)) or np.any(np.diff(t) <= 0):
-            raise ValueError(f"times = {list(np.atleast_1d(t))!r} is invalid; valid values: "
-                             "at least 2 finite, strictly increasing times [s]")
+            raise ValueError(
+                f"times = {list(np.atleast_1d(t))!r} is invalid; valid values: "
+                "at least 2 finite, strictly increasing times [s]"
+            )
         for name, c in zip(("fx", "fy", "torque"), cols):
             if c.shape != t.shape or not np.all(np.isfinite(c)):
-                raise ValueError(f"{name} = {list(np.atleast_1d(c))!r} is invalid; valid "
-                                 f"values: {t.size} finite numbers, one per time")
+                raise ValueError(
+                    f"{name} = {list(np.atleast_1d(c))!r} is invalid; valid "
+                    f"values: {t.size} finite numbers, one per time"
+                )
         tt, a, b, m = (tuple(float(x) for x in arr) for arr in (t, *cols))
 
         def force(
@@ -185,9 +189,7 @@ class Load:
         ) -> tuple[float, float]:
             return (_interp(time, tt, a), _interp(time, tt, b))
 
-        def torque_fn(
-            time: float, tt: tuple[float, ...] = tt, m: tuple[float, ...] = m
-        ) -> float:
+        def torque_fn(time: float, tt: tuple[float, ...] = tt, m: tuple[float, ...] = m) -> float:
             return _interp(time, tt, m)
 
         return cls(force=force, torque=torque_fn if any(m) else 0.0, frame=frame, at=at)
@@ -237,7 +239,8 @@ class Load:
             raise ValueError(
                 f"force = ({qx:.6g}, {qy:.6g}) N at at = {self.at!r} m with torque = "
                 f"{self.torque_at(t):.6g} N m gives a moment that overflows; valid range: "
-                "|torque| + |at - G| |force| below 1.8e308 N m")
+                "|torque| + |at - G| |force| below 1.8e308 N m"
+            )
         return (qx, qy, moment)
 
 
@@ -334,8 +337,17 @@ def applied_wrench(
 
 
 #: keys of a ``[load]`` table in a case file (see :func:`load_from_table`)
-LOAD_KEYS = ("fx", "fy", "torque", "frame", "at", "times", "profile_fx", "profile_fy",
-             "profile_torque")
+LOAD_KEYS = (
+    "fx",
+    "fy",
+    "torque",
+    "frame",
+    "at",
+    "times",
+    "profile_fx",
+    "profile_fy",
+    "profile_torque",
+)
 #: keys of an ``[incline]`` table in a case file (see :func:`incline_from_table`)
 INCLINE_KEYS = ("angle", "angle_deg", "downhill", "downhill_deg")
 
@@ -366,23 +378,40 @@ def load_from_table(table: dict, where: str = "load") -> Load:
         raise ValueError(f"[{where}] must be a table, got {table!r}")
     unknown = sorted(set(table) - set(LOAD_KEYS))
     if unknown:
-        raise ValueError(f"unknown key {unknown[0]!r} in [{where}]; valid keys: "
-                         + ", ".join(sorted(LOAD_KEYS)))
+        raise ValueError(
+            f"unknown key {unknown[0]!r} in [{where}]; valid keys: " + ", ".join(sorted(LOAD_KEYS))
+        )
     frame = table.get("frame", "plane")
     at = table.get("at")
     profile = [k for k in ("times", "profile_fx", "profile_fy", "profile_torque") if k in table]
     if profile:
         constant = [k for k in ("fx", "fy", "torque") if k in table]
         if constant:
-            raise ValueError(f"[{where}] give either {constant[0]!r} (a constant load) or "
-                             "times/profile_* (a load varying in time), not both")
+            raise ValueError(
+                f"[{where}] give either {constant[0]!r} (a constant load) or "
+                "times/profile_* (a load varying in time), not both"
+            )
         for key in ("times", "profile_fx", "profile_fy"):
             if key not in table:
                 raise ValueError(f"[{where}] is missing the required key {key!r} of a profile")
-        return _table_value(where, Load.piecewise_linear, table["times"], table["profile_fx"],
-                            table["profile_fy"], table.get("profile_torque"), frame, at)
-    return _table_value(where, Load, (table.get("fx", 0.0), table.get("fy", 0.0)),
-                        table.get("torque", 0.0), frame, at)
+        return _table_value(
+            where,
+            Load.piecewise_linear,
+            table["times"],
+            table["profile_fx"],
+            table["profile_fy"],
+            table.get("profile_torque"),
+            frame,
+            at,
+        )
+    return _table_value(
+        where,
+        Load,
+        (table.get("fx", 0.0), table.get("fy", 0.0)),
+        table.get("torque", 0.0),
+        frame,
+        at,
+    )
 
 
 def incline_from_table(table: dict, where: str = "incline") -> Incline:
@@ -398,8 +427,9 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
         raise ValueError(f"[{where}] must be a table, got {table!r}")
     unknown = sorted(set(table) - set(INCLINE_KEYS))
     if unknown:
-        raise ValueError(f"unknown key {unknown[0]!r} in [{where}]; valid keys: "
-                         + ", ".join(INCLINE_KEYS))
+        raise ValueError(
+            f"unknown key {unknown[0]!r} in [{where}]; valid keys: " + ", ".join(INCLINE_KEYS)
+        )
 
     def angle(key, default=None):
         if key in table and f"{key}_deg" in table:

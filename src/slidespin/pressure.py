@@ -89,7 +89,9 @@ class _Law:
         from .geometry import Ellipse
 
         if not isinstance(patch, Ellipse):
-            raise ValueError(f"patch = {v._short(patch)} is invalid; valid values: an Ellipse or a Circle")
+            raise ValueError(
+                f"patch = {v._short(patch)} is invalid; valid values: an Ellipse or a Circle"
+            )
         xi = v.real_array("xi", xi)
         eta = v.real_array("eta", eta)
         load = v.bounded("load", load, 0.0, 1e300, "N")

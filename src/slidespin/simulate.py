@@ -53,10 +53,14 @@ MAX_STEPS_LIMIT = 1_000_000_000
 def check_solver_options(rtol: float, max_steps: int) -> tuple[float, int]:
     """Validate ``rtol`` in (0, 1e-3] and ``max_steps`` an integer in [1, 1e9]."""
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    if (isinstance(max_steps, bool) or not isinstance(max_steps, (int, np.integer))
-            or not 1 <= max_steps <= MAX_STEPS_LIMIT):
-        raise ValueError(f"max_steps = {max_steps!r} is invalid; valid range: integer in "
-                         f"[1, {MAX_STEPS_LIMIT}]")
+    if (
+        isinstance(max_steps, bool)
+        or not isinstance(max_steps, (int, np.integer))
+        or not 1 <= max_steps <= MAX_STEPS_LIMIT
+    ):
+        raise ValueError(
+            f"max_steps = {max_steps!r} is invalid; valid range: integer in [1, {MAX_STEPS_LIMIT}]"
+        )
     return rtol, int(max_steps)
 
 
@@ -240,8 +244,20 @@ class Trajectory:
         return text
 
     COLUMNS = (
-        "t", "x", "y", "phi", "vx", "vy", "omega", "speed", "theta", "beta",
-        "tangential", "normal", "moment_paper", "path_length",
+        "t",
+        "x",
+        "y",
+        "phi",
+        "vx",
+        "vy",
+        "omega",
+        "speed",
+        "theta",
+        "beta",
+        "tangential",
+        "normal",
+        "moment_paper",
+        "path_length",
     )
 
     def to_pandas(self) -> pd.DataFrame:
@@ -434,9 +450,18 @@ def simulate(
         # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11)
         from .loaded import simulate_loaded
 
-        return simulate_loaded(body, friction, initial_state, load=load, incline=incline,
-                               t_end=t_end, g=g, rtol=rtol, max_steps=max_steps,
-                               max_step=max_step)
+        return simulate_loaded(
+            body,
+            friction,
+            initial_state,
+            load=load,
+            incline=incline,
+            t_end=t_end,
+            g=g,
+            rtol=rtol,
+            max_steps=max_steps,
+            max_step=max_step,
+        )
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol, max_steps = check_solver_options(rtol, max_steps)
     h_max = math.inf if max_step is None else v.positive("max_step", max_step)
@@ -452,16 +477,45 @@ def simulate(
     if speed0 == 0.0:
         one = lambda x: np.array([float(x)])  # noqa: E731
         return Trajectory(
-            t=one(0.0), x=one(s0.x), y=one(s0.y), phi=one(s0.phi), vx=one(0.0), vy=one(0.0),
-            omega=one(0.0), speed=one(0.0), theta=one(0.0), beta=one(math.nan),
-            tangential=one(0.0), normal=one(0.0), moment_paper=one(0.0), path_length=one(0.0),
-            t_stop=0.0, stop_state=State(s0.x, s0.y, s0.phi), beta_stop=math.nan,
-            theta_stop=math.nan, ending="at_rest", status="at_rest", n_steps=0, n_rhs=0,
-            body=body, friction=friction, initial_state=initial_state, g=g,
+            t=one(0.0),
+            x=one(s0.x),
+            y=one(s0.y),
+            phi=one(s0.phi),
+            vx=one(0.0),
+            vy=one(0.0),
+            omega=one(0.0),
+            speed=one(0.0),
+            theta=one(0.0),
+            beta=one(math.nan),
+            tangential=one(0.0),
+            normal=one(0.0),
+            moment_paper=one(0.0),
+            path_length=one(0.0),
+            t_stop=0.0,
+            stop_state=State(s0.x, s0.y, s0.phi),
+            beta_stop=math.nan,
+            theta_stop=math.nan,
+            ending="at_rest",
+            status="at_rest",
+            n_steps=0,
+            n_rhs=0,
+            body=body,
+            friction=friction,
+            initial_state=initial_state,
+            g=g,
         )
     y0 = np.array(
-        [vxn / speed0, vyn / speed0, k * wn / speed0, math.log(speed0), 0.0,
-         s0.x / a, s0.y / a, s0.phi, 0.0]
+        [
+            vxn / speed0,
+            vyn / speed0,
+            k * wn / speed0,
+            math.log(speed0),
+            0.0,
+            s0.x / a,
+            s0.y / a,
+            s0.phi,
+            0.0,
+        ]
     )
     yend, status, nsteps, nrhs, fails, rate, rec, term = _ode.integrate_on(
         par, fe, fc, geo, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
@@ -475,14 +529,35 @@ def simulate(
     s = np.exp(rows[:, 3])  # 0 at the stop
     if body.is_footprint:
         fx, fy, mm = fp_wrench_array(
-            fe, fc, geo, par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-            par[_ode.P_BODY] != 0.0, rows[:, 7].copy(), u1.copy(), u2.copy(), u3 / k,
+            fe,
+            fc,
+            geo,
+            par[_ode.P_T00],
+            par[_ode.P_T01],
+            par[_ode.P_T10],
+            par[_ode.P_T11],
+            par[_ode.P_BODY] != 0.0,
+            rows[:, 7].copy(),
+            u1.copy(),
+            u2.copy(),
+            u3 / k,
         )
     else:
         fx, fy, mm, _ = wrench_array(
-            par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-            par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-            par[_ode.P_BODY] != 0.0, rows[:, 7].copy(), u1.copy(), u2.copy(), u3 / k, 1e-12,
+            par[_ode.P_BN],
+            int(par[_ode.P_LAW]),
+            par[_ode.P_XG],
+            par[_ode.P_YG],
+            par[_ode.P_T00],
+            par[_ode.P_T01],
+            par[_ode.P_T10],
+            par[_ode.P_T11],
+            par[_ode.P_BODY] != 0.0,
+            rows[:, 7].copy(),
+            u1.copy(),
+            u2.copy(),
+            u3 / k,
+            1e-12,
         )
     weight = body.mass * g  # the normal load m g [N]
     u12 = np.hypot(u1, u2)
@@ -490,7 +565,8 @@ def simulate(
     c, sn = np.cos(theta), np.sin(theta)
     beta = _beta(u12, u3, k) * a
     ending, beta_stop, theta_stop = _terminal_values(
-        status, math.hypot(yend[0], yend[1]), yend[2], term[0], term[3])
+        status, math.hypot(yend[0], yend[1]), yend[2], term[0], term[3]
+    )
     beta_stop *= a
     stop = State(yend[5] * a, yend[6] * a, yend[7])
     return Trajectory(
@@ -551,6 +627,8 @@ def _html_table(title: str, items: dict[str, Any]) -> str:
     def cell(x):
         return f"{x:.6g}" if isinstance(x, float) else escape(str(x))
 
-    rows = "".join(f"<tr><th style='text-align:left'>{escape(str(k))}</th><td>{cell(x)}</td></tr>"
-                   for k, x in items.items())
+    rows = "".join(
+        f"<tr><th style='text-align:left'>{escape(str(k))}</th><td>{cell(x)}</td></tr>"
+        for k, x in items.items()
+    )
     return f"<table><caption>{escape(title)}</caption>{rows}</table>"

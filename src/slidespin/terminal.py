@@ -111,9 +111,7 @@ def _check_bracket(bracket, a: float) -> tuple[float, float]:
     lo = v.bounded("bracket[0]", bracket[0], lo_r * a, hi_r * a, "m")
     hi = v.bounded("bracket[1]", bracket[1], lo_r * a, hi_r * a, "m")
     if not lo < hi:
-        raise ValueError(
-            f"bracket = ({lo!r}, {hi!r}) m is invalid; valid values: lo < hi"
-        )
+        raise ValueError(f"bracket = ({lo!r}, {hi!r}) m is invalid; valid values: lo < hi")
     return lo, hi
 
 
@@ -135,8 +133,16 @@ def _params(body, friction, tol=_WRENCH_TOL):
 def _fp_world(par, phi, vx, vy, omega):
     """(Fx, Fy, M) per unit load on a footprint (exact kernel), arrays or scalars."""
     fe, fc, geo = par.fp
-    args = (fe, fc, geo, par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-            par[_ode.P_BODY] != 0.0)
+    args = (
+        fe,
+        fc,
+        geo,
+        par[_ode.P_T00],
+        par[_ode.P_T01],
+        par[_ode.P_T10],
+        par[_ode.P_T11],
+        par[_ode.P_BODY] != 0.0,
+    )
     if np.ndim(vx) == 0:
         return fp_wrench_world(*args, float(phi), float(vx), float(vy), float(omega))
     return fp_wrench_array(*args, phi, vx, vy, omega)
@@ -147,9 +153,20 @@ def _wrench_nat(par, phi, vx, vy, omega):
     if getattr(par, "fp", None) is not None:
         return _fp_world(par, phi, vx, vy, omega)
     fx, fy, m, st = wrench_world(
-        par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-        par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0, phi, vx, vy, omega, _WRENCH_TOL,
+        par[_ode.P_BN],
+        int(par[_ode.P_LAW]),
+        par[_ode.P_XG],
+        par[_ode.P_YG],
+        par[_ode.P_T00],
+        par[_ode.P_T01],
+        par[_ode.P_T10],
+        par[_ode.P_T11],
+        par[_ode.P_BODY] != 0.0,
+        phi,
+        vx,
+        vy,
+        omega,
+        _WRENCH_TOL,
     )
     if st != STATUS_OK or not (math.isfinite(fx) and math.isfinite(fy) and math.isfinite(m)):
         raise RuntimeError(_missed(par))  # pragma: no cover - guard
@@ -173,9 +190,20 @@ def _acc_array(par, phi, u1, u2, u3):
         fx, fy, m = _fp_world(par, ph, u1, u2, u3 / k)
         return fx.reshape(shape), fy.reshape(shape), (m / k).reshape(shape)
     fx, fy, m, st = wrench_array(
-        par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-        par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0, ph, u1, u2, u3 / k, _WRENCH_TOL,
+        par[_ode.P_BN],
+        int(par[_ode.P_LAW]),
+        par[_ode.P_XG],
+        par[_ode.P_YG],
+        par[_ode.P_T00],
+        par[_ode.P_T01],
+        par[_ode.P_T10],
+        par[_ode.P_T11],
+        par[_ode.P_BODY] != 0.0,
+        ph,
+        u1,
+        u2,
+        u3 / k,
+        _WRENCH_TOL,
     )
     if (st != STATUS_OK).any() or not np.all(np.isfinite(fx + fy + m)):
         raise RuntimeError(_missed(par))  # pragma: no cover - guard
@@ -345,10 +373,15 @@ class TerminalState:
             return x if math.isfinite(x) else ("inf" if x > 0 else "-inf")
 
         return {
-            "beta": num(self.beta), "beta_ratio": num(self.beta_ratio), "theta": num(self.theta),
-            "ending": self.ending, "stable": bool(self.stable),
+            "beta": num(self.beta),
+            "beta_ratio": num(self.beta_ratio),
+            "theta": num(self.theta),
+            "ending": self.ending,
+            "stable": bool(self.stable),
             "eigenvalues": [[num(z.real), num(z.imag)] for z in self.eigenvalues],
-            "u": [num(x) for x in self.u], "phi": num(self.phi), "continuum": self.continuum,
+            "u": [num(x) for x in self.u],
+            "phi": num(self.phi),
+            "continuum": self.continuum,
         }
 
 
@@ -424,10 +457,15 @@ def _make_state(par, phi, u, a_len, *, continuum=False, jac=None, e1=None, e2=No
     else:
         beta_m = beta
     return TerminalState(
-        beta=float(beta_m), beta_ratio=float(beta), theta=float(theta if math.isnan(theta)
-                                                                  else _wrap(theta)),
-        ending=ending, stable=stable, eigenvalues=tuple(complex(z) for z in lam),
-        u=tuple(float(x) for x in u), phi=float(phi), continuum=continuum,
+        beta=float(beta_m),
+        beta_ratio=float(beta),
+        theta=float(theta if math.isnan(theta) else _wrap(theta)),
+        ending=ending,
+        stable=stable,
+        eigenvalues=tuple(complex(z) for z in lam),
+        u=tuple(float(x) for x in u),
+        phi=float(phi),
+        continuum=continuum,
     )
 
 
@@ -566,9 +604,7 @@ def _mixed_points(par, phi, a_len, symmetric, n_theta=72, n_chi=28):
     return found
 
 
-def terminal_states(
-    body: Body, friction: FrictionTensor, phi: float
-) -> tuple[TerminalState, ...]:
+def terminal_states(body: Body, friction: FrictionTensor, phi: float) -> tuple[TerminalState, ...]:
     """All terminal motions of ``body`` at the body angle ``phi`` (MODEL §5–6).
 
     The terminal motions are the fixed points of the flow of the direction of motion on the
@@ -626,12 +662,15 @@ def terminal_states(
     for u in _mixed_points(par, phi, a_len, symmetric):
         st = _make_state(par, phi, u, a_len, continuum=symmetric)
         states.append(st)
-        anti = TerminalState(**{
-            **_as_kwargs(st),
-            "beta": -st.beta, "beta_ratio": -st.beta_ratio,
-            "theta": st.theta if math.isnan(st.theta) else _wrap(st.theta + math.pi),
-            "u": tuple(-x for x in st.u),
-        })
+        anti = TerminalState(
+            **{
+                **_as_kwargs(st),
+                "beta": -st.beta,
+                "beta_ratio": -st.beta_ratio,
+                "theta": st.theta if math.isnan(st.theta) else _wrap(st.theta + math.pi),
+                "u": tuple(-x for x in st.u),
+            }
+        )
         states.append(anti)
 
     def key(s):
@@ -734,9 +773,20 @@ def _j_values(par, beta):
         fx, fy, m = _fp_world(par, np.zeros(n), beta, np.zeros(n), np.ones(n))
         return beta * (-m) / (-fx)
     fx, fy, m, st = wrench_array(
-        par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-        par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0, np.zeros(n), beta, np.zeros(n), np.ones(n), _WRENCH_TOL,
+        par[_ode.P_BN],
+        int(par[_ode.P_LAW]),
+        par[_ode.P_XG],
+        par[_ode.P_YG],
+        par[_ode.P_T00],
+        par[_ode.P_T01],
+        par[_ode.P_T10],
+        par[_ode.P_T11],
+        par[_ode.P_BODY] != 0.0,
+        np.zeros(n),
+        beta,
+        np.zeros(n),
+        np.ones(n),
+        _WRENCH_TOL,
     )
     if (st != STATUS_OK).any() or not np.all(np.isfinite(fx + fy + m)):
         raise RuntimeError(_missed(par))  # pragma: no cover - guard
@@ -825,9 +875,7 @@ def inertia_intervals(
     big = _j_values(par, np.array([100.0, 200.0, 400.0]))
     small = _j_values(par, np.array([1e-2, 5e-3, 2.5e-3]))
     i2 = float(_j_values(par, np.array([1.0]))[0])
-    return InertiaIntervals(
-        float(_richardson(big, 2.0)), i2, float(_richardson(small, 2.0))
-    )
+    return InertiaIntervals(float(_richardson(big, 2.0)), i2, float(_richardson(small, 2.0)))
 
 
 def paper_inertia_intervals(pressure: PressureLaw, friction: FrictionTensor) -> InertiaIntervals:
@@ -948,8 +996,9 @@ def _dense_curve(par, y0, s_end, points):
         return y[3] - math.log(s_end)
 
     reached.terminal = True
-    sol = solve_ivp(f, (0.0, 1e4), y0, method="DOP853", rtol=1e-9, atol=1e-12,
-                    dense_output=True, events=reached)
+    sol = solve_ivp(
+        f, (0.0, 1e4), y0, method="DOP853", rtol=1e-9, atol=1e-12, dense_output=True, events=reached
+    )
     tau = np.linspace(0.0, sol.t[-1], points)
     y = sol.sol(tau)
     u = y[:3] / np.linalg.norm(y[:3], axis=0)
@@ -999,8 +1048,11 @@ def phase_portrait(
     _check_body_friction(body, friction)
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 200:
         raise ValueError(f"n = {n!r} is invalid; valid range: integer in [1, 200]")
-    if (isinstance(points, bool) or not isinstance(points, (int, np.integer))
-            or not 10 <= points <= 100_000):
+    if (
+        isinstance(points, bool)
+        or not isinstance(points, (int, np.integer))
+        or not 10 <= points <= 100_000
+    ):
         raise ValueError(f"points = {points!r} is invalid; valid range: integer in [10, 100000]")
     s0 = v.bounded("speed", speed, 1e-12, v.SPEED, "m/s")
     phi = v.finite("phi", phi)
@@ -1025,7 +1077,13 @@ def phase_portrait(
         spins.append(np.append(s * u[2] / kn * v_unit, 0.0))  # a ω = (s u₃/k) · a
         speeds.append(np.append(s * np.hypot(u[0], u[1]) * v_unit, 0.0))
     return PhasePortrait(
-        body=body, friction=friction, spin=tuple(spins), speed=tuple(speeds),
-        beta_stop=np.array(betas), endings=tuple(endings),
-        terminal=terminal_states(body, friction, phi), phi=phi, theta=theta,
+        body=body,
+        friction=friction,
+        spin=tuple(spins),
+        speed=tuple(speeds),
+        beta_stop=np.array(betas),
+        endings=tuple(endings),
+        terminal=terminal_states(body, friction, phi),
+        phi=phi,
+        theta=theta,
     )

@@ -79,7 +79,9 @@ class Wrench:
         return cls(*out)
 
     def power(
-        self, vx: float | NDArray[np.float64], vy: float | NDArray[np.float64],
+        self,
+        vx: float | NDArray[np.float64],
+        vy: float | NDArray[np.float64],
         omega: float | NDArray[np.float64],
     ) -> float | NDArray[np.float64]:
         """Friction power F·v + M ω [W] for the state the wrench was computed at (≤ 0)."""
@@ -123,7 +125,9 @@ def motion_arrays(
 ]:
     """Validate and broadcast the motion state (arrays accepted): returns flat float arrays
     (vx, vy, ω, φ), the broadcast shape and whether every input was a scalar."""
-    arrays = [_check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))]
+    arrays = [
+        _check_array(n, x) for n, x in (("vx", vx), ("vy", vy), ("omega", omega), ("phi", phi))
+    ]
     scalar = all(a.ndim == 0 for a in arrays)
     try:
         b = np.broadcast_arrays(*arrays)
@@ -201,8 +205,9 @@ def friction_wrench(
     if body.is_footprint:  # the exact footprint kernel (MODEL §10); ``tol`` is not needed
         from .footprint_wrench import footprint_wrench
 
-        return footprint_wrench(body.patch, body.pressure, friction, vx, vy, omega, phi,
-                                load=body.mass * g)
+        return footprint_wrench(
+            body.patch, body.pressure, friction, vx, vy, omega, phi, load=body.mass * g
+        )
     vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
     a = body.length_unit  # the semi-axis a of the ellipse
     par = body.kernel_params(friction, tol)
@@ -210,9 +215,20 @@ def friction_wrench(
 
     ux, uy, uw = (np.ascontiguousarray(x) for x in _direction(vxa, vya, oma, a))
     fx, fy, mm, st = wrench_array(
-        par[_ode.P_BN], int(par[_ode.P_LAW]), par[_ode.P_XG], par[_ode.P_YG],
-        par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0, pha, ux, uy, uw, tol,
+        par[_ode.P_BN],
+        int(par[_ode.P_LAW]),
+        par[_ode.P_XG],
+        par[_ode.P_YG],
+        par[_ode.P_T00],
+        par[_ode.P_T01],
+        par[_ode.P_T10],
+        par[_ode.P_T11],
+        par[_ode.P_BODY] != 0.0,
+        pha,
+        ux,
+        uy,
+        uw,
+        tol,
     )
     bad = (st != STATUS_OK) | ~np.isfinite(fx) | ~np.isfinite(fy) | ~np.isfinite(mm)
     if bad.any():  # pragma: no cover - not reached for valid inputs (docs/errors.md)
