@@ -403,7 +403,7 @@ def simulate_bodies(
     length = np.array([b.length_unit for b in bodies])
     states = {name: st[:, i] for i, name in enumerate(("x", "y", "phi", "vx", "vy", "omega"))}
 
-    def footprints_of(lo, hi):
+    def footprints_of(lo: int, hi: int) -> tuple[np.ndarray, ...]:
         """The footprints of cases lo..hi stacked, with each case's row ranges."""
         es, cs = [], []
         eidx = np.zeros((hi - lo, 2), dtype=np.int64)
