@@ -220,8 +220,12 @@ def footprint_patch(shape: str, geo: dict, vertices=None, pad_shape: str = "disk
         return Polygon([(s * float(x), s * float(y)) for x, y in vertices])
     k = int(geo["n_pads"])
     rho = geo["pad_spacing"] / (2.0 * math.sin(math.pi / k))
-    centres = [(rho * math.cos(math.pi / 2 + 2 * math.pi * i / k),
-                rho * math.sin(math.pi / 2 + 2 * math.pi * i / k)) for i in range(k)]
+    # on the axes exactly (cos(pi/2) is 6e-17, not 0: a layout symmetric about an axis
+    # stays symmetric to the last bit)
+    centres = [tuple(0.0 if abs(c) < 1e-12 * rho else c
+                     for c in (rho * math.cos(math.pi / 2 + 2 * math.pi * i / k),
+                               rho * math.sin(math.pi / 2 + 2 * math.pi * i / k)))
+               for i in range(k)]
     if pad_shape == "rectangle":
         return Pads([Rectangle(geo["pad_length"], geo["pad_width"], centre=c) for c in centres])
     return Pads([Disk(geo["pad_radius"], centre=c) for c in centres])

@@ -389,7 +389,12 @@ def load_spec(spec) -> SweepSpec:
     if isinstance(spec, SweepSpec):
         return spec
     if isinstance(spec, dict):
-        return _validate_spec(spec)
+        try:
+            return _validate_spec(spec)
+        except SweepError:
+            raise
+        except ValueError as exc:
+            raise SweepError(str(exc)) from None
     from .case import read_toml
 
     try:
@@ -541,7 +546,8 @@ def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
                     body = Body(patch, pl, float(mass[i]),
                                 None if inertia is None else float(inertia[i]))
             except ValueError as exc:
-                what = ", ".join(f"{k} = {x!r}" for k, x in row.items())
+                what = ", ".join([f"{k} = {x!r}" for k, x in row.items()]
+                                 + [f"law = {str(law[i])!r}"])
                 raise SweepError(f"case {int(cols['case_id'][i])} ({shape}: {what}): {exc}"
                                  ) from None
             body_cache[key] = body
