@@ -65,12 +65,16 @@ def _arrays(trajectory) -> dict:
         ) from None
     n = cols["t"].size
     if n < 1 or any(c.ndim != 1 or c.size != n for c in cols.values()):
-        raise ValueError("trajectory is invalid: its arrays t, x, y, phi, vx, vy, omega must be "
-                         "one-dimensional, non-empty and of one length")
+        raise ValueError(
+            "trajectory is invalid: its arrays t, x, y, phi, vx, vy, omega must be "
+            "one-dimensional, non-empty and of one length"
+        )
     if not all(np.all(np.isfinite(c)) for c in cols.values()):
-        raise ValueError("trajectory is invalid: it holds non-finite values (status "
-                         f"{getattr(trajectory, 'status', '?')!r}); only finite motions can be "
-                         "drawn")
+        raise ValueError(
+            "trajectory is invalid: it holds non-finite values (status "
+            f"{getattr(trajectory, 'status', '?')!r}); only finite motions can be "
+            "drawn"
+        )
     if np.any(np.diff(cols["t"]) < 0):
         raise ValueError("trajectory is invalid: its times t decrease")
     cols["body"] = body
@@ -209,8 +213,10 @@ def animate(
     from .cli import check_output_path
 
     if not isinstance(path, (str, os.PathLike)):
-        raise ValueError(f"path = {path!r} ({type(path).__name__}) is invalid; valid values: "
-                         "a str or os.PathLike file path ending in .gif")
+        raise ValueError(
+            f"path = {path!r} ({type(path).__name__}) is invalid; valid values: "
+            "a str or os.PathLike file path ending in .gif"
+        )
     path = os.fspath(path)
     if not isinstance(path, str) or not path.lower().endswith(".gif"):
         raise ValueError(f"path = {path!r} is invalid; valid values: a file path ending in .gif")
@@ -254,8 +260,19 @@ def animate(
     radius_line = ax.plot([], [], color="C0", lw=1.0, zorder=3)[0]
     g_dot = ax.plot([], [], "o", color="C0", ms=3, zorder=4)[0]
     icr = ax.plot([], [], "x", color="C3", ms=7, mew=1.8, zorder=4, label="ICR")[0]
-    arrow = ax.quiver([st.x[0]], [st.y[0]], [0.0], [0.0], angles="xy", scale_units="xy",
-                      scale=1.0, color="C1", width=0.006, zorder=5, label="velocity of G")
+    arrow = ax.quiver(
+        [st.x[0]],
+        [st.y[0]],
+        [0.0],
+        [0.0],
+        angles="xy",
+        scale_units="xy",
+        scale=1.0,
+        color="C1",
+        width=0.006,
+        zorder=5,
+        label="velocity of G",
+    )
     text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=8)
     ax.legend(loc="lower right", fontsize=7, frameon=False)
     fig.tight_layout()

@@ -35,21 +35,30 @@ class FigureRuns:
     def summary(self) -> list:
         rows = []
         for phi0, lab, tr in zip(sh.PHI0, sh.PHI_LABELS, self.runs):
-            rows.append({
-                "phi0": phi0, "phi0_label": lab,
-                "t_stop": tr.t_stop / sh.TIME_UNIT,  # paper units
-                "beta_stop": sh.num(tr.beta_stop / sh.A),
-                "theta_stop": sh.num(tr.theta_stop),
-                "phi_stop": tr.stop_state.phi,
-                "ending": tr.ending, "status": tr.status,
-                "normal_stop": tr.normal[-1] / (sh.MASS * sh.G),
-            })
+            rows.append(
+                {
+                    "phi0": phi0,
+                    "phi0_label": lab,
+                    "t_stop": tr.t_stop / sh.TIME_UNIT,  # paper units
+                    "beta_stop": sh.num(tr.beta_stop / sh.A),
+                    "theta_stop": sh.num(tr.theta_stop),
+                    "phi_stop": tr.stop_state.phi,
+                    "ending": tr.ending,
+                    "status": tr.status,
+                    "normal_stop": tr.normal[-1] / (sh.MASS * sh.G),
+                }
+            )
         return rows
 
     def as_dict(self) -> dict:
-        return {"figure": self.name, "law": self.law, "fx": self.fx, "mu": self.mu,
-                "units": "paper units (eq. 7): t in sqrt(a pi/g), beta in a",
-                "runs": self.summary()}
+        return {
+            "figure": self.name,
+            "law": self.law,
+            "fx": self.fx,
+            "mu": self.mu,
+            "units": "paper units (eq. 7): t in sqrt(a pi/g), beta in a",
+            "runs": self.summary(),
+        }
 
     def to_text(self) -> str:
         lines = [
@@ -104,7 +113,7 @@ def _path_panels(fig, gs, row, res):
 
     axes = []
     for i, (lab, tr) in enumerate(zip(sh.PHI_LABELS, res.runs)):
-        ax = fig.add_subplot(gs[row, 2 * i: 2 * i + 2])
+        ax = fig.add_subplot(gs[row, 2 * i : 2 * i + 2])
         draw_path(ax, tr, n_outlines=6, color=sh.PHI_COLORS[i], label=None)
         if i == 0:
             ax.legend(loc="lower right", fontsize=7, handlelength=1.0)
@@ -126,11 +135,11 @@ def plot_beta_theta(res: FigureRuns, title: str):
         for i, (lab, tr) in enumerate(zip(sh.PHI_LABELS, res.runs)):
             c = sh.PHI_COLORS[i]
             t = _time(tr)
-            ax_b.plot(t, tr.beta / sh.A, color=c,
-                      label=f"φ₀ = {lab}: β* = {tr.beta_stop / sh.A:.3f} a")
+            ax_b.plot(
+                t, tr.beta / sh.A, color=c, label=f"φ₀ = {lab}: β* = {tr.beta_stop / sh.A:.3f} a"
+            )
             ax_b.axhline(tr.beta_stop / sh.A, color=c, ls="--", lw=0.8)
-            ax_t.plot(t, tr.theta, color=c,
-                      label=f"φ₀ = {lab}: ϑ* = {tr.theta_stop:+.3f} rad")
+            ax_t.plot(t, tr.theta, color=c, label=f"φ₀ = {lab}: ϑ* = {tr.theta_stop:+.3f} rad")
             ax_t.plot([t[-1]], [tr.theta_stop], "o", color=c, ms=4)
         ax_t.axhline(0.0, color="0.5", lw=0.8, zorder=0)
         ax_b.set_xlabel("t / √(aπ/g)")

@@ -59,19 +59,38 @@ def configure(parser) -> None:
         "'all' writes everything into one folder with an index.html."
     )
     parser.epilog = "targets: " + "; ".join(f"{k}: {h}" for k, h in _HELP.items())
-    parser.add_argument("target", choices=TARGETS, metavar="TARGET",
-                        help="one of " + ", ".join(TARGETS))
-    parser.add_argument("--out", metavar="DIR", default=None,
-                        help="output directory (created if missing); figures and 'all' "
-                        "default to ./slidespin-out, tables only print without it")
+    parser.add_argument(
+        "target", choices=TARGETS, metavar="TARGET", help="one of " + ", ".join(TARGETS)
+    )
+    parser.add_argument(
+        "--out",
+        metavar="DIR",
+        default=None,
+        help="output directory (created if missing); figures and 'all' "
+        "default to ./slidespin-out, tables only print without it",
+    )
     parser.add_argument("--json", action="store_true", help="print the results as JSON")
-    parser.add_argument("--fx", type=float, default=None, metavar="FX",
-                        help="friction coefficient along OX (> 0); default: inferred from "
-                        "Table 1 (table2: 0.3)")
-    parser.add_argument("--mu", type=float, default=None, metavar="MU",
-                        help="anisotropy mu = fy - fx; default 0.12 (figures), 0.15 (table2)")
-    parser.add_argument("--format", default=None, choices=sh.FORMATS, dest="format",
-                        help="figure file format (default png)")
+    parser.add_argument(
+        "--fx",
+        type=float,
+        default=None,
+        metavar="FX",
+        help="friction coefficient along OX (> 0); default: inferred from Table 1 (table2: 0.3)",
+    )
+    parser.add_argument(
+        "--mu",
+        type=float,
+        default=None,
+        metavar="MU",
+        help="anisotropy mu = fy - fx; default 0.12 (figures), 0.15 (table2)",
+    )
+    parser.add_argument(
+        "--format",
+        default=None,
+        choices=sh.FORMATS,
+        dest="format",
+        help="figure file format (default png)",
+    )
 
 
 def _check(args) -> dict:

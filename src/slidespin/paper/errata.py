@@ -51,13 +51,23 @@ class ErrataResult:
     errata: tuple
 
     def as_dict(self) -> dict:
-        return {"errata": [
-            {"number": e.number, "where": e.where, "printed": e.printed,
-             "corrected": e.corrected, "measure": e.measure, "printed_value": e.printed_value,
-             "corrected_value": e.corrected_value, "effect": e.effect, "check": e.check,
-             "values": {k: _json_value(x) for k, x in e.values.items()}}
-            for e in self.errata
-        ]}
+        return {
+            "errata": [
+                {
+                    "number": e.number,
+                    "where": e.where,
+                    "printed": e.printed,
+                    "corrected": e.corrected,
+                    "measure": e.measure,
+                    "printed_value": e.printed_value,
+                    "corrected_value": e.corrected_value,
+                    "effect": e.effect,
+                    "check": e.check,
+                    "values": {k: _json_value(x) for k, x in e.values.items()},
+                }
+                for e in self.errata
+            ]
+        }
 
     def to_text(self) -> str:
         lines = ["Errata of the printed paper (docs/model.md section 7), shown numerically", ""]
@@ -90,8 +100,9 @@ def _json_value(x):
 # ------------------------------------------------------------------------------------------
 # brute-force quadrature of eq. 3 / coefficients (6), literally
 # ------------------------------------------------------------------------------------------
-def direct_wrench(kappa, fx, fy, v, omega, theta, phi, *, y_prime="corrected",
-                  omega_form=False, n_r=160, n_t=320):
+def direct_wrench(
+    kappa, fx, fy, v, omega, theta, phi, *, y_prime="corrected", omega_form=False, n_r=160, n_t=320
+):
     """F_τ/P, F_n/P, M_Cζ/(P a) of the uniform ellipse by 2-D Gauss quadrature (a = 1).
 
     Parameters
@@ -161,42 +172,60 @@ def _e1(kappa):
     rel = max(abs(p - q) / abs(q) for p, q in zip(pr, co))
     chk = max(abs(p - q) for p, q in zip(co, ref_t))
     return Erratum(
-        1, "eq. 3: body-to-plane coordinates and moment",
+        1,
+        "eq. 3: body-to-plane coordinates and moment",
         "y' = xi sin(phi) + eta)  [garbled; mom = (tau_y x' - tau_x y')]",
         "y' = xi sin(phi) + eta cos(phi),  mom_Czeta = x' tau_y - y' tau_x",
         "(F_tau/P, F_n/P, M/(P a)) of the uniform ellipse at beta = 2a, theta = pi/4, "
         "phi = pi/3, fx = 0.42, fy = 0.54 (2-D quadrature of eq. 3)",
-        _fmt3(pr), _fmt3(co),
+        _fmt3(pr),
+        _fmt3(co),
         f"up to {err:.4f} ({100 * rel:.1f} % relative, in F_n): the printed (x', y') is not "
         "a rotation of (xi, eta), so the patch is sheared; the error vanishes only at "
         "phi = 0",
         f"corrected form vs friction_wrench: {chk:.1e}",
-        {"printed": list(pr), "corrected": list(co), "reference": list(ref_t),
-         "max_error": err, "max_relative_error": rel, "check": chk},
+        {
+            "printed": list(pr),
+            "corrected": list(co),
+            "reference": list(ref_t),
+            "max_error": err,
+            "max_relative_error": rel,
+            "check": chk,
+        },
     )
 
 
 def _e2(fx):
     model = sa.PaperModel.from_eccentricity(sh.ECCENTRICITY, fx=fx, fy=fx + 0.12)
     run = sa.integrate(model, phi0=math.pi / 2, theta0=sh.THETA0)
-    tr = simulate(sh.uniform_body(), FrictionTensor(fx, fx + 0.12),
-                  State.from_speed(sh.SPEED_UNIT, sh.SPIN_UNIT, sh.THETA0, math.pi / 2), g=sh.G)
+    tr = simulate(
+        sh.uniform_body(),
+        FrictionTensor(fx, fx + 0.12),
+        State.from_speed(sh.SPEED_UNIT, sh.SPIN_UNIT, sh.THETA0, math.pi / 2),
+        g=sh.G,
+    )
     t_corr = run.t_stop * math.sqrt(sh.A * math.pi / sh.G)
     t_print = run.t_stop * math.sqrt(sh.G / math.pi)
     return Erratum(
-        2, "eq. 7: time scale of the dimensionless variables",
+        2,
+        "eq. 7: time scale of the dimensionless variables",
         "t = t1 sqrt(g/pi)",
         "t = t1 sqrt(a pi/g)  (the only scale consistent with v = v1 sqrt(a g/pi), "
         "omega = omega1 sqrt(g/(a pi)))",
         f"stop time of Figure 2's run phi0 = pi/2 (mu = 0.12): t1 = {run.t_stop:.6f} from "
         "eq. 8 (semi-analytic, solve_ivp), converted to seconds for a = 1 m, g = 9.81 m/s^2",
-        f"{t_print:.6f} s", f"{t_corr:.6f} s",
+        f"{t_print:.6f} s",
+        f"{t_corr:.6f} s",
         f"the printed scale is not a time (units sqrt(m)/s); for a = 1 m it is off by a "
         f"factor g/(pi sqrt(a)) = {t_print / t_corr:.4f}",
         f"slidespin.simulate (SI units, regularised time): t_stop = {tr.t_stop:.6f} s "
         f"(relative difference {_rel(t_corr, tr.t_stop):.1e})",
-        {"t1_stop": run.t_stop, "printed_s": t_print, "corrected_s": t_corr,
-         "simulate_s": tr.t_stop},
+        {
+            "t1_stop": run.t_stop,
+            "printed_s": t_print,
+            "corrected_s": t_corr,
+            "simulate_s": tr.t_stop,
+        },
     )
 
 
@@ -232,21 +261,28 @@ def _e3(kappa):
     col_c = [_eq16_root(iso, ph) for ph in sh.PHI0]
     paper_col = [float(x) for x in PRINTED[:, 0]]
     return Erratum(
-        3, "eq. 9: the integral I1",
+        3,
+        "eq. 9: the integral I1",
         "I1 = (1/kappa) ln[(2 sqrt(Q+) + 2 kappa^2 h + D1 kappa)/(2 sqrt(Q-) - 2 kappa^2 h "
         "+ D1 kappa)]",
         "I1 = (1/kappa) ln[(2 sqrt(Q+) + 2 kappa h + D1)/(2 sqrt(Q-) - 2 kappa h + D1)], "
         "Q+- = D0 +- D1 kappa h + kappa^2 h^2",
         "Table 1's mu = 0 column (root of eq. 16, theta = 0) by the semi-analytic route, "
         "phi = pi/4, pi/3, pi/2; printed Table 1: " + _fmt_list(paper_col),
-        _fmt_list(col_p), _fmt_list(col_c),
+        _fmt_list(col_p),
+        _fmt_list(col_c),
         f"O(1): the printed I1 changes the friction force and moment by up to {err_p:.2f} "
         "(units of P, P a) over 18 states, and eq. 16 has no root at all (beta M > I* F_tau "
         "for every beta); the paper's own Table 1 agrees with the corrected form, so the "
         "error is in print only",
         f"corrected semi-analytic wrench vs friction_wrench over the same 18 states: {err_c:.1e}",
-        {"column_printed_I1": col_p, "column_corrected_I1": col_c, "column_paper": paper_col,
-         "wrench_error_printed": err_p, "wrench_error_corrected": err_c},
+        {
+            "column_printed_I1": col_p,
+            "column_corrected_I1": col_c,
+            "column_paper": paper_col,
+            "wrench_error_printed": err_p,
+            "wrench_error_corrected": err_c,
+        },
     )
 
 
@@ -264,12 +300,14 @@ def _e4(kappa):
     r = (ref.tangential, ref.normal, ref.moment_paper)
     chk = max(abs(x - y) for x, y in zip(tru, r))
     return Erratum(
-        4, "coefficients (6) of eq. 4",
+        4,
+        "coefficients (6) of eq. 4",
         "A_i, B_i, C_i, D_i as printed (several parentheses lost), written with beta = v/omega",
         "the same coefficients with the parentheses restored; valid for omega > 0 only "
         "(for omega < 0 the integrals change sign, or use the symmetry (v, omega) -> (-v, -omega))",
         "(F_tau/P, F_n/P, M/(P a)) at v = 2 a omega_0, omega = -omega_0, theta = 0.3, phi = 0.5",
-        _fmt3(lit) + "  [(6) with beta = v/omega < 0]", _fmt3(tru),
+        _fmt3(lit) + "  [(6) with beta = v/omega < 0]",
+        _fmt3(tru),
         "for omega < 0 the literal (6) reverses the whole wrench (friction would accelerate "
         "the body); for omega > 0 the restored coefficients are exact",
         f"true wrench vs friction_wrench: {chk:.1e}; the semi-analytic route with the "
@@ -297,36 +335,45 @@ def _e5():
 
     c_p, c_c = centroid(p1_printed), centroid(p1_correct)
     return Erratum(
-        5, "eq. 10: slopes of the linear pressure law",
+        5,
+        "eq. 10: slopes of the linear pressure law",
         "p1 = P xi_c/I_etaeta, p2 = P eta_c/I_xixi with I_etaeta = m a^2/4, "
         "I_xixi = m a^2 (1-e^2)/4",
         "p1 = 4 p0 xi_c/a^2, p2 = 4 p0 eta_c/b^2 (area moments pi a^3 b/4, pi a b^3/4)",
         "pressure centroid of p0 + p1 xi for a plate a = 0.1 m, b = 0.05 m, m = 1 kg, "
         "intended xi_c = 0.01 m (quadrature)",
-        f"{c_p:.3e} m", f"{c_c:.3e} m",
+        f"{c_p:.3e} m",
+        f"{c_c:.3e} m",
         f"the printed slopes are off by the factor pi a b/m = {p1_printed / p1_correct:.4f} "
         "m^2/kg (not even dimensionless): right only for an areal density of 1 kg/m^2",
-        "", {"centroid_printed": c_p, "centroid_corrected": c_c,
-             "ratio": p1_printed / p1_correct},
+        "",
+        {"centroid_printed": c_p, "centroid_corrected": c_c, "ratio": p1_printed / p1_correct},
     )
 
 
 def _linear_models(fx, reference):
-    base = sa.PaperModel.from_eccentricity(sh.ECCENTRICITY, fx=fx, fy=fx + 0.12,
-                                           xi_c=sh.LINEAR_CENTROID[0],
-                                           eta_c=sh.LINEAR_CENTROID[1], reference=reference)
+    base = sa.PaperModel.from_eccentricity(
+        sh.ECCENTRICITY,
+        fx=fx,
+        fy=fx + 0.12,
+        xi_c=sh.LINEAR_CENTROID[0],
+        eta_c=sh.LINEAR_CENTROID[1],
+        reference=reference,
+    )
     return base, base.with_(c31="printed")
 
 
 def _e6(fx):
     model, wrong = _linear_models(fx, "centre")  # the paper's own setting (symmetric limits)
     states = [(b, th, ph) for b in (0.3, 0.6, 2.0) for th in (0.0, 0.7) for ph in sh.PHI0]
-    dm = max(abs(sa.wrench(wrong, *s).moment_paper - sa.wrench(model, *s).moment_paper)
-             for s in states)
+    dm = max(
+        abs(sa.wrench(wrong, *s).moment_paper - sa.wrench(model, *s).moment_paper) for s in states
+    )
     r_ok = sa.integrate(model, phi0=math.pi / 2)
     r_bad = sa.integrate(wrong, phi0=math.pi / 2)
     return Erratum(
-        6, "eq. 13: eta^3 terms of the moment (linear law)",
+        6,
+        "eq. 13: eta^3 terms of the moment (linear law)",
         "... - C31 D1 (3 D0/4 + 5 D1^2/16) ] I1 and (C11 - C21 3D1/4 + C31 (5D1^2/8 - 2D0/3)) "
         "(1/kappa) I2",
         "... + C31 D1 (3 D0/4 - 5 D1^2/16) ] I1 and the (1/kappa) I2 bracket gains "
@@ -339,8 +386,13 @@ def _e6(fx):
         "destroyed almost at once and the run ends nearly in pure sliding",
         "corrected eq. 13 vs friction_wrench (moment transferred to C): 1e-15 "
         "(tests/test_semianalytic.py)",
-        {"moment_error": dm, "t1_printed": r_bad.t_stop, "t1_corrected": r_ok.t_stop,
-         "beta_printed": r_bad.beta_stop, "beta_corrected": r_ok.beta_stop},
+        {
+            "moment_error": dm,
+            "t1_printed": r_bad.t_stop,
+            "t1_corrected": r_ok.t_stop,
+            "beta_printed": r_bad.beta_stop,
+            "beta_corrected": r_ok.beta_stop,
+        },
     )
 
 
@@ -349,11 +401,16 @@ def _e7(fx):
     at_g, _ = _linear_models(fx, "mass_centre")
     rc = sa.integrate(at_c, phi0=math.pi / 2)
     rg = sa.integrate(at_g, phi0=math.pi / 2)
-    tr = simulate(sh.linear_body(), FrictionTensor(fx, fx + 0.12),
-                  State.from_speed(sh.SPEED_UNIT, sh.SPIN_UNIT, sh.THETA0, math.pi / 2), g=sh.G)
+    tr = simulate(
+        sh.linear_body(),
+        FrictionTensor(fx, fx + 0.12),
+        State.from_speed(sh.SPEED_UNIT, sh.SPIN_UNIT, sh.THETA0, math.pi / 2),
+        g=sh.G,
+    )
     return Erratum(
-        7, "section 3.2: which point the linear-law equations (11) refer to",
-        "\"system (11) (which was obtained for ellipse center)\"; I and the initial "
+        7,
+        "section 3.2: which point the linear-law equations (11) refer to",
+        '"system (11) (which was obtained for ellipse center)"; I and the initial '
         "velocity not located",
         "equations of motion at the mass centre G = (xi_c, eta_c) above the pressure "
         "centroid; v, beta and the moment refer to G",
@@ -366,10 +423,17 @@ def _e7(fx):
         f"{rc.theta_stop - rg.theta_stop:+.3f} rad",
         f"slidespin.simulate at G: t1 = {tr.t_stop / sh.TIME_UNIT:.6f}, beta* = "
         f"{tr.beta_stop / sh.A:.6f}, theta* = {tr.theta_stop:+.6f}",
-        {"t1_centre": rc.t_stop, "t1_mass_centre": rg.t_stop, "beta_centre": rc.beta_stop,
-         "beta_mass_centre": rg.beta_stop, "theta_centre": rc.theta_stop,
-         "theta_mass_centre": rg.theta_stop, "simulate_t1": tr.t_stop / sh.TIME_UNIT,
-         "simulate_beta": tr.beta_stop / sh.A, "simulate_theta": tr.theta_stop},
+        {
+            "t1_centre": rc.t_stop,
+            "t1_mass_centre": rg.t_stop,
+            "beta_centre": rc.beta_stop,
+            "beta_mass_centre": rg.beta_stop,
+            "theta_centre": rc.theta_stop,
+            "theta_mass_centre": rg.theta_stop,
+            "simulate_t1": tr.t_stop / sh.TIME_UNIT,
+            "simulate_beta": tr.beta_stop / sh.A,
+            "simulate_theta": tr.theta_stop,
+        },
     )
 
 
@@ -386,13 +450,16 @@ def _e8():
     lp = load(3.0 * m * g / (2.0 * math.pi * a)) / (m * g)
     lc = load(3.0 * m * g / (2.0 * math.pi * a * a)) / (m * g)
     return Erratum(
-        8, "appendix: Hertz pressure",
+        8,
+        "appendix: Hertz pressure",
         "p = p0 sqrt(1 - rho^2/a^2), p0 = 3 m g/(2 pi a)",
         "p0 = 3 m g/(2 pi a^2)",
         "total normal load int p dS / (m g) for a disk of radius a = 0.1 m (quadrature)",
-        f"{lp:.6f}", f"{lc:.6f}",
+        f"{lp:.6f}",
+        f"{lc:.6f}",
         "the printed p0 carries the load a m g (units N m): 10 % of the weight for a = 0.1 m",
-        "", {"load_printed": lp, "load_corrected": lc},
+        "",
+        {"load_printed": lp, "load_corrected": lc},
     )
 
 
@@ -404,15 +471,18 @@ def _e9():
     literal = fx + mu
     fixed = (fx + mu) / (4 * fx)
     return Erratum(
-        9, "Table 2, uniform law, row 1",
+        9,
+        "Table 2, uniform law, row 1",
         "(0, (fx + mu)) / (4 fx)  [read literally: the interval (0, fx + mu)]",
         "(0, (fx + mu)/(4 fx))",
         "upper end I1 for fx = 0.3, mu = 0.15; numeric I1 = J(inf) = " + f"{num:.12f}",
-        f"{literal:.6f}", f"{fixed:.6f}",
+        f"{literal:.6f}",
+        f"{fixed:.6f}",
         f"the literal reading moves I1 by {literal - fixed:+.3f} (it is not even homogeneous "
         "in the friction coefficients); the restored formula equals J(inf) to "
         f"{abs(num - fixed):.0e}",
-        "", {"literal": literal, "corrected": fixed, "numeric": num},
+        "",
+        {"literal": literal, "corrected": fixed, "numeric": num},
     )
 
 
@@ -422,7 +492,8 @@ def _e10():
     res = t1()  # the least-squares fit and the consistency scan are cached
     lo, hi = res.best_interval
     return Erratum(
-        10, "Table 1: friction coefficients",
+        10,
+        "Table 1: friction coefficients",
         "beta(mu) for mu = 0 ... 0.24; fx and f not printed",
         "f = 0; fx inferred by least squares from the 24 cells with mu > 0",
         "least-squares fx and the agreement of the 27 cells",
@@ -432,8 +503,14 @@ def _e10():
         f"{27 - len(res.mismatches)} of 27 cells round to the printed value with this fx; "
         f"at most {res.best_count} of the 24 fx-dependent cells do for any single fx "
         f"(fx in [{lo:.5f}, {hi:.5f}])",
-        "", {"fx": res.fx, "rms": res.fit.rms, "max_abs_diff": res.max_abs_diff,
-             "best_count": res.best_count, "best_interval": [lo, hi]},
+        "",
+        {
+            "fx": res.fx,
+            "rms": res.fit.rms,
+            "max_abs_diff": res.max_abs_diff,
+            "best_count": res.best_count,
+            "best_interval": [lo, hi],
+        },
     )
 
 
@@ -447,8 +524,9 @@ def _e11(fx):
     runs = fig2.compute(mu=0.12, fx=fx).runs
     ell = [tr.theta_stop for tr in runs]
     return Erratum(
-        11, "section 3.1 and conclusions: terminal direction",
-        "\"Sliding and spinning stop at the same moment with theta = 0\" (the velocity "
+        11,
+        "section 3.1 and conclusions: terminal direction",
+        '"Sliding and spinning stop at the same moment with theta = 0" (the velocity '
         "ends along the low-friction axis)",
         "true for a circular patch (theta* = 0 by symmetry); for the ellipse theta* "
         "depends on the orientation phi at the stop (slidespin.terminal.terminal_states)",
@@ -458,10 +536,12 @@ def _e11(fx):
         f"disk: {circle.theta_stop:+.1e}; ellipse: " + ", ".join(f"{x:+.4f}" for x in ell),
         f"the ellipse stops with the velocity turned by up to {max(abs(x) for x in ell):.3f} "
         "rad from the low-friction axis",
-        "terminal_states at each run's final phi gives the same theta* "
-        "(tests/test_paper.py)",
-        {"circle_theta": circle.theta_stop, "ellipse_theta": ell,
-         "ellipse_phi_stop": [tr.stop_state.phi for tr in runs]},
+        "terminal_states at each run's final phi gives the same theta* (tests/test_paper.py)",
+        {
+            "circle_theta": circle.theta_stop,
+            "ellipse_theta": ell,
+            "ellipse_phi_stop": [tr.stop_state.phi for tr in runs],
+        },
     )
 
 
@@ -477,14 +557,24 @@ def compute(fx: float | None = None) -> ErrataResult:
 
     fx = resolve_fx(fx)
     kappa = sh.patch().aspect
-    return ErrataResult((
-        _e1(kappa), _e2(fx), _e3(kappa), _e4(kappa), _e5(), _e6(fx), _e7(fx), _e8(), _e9(),
-        _e10(), _e11(fx),
-    ))
+    return ErrataResult(
+        (
+            _e1(kappa),
+            _e2(fx),
+            _e3(kappa),
+            _e4(kappa),
+            _e5(),
+            _e6(fx),
+            _e7(fx),
+            _e8(),
+            _e9(),
+            _e10(),
+            _e11(fx),
+        )
+    )
 
 
-def main(out=None, *, as_json: bool = False, fx: float | None = None,
-         stream=None) -> ErrataResult:
+def main(out=None, *, as_json: bool = False, fx: float | None = None, stream=None) -> ErrataResult:
     """Print the errata (text or JSON) and, if ``out`` is given, write errata.json/.txt."""
     if out is not None:
         sh.prepare_out(out)

@@ -40,8 +40,15 @@ def plot(result: fg.FigureRuns):
     )
 
 
-def main(out=None, *, as_json: bool = False, mu: float = fg.DEFAULT_MU, fx=None,
-         fmt: str = "png", stream=None) -> fg.FigureRuns:
+def main(
+    out=None,
+    *,
+    as_json: bool = False,
+    mu: float = fg.DEFAULT_MU,
+    fx=None,
+    fmt: str = "png",
+    stream=None,
+) -> fg.FigureRuns:
     """Print the stop of each run and write ``fig3.<fmt>`` (and fig3.json) into ``out``."""
     return fg.main_figure(NAME, compute, plot, out, as_json, fmt, stream, mu=mu, fx=fx)
 

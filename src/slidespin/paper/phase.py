@@ -39,15 +39,22 @@ class PhaseResult:
     portraits: tuple  # PhasePortrait objects
 
     def as_dict(self) -> dict:
-        out = {"law": "uniform", "friction": "isotropic", "intervals": list(self.intervals),
-               "panels": []}
+        panels: list[dict] = []
+        out = {
+            "law": "uniform",
+            "friction": "isotropic",
+            "intervals": list(self.intervals),
+            "panels": panels,
+        }
         for i_star, pp in zip(self.inertia_ratios, self.portraits):
-            out["panels"].append({
-                "inertia_ratio": i_star,
-                "terminal": [s.as_dict() for s in pp.terminal if s.u[2] >= 0.0],
-                "beta_stop": [sh.num(x) for x in pp.beta_stop],
-                "endings": list(pp.endings),
-            })
+            panels.append(
+                {
+                    "inertia_ratio": i_star,
+                    "terminal": [s.as_dict() for s in pp.terminal if s.u[2] >= 0.0],
+                    "beta_stop": [sh.num(x) for x in pp.beta_stop],
+                    "endings": list(pp.endings),
+                }
+            )
         return out
 
     def to_text(self) -> str:
@@ -61,8 +68,7 @@ class PhaseResult:
         for i_star, pp in zip(self.inertia_ratios, self.portraits):
             ends = sorted(set(pp.endings))
             fin = pp.beta_stop[np.isfinite(pp.beta_stop)]
-            rng = (f"{np.abs(fin).min():.6f} .. {np.abs(fin).max():.6f}" if fin.size
-                   else "inf")
+            rng = f"{np.abs(fin).min():.6f} .. {np.abs(fin).max():.6f}" if fin.size else "inf"
             lines.append(f"{i_star:<8.4f} {', '.join(ends):<37} {rng}")
         return "\n".join(lines)
 
@@ -79,8 +85,9 @@ def compute(n: int = 11) -> PhaseResult:
     return PhaseResult(bounds, ratios, tuple(portraits))
 
 
-def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0",
-                        legend: bool = True):
+def plot_phase_portrait(
+    portrait: PhasePortrait, ax=None, *, color: str = "C0", legend: bool = True
+):
     """Draw a phase portrait: trajectories in the (a ω, v) plane and the terminal rays.
 
     Parameters
@@ -105,15 +112,25 @@ def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0",
     ymax = max(float(np.max(s)) for s in portrait.speed)
     for i, (spin, speed) in enumerate(zip(portrait.spin, portrait.speed)):
         ax.plot(spin, speed, color=color, lw=0.9, alpha=0.85)
-        ax.plot(spin[:1], speed[:1], "o", color=color, ms=2.5,
-                label="start (equal energy)" if i == 0 else None)
+        ax.plot(
+            spin[:1],
+            speed[:1],
+            "o",
+            color=color,
+            ms=2.5,
+            label="start (equal energy)" if i == 0 else None,
+        )
     r = 1.05 * max(xmax, ymax)
     labelled = set()
     for s in portrait.terminal:
         if s.u[2] < 0.0 or (s.ending == "mixed" and s.beta_ratio < 0.0):
             continue
-        style = {"color": "k" if s.stable else "0.55", "ls": "-" if s.stable else "--",
-                 "lw": 1.8 if s.stable else 1.0, "zorder": 4}
+        style = {
+            "color": "k" if s.stable else "0.55",
+            "ls": "-" if s.stable else "--",
+            "lw": 1.8 if s.stable else 1.0,
+            "zorder": 4,
+        }
         kind = "attracting" if s.stable else "repelling"
         if s.ending == "mixed":
             k = s.beta_ratio
@@ -137,8 +154,7 @@ def plot_phase_portrait(portrait: PhasePortrait, ax=None, *, color: str = "C0",
     ax.set_xlabel("a ω [m/s]")
     ax.set_ylabel("v [m/s]")
     if legend:
-        ax.legend(loc="upper right", fontsize=7, frameon=True, framealpha=0.9,
-                  edgecolor="none")
+        ax.legend(loc="upper right", fontsize=7, frameon=True, framealpha=0.9, edgecolor="none")
     return ax
 
 
@@ -160,15 +176,16 @@ def plot(result: PhaseResult):
     with sh.style():
         fig = sh.new_figure(7.4, 7.0)
         axes = fig.subplots(2, 2).ravel()
-        for ax, i_star, pp, regime in zip(axes, result.inertia_ratios, result.portraits,
-                                          _REGIME):
+        for ax, i_star, pp, regime in zip(axes, result.inertia_ratios, result.portraits, _REGIME):
             plot_phase_portrait(pp, ax, legend=False)
             ax.set_title(f"I* = {i_star:.3g} ({regime}): {_ending_text(pp)}")
         i1, i2, i3 = result.intervals
         n = len(result.portraits[0].spin)
         fig.suptitle(
             f"Uniform disk, isotropic friction: v against aω from {n} starts of equal energy "
-            f"(I₁ = {i1:.3g}, I₂ = {i2:.3g}, I₃ = {i3:.3g})", fontsize=9.5)
+            f"(I₁ = {i1:.3g}, I₂ = {i2:.3g}, I₃ = {i3:.3g})",
+            fontsize=9.5,
+        )
         handles = [
             Line2D([], [], color="C0", lw=0.9, marker="o", ms=2.5, label="motion from its start"),
             Line2D([], [], color="k", lw=1.8, label="attracting terminal motion"),

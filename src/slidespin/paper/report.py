@@ -13,10 +13,16 @@ import math
 import os
 import platform
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from . import _shared as sh
 from . import errata, fig2, fig3, fig4, phase, table1, table2
+from ._figures import FigureRuns
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 __all__ = ["Report", "compute", "write_html", "main"]
 
@@ -25,23 +31,26 @@ __all__ = ["Report", "compute", "write_html", "main"]
 class Report:
     """All reproductions (results of each module's ``compute``)."""
 
-    table1: object
-    table2: object
-    fig2: object
-    fig3: object
-    fig4: object
-    errata: object
-    phase: object
+    table1: table1.Table1Result
+    table2: table2.Table2Result
+    fig2: FigureRuns
+    fig3: FigureRuns
+    fig4: FigureRuns
+    errata: errata.ErrataResult
+    phase: phase.PhaseResult
     mu: float
     seconds: float
 
     def as_dict(self) -> dict:
-        return {name: getattr(self, name).as_dict()
-                for name in ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase")}
+        return {
+            name: getattr(self, name).as_dict()
+            for name in ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase")
+        }
 
 
-def compute(mu: float = 0.12, table2_fx: float = 0.3, table2_mu: float = 0.15,
-            fx: float | None = None) -> Report:
+def compute(
+    mu: float = 0.12, table2_fx: float = 0.3, table2_mu: float = 0.15, fx: float | None = None
+) -> Report:
     """Run every reproduction (about 30 s)."""
     t0 = time.perf_counter()
     t1 = table1.compute()
@@ -87,27 +96,48 @@ def _f(x, nd=4):
 
 
 def _figure(src, caption):
-    return (f'<figure><a href="{_e(src)}"><img src="{_e(src)}" alt="{_e(caption)}"></a>'
-            f"<figcaption>{caption}</figcaption></figure>")
+    return (
+        f'<figure><a href="{_e(src)}"><img src="{_e(src)}" alt="{_e(caption)}"></a>'
+        f"<figcaption>{caption}</figcaption></figure>"
+    )
 
 
 def _table1_html(res) -> str:
     mus = table1.MU
-    rows = ["<table><tr><th class=l>φ</th><th class=l></th>"
-            + "".join(f"<th>μ = {m:.2f}</th>" for m in mus) + "</tr>"]
+    rows = [
+        "<table><tr><th class=l>φ</th><th class=l></th>"
+        + "".join(f"<th>μ = {m:.2f}</th>" for m in mus)
+        + "</tr>"
+    ]
     for i, lab in enumerate(table1.PHI_LABELS):
-        cells = res.cells[9 * i: 9 * i + 9]
-        rows.append(f"<tr><td class=l rowspan=5>{lab}</td><td class=l>ours (eq. 16)</td>"
-                    + "".join(f"<td>{c.beta:.4f}</td>" for c in cells) + "</tr>")
-        rows.append("<tr><td class=l>printed</td>"
-                    + "".join(f"<td>{c.paper:.3f}</td>" for c in cells) + "</tr>")
-        rows.append("<tr><td class=l>diff [10⁻³]</td>" + "".join(
-            f"<td class={'ok' if c.matches else 'bad'}>{c.diff * 1e3:+.2f}</td>" for c in cells)
-            + "</tr>")
-        rows.append("<tr><td class=l>true β*</td>"
-                    + "".join(f"<td>{_f(c.true_beta)}</td>" for c in cells) + "</tr>")
-        rows.append("<tr><td class=l>true ϑ* [rad]</td>"
-                    + "".join(f"<td>{_f(c.true_theta + 0.0)}</td>" for c in cells) + "</tr>")
+        cells = res.cells[9 * i : 9 * i + 9]
+        rows.append(
+            f"<tr><td class=l rowspan=5>{lab}</td><td class=l>ours (eq. 16)</td>"
+            + "".join(f"<td>{c.beta:.4f}</td>" for c in cells)
+            + "</tr>"
+        )
+        rows.append(
+            "<tr><td class=l>printed</td>"
+            + "".join(f"<td>{c.paper:.3f}</td>" for c in cells)
+            + "</tr>"
+        )
+        rows.append(
+            "<tr><td class=l>diff [10⁻³]</td>"
+            + "".join(
+                f"<td class={'ok' if c.matches else 'bad'}>{c.diff * 1e3:+.2f}</td>" for c in cells
+            )
+            + "</tr>"
+        )
+        rows.append(
+            "<tr><td class=l>true β*</td>"
+            + "".join(f"<td>{_f(c.true_beta)}</td>" for c in cells)
+            + "</tr>"
+        )
+        rows.append(
+            "<tr><td class=l>true ϑ* [rad]</td>"
+            + "".join(f"<td>{_f(c.true_theta + 0.0)}</td>" for c in cells)
+            + "</tr>"
+        )
     rows.append("</table>")
     return "\n".join(rows)
 
@@ -117,46 +147,60 @@ def _table2_html(res) -> str:
     for mu in sorted({r.mu for r in res.rows}):
         sub = [r for r in res.rows if r.mu == mu]
         title = "μ = 0 (isotropic)" if mu == 0 else f"fx = {sub[0].fx:g}, μ = {mu:g}"
-        out.append(f"<p><b>{title}</b></p><table><tr><th class=l>law</th><th>boundary</th>"
-                   "<th>numeric J(β)</th><th>printed formula</th><th>|diff|</th></tr>")
+        out.append(
+            f"<p><b>{title}</b></p><table><tr><th class=l>law</th><th>boundary</th>"
+            "<th>numeric J(β)</th><th>printed formula</th><th>|diff|</th></tr>"
+        )
         for r in sub:
             for j, name in enumerate(("I₁ = J(∞)", "I₂ = J(1)", "I₃ = J(0⁺)")):
                 law = f"<td class=l rowspan=3>{r.law}</td>" if j == 0 else ""
-                out.append(f"<tr>{law}<td>{name}</td><td>{r.numeric[j]:.12f}</td>"
-                           f"<td>{r.printed[j]:.12f}</td>"
-                           f"<td>{abs(r.numeric[j] - r.printed[j]):.1e}</td></tr>")
+                out.append(
+                    f"<tr>{law}<td>{name}</td><td>{r.numeric[j]:.12f}</td>"
+                    f"<td>{r.printed[j]:.12f}</td>"
+                    f"<td>{abs(r.numeric[j] - r.printed[j]):.1e}</td></tr>"
+                )
         out.append("</table>")
-    out.append("<p><b>One simulation inside each interval</b> (circle, v₀ = aω₀, ϑ₀ = π/4):</p>"
-               "<table><tr><th class=l>law</th><th>μ</th><th>row</th><th>I*</th>"
-               "<th class=l>stated ending</th><th class=l>simulated ending</th>"
-               "<th>k = β*/a</th><th>J⁻¹(I*)</th></tr>")
+    out.append(
+        "<p><b>One simulation inside each interval</b> (circle, v₀ = aω₀, ϑ₀ = π/4):</p>"
+        "<table><tr><th class=l>law</th><th>μ</th><th>row</th><th>I*</th>"
+        "<th class=l>stated ending</th><th class=l>simulated ending</th>"
+        "<th>k = β*/a</th><th>J⁻¹(I*)</th></tr>"
+    )
     for r in res.runs:
         cls = "ok" if r.agrees else "bad"
-        out.append(f"<tr><td class=l>{r.law}</td><td>{r.mu:g}</td><td>{r.regime}</td>"
-                   f"<td>{r.inertia_ratio:.4f}</td><td class=l>{r.expected}</td>"
-                   f"<td class='l {cls}'>{r.observed}</td><td>{_f(abs(r.k), 6)}</td>"
-                   f"<td>{_f(r.k_theory, 6)}</td></tr>")
+        out.append(
+            f"<tr><td class=l>{r.law}</td><td>{r.mu:g}</td><td>{r.regime}</td>"
+            f"<td>{r.inertia_ratio:.4f}</td><td class=l>{r.expected}</td>"
+            f"<td class='l {cls}'>{r.observed}</td><td>{_f(abs(r.k), 6)}</td>"
+            f"<td>{_f(r.k_theory, 6)}</td></tr>"
+        )
     out.append("</table>")
     return "\n".join(out)
 
 
 def _runs_html(res) -> str:
-    rows = ["<table><tr><th>φ₀</th><th>t_stop / √(aπ/g)</th><th>β*/a</th><th>ϑ* [rad]</th>"
-            "<th>φ at the stop [rad]</th><th>F_n/(mg) at the stop</th><th class=l>ending</th>"
-            "</tr>"]
+    rows = [
+        "<table><tr><th>φ₀</th><th>t_stop / √(aπ/g)</th><th>β*/a</th><th>ϑ* [rad]</th>"
+        "<th>φ at the stop [rad]</th><th>F_n/(mg) at the stop</th><th class=l>ending</th>"
+        "</tr>"
+    ]
     for r in res.summary():
-        rows.append(f"<tr><td>{r['phi0_label']}</td><td>{r['t_stop']:.5f}</td>"
-                    f"<td>{_f(float(r['beta_stop']))}</td>"
-                    f"<td>{float(r['theta_stop']):+.4f}</td><td>{r['phi_stop']:.4f}</td>"
-                    f"<td>{r['normal_stop']:.1e}</td><td class=l>{r['ending']}</td></tr>")
+        rows.append(
+            f"<tr><td>{r['phi0_label']}</td><td>{r['t_stop']:.5f}</td>"
+            f"<td>{_f(float(r['beta_stop']))}</td>"
+            f"<td>{float(r['theta_stop']):+.4f}</td><td>{r['phi_stop']:.4f}</td>"
+            f"<td>{r['normal_stop']:.1e}</td><td class=l>{r['ending']}</td></tr>"
+        )
     rows.append("</table>")
     return "\n".join(rows)
 
 
 def _errata_html(res) -> str:
-    out = ["<table><tr><th>#</th><th class=l>where</th><th class=l>printed → corrected</th>"
-           "<th class=l>measure</th><th class=l>printed gives</th>"
-           "<th class=l>corrected gives</th><th class=l>effect</th></tr>"]
+    out = [
+        "<table><tr><th>#</th><th class=l>where</th><th class=l>printed → corrected</th>"
+        "<th class=l>measure</th><th class=l>printed gives</th>"
+        "<th class=l>corrected gives</th><th class=l>effect</th></tr>"
+    ]
     for e in res.errata:
         check = f"<br><span class=small>check: {_e(e.check)}</span>" if e.check else ""
         out.append(
@@ -174,9 +218,14 @@ def write_html(rep: Report, out: str) -> str:
     from .. import __version__
 
     t1 = rep.table1
-    lo, hi = t1.best_interval
-    mism = ", ".join(f"(φ = {c.phi_label}, μ = {c.mu:.2f}: {c.diff * 1e3:+.3f}·10⁻³)"
-                     for c in t1.mismatches) or "none"
+    lo, hi = t1.best_interval or (math.nan, math.nan)  # None without the consistency scan
+    rms = f" (rms {t1.fit.rms * 1e3:.2f}·10⁻³)" if t1.fit is not None else ""
+    mism = (
+        ", ".join(
+            f"(φ = {c.phi_label}, μ = {c.mu:.2f}: {c.diff * 1e3:+.3f}·10⁻³)" for c in t1.mismatches
+        )
+        or "none"
+    )
     n_ok = sum(r.agrees for r in rep.table2.runs)
     t2max = max(r.max_abs_diff for r in rep.table2.rows)
     parts = [
@@ -196,40 +245,52 @@ def write_html(rep: Report, out: str) -> str:
         "<p>The paper's method: the root of eq. 16, β = I*F_τ/M_Cζ, with the velocity direction "
         "ϑ = 0 imposed and F_n ignored (uniform pressure, e = 0.866, I* = (1 + κ²)/4, f = 0). "
         f"fx is not printed; least squares over the 24 cells with μ > 0 give "
-        f"<b>fx = {t1.fx:.5f}</b> (rms {t1.fit.rms * 1e3:.2f}·10⁻³). "
+        f"<b>fx = {t1.fx:.5f}</b>{rms}. "
         f"Largest difference {t1.max_abs_diff * 1e3:.2f}·10⁻³; "
         f"{27 - len(t1.mismatches)} of 27 cells round to the printed value; the others: "
         f"{mism}. No single fx makes more than {t1.best_count} of the 24 fx-dependent cells "
         f"round correctly (fx ∈ [{lo:.5f}, {hi:.5f}]). "
-        + (f"With the round value fx = {table1.ROUND_FX:g}, <b>{t1.round_matching} of 27</b> "
-           f"cells round to the printed value (least squares: {t1.matching} of 27): "
-           f"{_e(t1.likely_fx())} " if t1.round_cells is not None else "")
+        + (
+            f"With the round value fx = {table1.ROUND_FX:g}, <b>{t1.round_matching} of 27</b> "
+            f"cells round to the printed value (least squares: {t1.matching} of 27): "
+            f"{_e(t1.likely_fx())} "
+            if t1.round_cells is not None
+            else ""
+        )
         + "Beside each cell, the <b>true terminal motion</b> at that φ (a fixed point of the "
         "flow of the direction of motion, F_n = 0 and ϑ free): it coincides with the paper's "
         "root only for φ = π/2.</p>",
         _table1_html(t1),
-        _figure("table1.png", "Left: β/a of eq. 16 (lines), printed (circles), true terminal "
-                "ratio (dashed). Right: the true terminal direction ϑ*."),
+        _figure(
+            "table1.png",
+            "Left: β/a of eq. 16 (lines), printed (circles), true terminal "
+            "ratio (dashed). Right: the true terminal direction ϑ*.",
+        ),
         "<h2 id=t2>Table 2 — how a circular patch stops, against I*</h2>",
         "<p>Boundaries I₁ = J(∞), I₂ = J(1), I₃ = J(0⁺) of J(β) = β M_Cζ/F_τ at ϑ = 0, "
         "computed numerically, against the printed formulas (uniform row 1 with its "
         f"parenthesis restored): largest difference {t2max:.1e}. {n_ok} of "
         f"{len(rep.table2.runs)} simulations end as Table 2 states.</p>",
         _table2_html(rep.table2),
-        _figure("table2.png", "Terminal ratio k = v/(aω) against I* for the three pressure "
-                "laws; dotted: I₁ and I₃, dots: I₂ (k = 1), crosses and triangles: simulations, "
-                "star: the published uniform disk (I* = 1/2, k = 0.653)."),
+        _figure(
+            "table2.png",
+            "Terminal ratio k = v/(aω) against I* for the three pressure "
+            "laws; dotted: I₁ and I₃, dots: I₂ (k = 1), crosses and triangles: simulations, "
+            "star: the published uniform disk (I* = 1/2, k = 0.653).",
+        ),
         f"<h2 id=f2>Figure 2 — uniform pressure (fx = {rep.fig2.fx:.5f}, μ = {rep.mu:g})</h2>",
         "<p>v₀ = ω₀ = 1, ϑ₀ = π/4 in the paper's units; the paper gives neither fx nor μ. "
         "Sliding and spinning do stop together, but the velocity at the stop is not along "
         "the low-friction axis (ϑ* ≠ 0): the ellipse turns during the motion and ϑ* depends on "
         "its final orientation.</p>",
         _runs_html(rep.fig2),
-        _figure("fig2.png", "β(t) and ϑ(t); below, the path of the mass centre with the "
-                "outline of the patch at equal time intervals."),
+        _figure(
+            "fig2.png",
+            "β(t) and ϑ(t); below, the path of the mass centre with the "
+            "outline of the patch at equal time intervals.",
+        ),
         "<h2 id=f3>Figure 3 — linear pressure, ξc = ηc = 0.1a</h2>",
-        "<p>The mass centre G lies over the pressure centroid; β and v refer to G "
-        "(erratum 7).</p>",
+        "<p>The mass centre G lies over the pressure centroid; β and v refer to G (erratum 7).</p>",
         _runs_html(rep.fig3),
         _figure("fig3.png", "β(t) and ϑ(t) for the linear law, with the paths."),
         "<h2 id=f4>Figure 4 — F_n(t), linear pressure</h2>",
@@ -238,14 +299,29 @@ def write_html(rep: Report, out: str) -> str:
         "<h2 id=phase>Phase portraits</h2>",
         "<p>The uniform disk under isotropic friction, one I* in each interval of Table 2: "
         "every trajectory enters the origin along the attracting ray.</p>",
-        _figure("phase.png", "v against aω from 11 initial states of equal energy; solid: "
-                "attracting terminal motion, dashed: repelling ones."),
+        _figure(
+            "phase.png",
+            "v against aω from 11 initial states of equal energy; solid: "
+            "attracting terminal motion, dashed: repelling ones.",
+        ),
         "<h2 id=errata>Errata of the printed paper</h2>",
         _errata_html(rep.errata),
         "<h2>Files</h2><p>Numbers as JSON and text: "
-        + ", ".join(f'<a href="{n}">{n}</a>' for n in (
-            "table1.json", "table2.json", "fig2.json", "fig3.json", "fig4.json",
-            "phase.json", "errata.json", "table1.txt", "table2.txt", "errata.txt"))
+        + ", ".join(
+            f'<a href="{n}">{n}</a>'
+            for n in (
+                "table1.json",
+                "table2.json",
+                "fig2.json",
+                "fig3.json",
+                "fig4.json",
+                "phase.json",
+                "errata.json",
+                "table1.txt",
+                "table2.txt",
+                "errata.txt",
+            )
+        )
         + ".</p></body></html>",
     ]
     path = os.path.join(out, "index.html")
@@ -254,9 +330,17 @@ def write_html(rep: Report, out: str) -> str:
     return path
 
 
-def main(out=None, *, as_json: bool = False, mu: float = 0.12, fx=None,
-         table2_fx: float = 0.3, table2_mu: float = 0.15, fmt: str = "png",
-         stream=None) -> Report:
+def main(
+    out=None,
+    *,
+    as_json: bool = False,
+    mu: float = 0.12,
+    fx=None,
+    table2_fx: float = 0.3,
+    table2_mu: float = 0.15,
+    fmt: str = "png",
+    stream=None,
+) -> Report:
     """Write every table, figure and erratum into ``out`` (default ``slidespin-out``) with
     an ``index.html``; print a summary (or JSON with ``as_json``)."""
     import sys
@@ -267,9 +351,15 @@ def main(out=None, *, as_json: bool = False, mu: float = 0.12, fx=None,
         raise ValueError(f"--format = {fmt!r} is invalid; valid values: {', '.join(sh.FORMATS)}")
     rep = compute(mu=mu, table2_fx=table2_fx, table2_mu=table2_mu, fx=fx)
     files = []
-    for name, res in (("table1", rep.table1), ("table2", rep.table2), ("fig2", rep.fig2),
-                      ("fig3", rep.fig3), ("fig4", rep.fig4), ("phase", rep.phase),
-                      ("errata", rep.errata)):
+    for name, res in (
+        ("table1", rep.table1),
+        ("table2", rep.table2),
+        ("fig2", rep.fig2),
+        ("fig3", rep.fig3),
+        ("fig4", rep.fig4),
+        ("phase", rep.phase),
+        ("errata", rep.errata),
+    ):
         path = os.path.join(out, f"{name}.json")
         with open(path, "w", encoding="utf-8") as fh:
             json.dump(res.as_dict(), fh, indent=2)
@@ -279,19 +369,29 @@ def main(out=None, *, as_json: bool = False, mu: float = 0.12, fx=None,
             with open(path, "w", encoding="utf-8") as fh:
                 fh.write(res.to_text() + "\n")
             files.append(path)
-    plots = (("table1", table1.plot, rep.table1), ("table2", table2.plot, rep.table2),
-             ("fig2", fig2.plot, rep.fig2), ("fig3", fig3.plot, rep.fig3),
-             ("fig4", fig4.plot, rep.fig4), ("phase", phase.plot, rep.phase))
-    for name, plot, res in plots:
-        fig = plot(res)
+    plots: tuple[tuple[str, Callable[[], Figure]], ...] = (
+        ("table1", lambda: table1.plot(rep.table1)),
+        ("table2", lambda: table2.plot(rep.table2)),
+        ("fig2", lambda: fig2.plot(rep.fig2)),
+        ("fig3", lambda: fig3.plot(rep.fig3)),
+        ("fig4", lambda: fig4.plot(rep.fig4)),
+        ("phase", lambda: phase.plot(rep.phase)),
+    )
+    for name, plot in plots:
+        fig = plot()
         files.append(sh.save(fig, out, name, "png"))  # the page shows PNG
         if fmt != "png":
             files.append(sh.save(fig, out, name, fmt))
     index = write_html(rep, out)
     files.append(index)
     if as_json:
-        print(json.dumps({"index": index, "files": files, "seconds": rep.seconds,
-                          "fx": rep.table1.fx}, indent=2), file=stream)
+        print(
+            json.dumps(
+                {"index": index, "files": files, "seconds": rep.seconds, "fx": rep.table1.fx},
+                indent=2,
+            ),
+            file=stream,
+        )
     else:
         print(f"wrote {len(files)} files into {out}; open {index}", file=stream)
     return rep

@@ -184,8 +184,9 @@ def _gauss(n: int):
     return s, 0.5 * w
 
 
-def eta_integrals(lo, hi, d1, d0, d, *, i1: str = "corrected", c31: str = "corrected",
-                  kappa: float = 1.0):
+def eta_integrals(
+    lo, hi, d1, d0, d, *, i1: str = "corrected", c31: str = "corrected", kappa: float = 1.0
+):
     """K_n = ∫ η^n/√(η² + D₁η + D₀) dη over [lo, hi], n = 0..3, in closed form (eq. 8–9, 13).
 
     Parameters
@@ -209,8 +210,9 @@ def eta_integrals(lo, hi, d1, d0, d, *, i1: str = "corrected", c31: str = "corre
     """
     i1 = v.choice("i1", i1, _VARIANTS)
     c31 = v.choice("c31", c31, _VARIANTS)
-    args = (np.asarray(x, dtype=float) for x in (lo, hi, d1, d0, d))
-    return _eta_integrals(*args, i1, c31, v.in_range("kappa", kappa, 0.0, 1.0, lo_open=True))
+    lo_, hi_, d1_, d0_, d_ = (np.asarray(x, dtype=float) for x in (lo, hi, d1, d0, d))
+    kappa = v.in_range("kappa", kappa, 0.0, 1.0, lo_open=True)
+    return _eta_integrals(lo_, hi_, d1_, d0_, d_, i1, c31, kappa)
 
 
 def _eta_integrals(lo, hi, d1, d0, d, i1, c31, kappa):
@@ -220,8 +222,9 @@ def _eta_integrals(lo, hi, d1, d0, d, i1, c31, kappa):
     r_lo = np.hypot(y_lo, d)
     if i1 == "printed":
         with np.errstate(divide="ignore", invalid="ignore"):
-            k0 = np.log((2.0 * r_hi + kappa * (2.0 * hi + d1))
-                        / (2.0 * r_lo + kappa * (2.0 * lo + d1)))
+            k0 = np.log(
+                (2.0 * r_hi + kappa * (2.0 * hi + d1)) / (2.0 * r_lo + kappa * (2.0 * lo + d1))
+            )
     else:
         with np.errstate(divide="ignore", invalid="ignore"):
             pos = np.log((y_hi + r_hi) / (y_lo + r_lo))  # both y ≥ 0
@@ -229,9 +232,11 @@ def _eta_integrals(lo, hi, d1, d0, d, i1, c31, kappa):
             mid = np.log(y_hi + r_hi) + np.log(r_lo - y_lo) - 2.0 * np.log(d)  # y_lo < 0 < y_hi
         k0 = np.where(y_lo >= 0.0, pos, np.where(y_hi <= 0.0, neg, mid))
     k1 = (r_hi - r_lo) - 0.5 * d1 * k0
-    k2 = (0.5 * hi - 0.75 * d1) * r_hi - (0.5 * lo - 0.75 * d1) * r_lo + (
-        0.375 * d1 * d1 - 0.5 * d0
-    ) * k0
+    k2 = (
+        (0.5 * hi - 0.75 * d1) * r_hi
+        - (0.5 * lo - 0.75 * d1) * r_lo
+        + (0.375 * d1 * d1 - 0.5 * d0) * k0
+    )
     base = 0.625 * d1 * d1 - 2.0 * d0 / 3.0
     if c31 == "printed":
         p_hi = -5.0 * d1 * hi / 12.0 + base
@@ -385,17 +390,26 @@ def rhs(t, y, model: PaperModel):
     if vel < 0.0:  # components along (cos ϑ, sin ϑ) = −(direction of motion)
         f_tau, f_n = -f_tau, -f_n
     dth = -math.pi * f_n / vel if vel != 0.0 else 0.0
-    return np.array([
-        vel * math.cos(theta),
-        vel * math.sin(theta),
-        om,
-        -math.pi * f_tau,
-        dth,
-        -math.pi * m_paper / model.inertia_ratio,
-    ])
+    return np.array(
+        [
+            vel * math.cos(theta),
+            vel * math.sin(theta),
+            om,
+            -math.pi * f_tau,
+            dth,
+            -math.pi * m_paper / _inertia(model),
+        ]
+    )
 
 
 @lru_cache(maxsize=32)
+def _inertia(model: PaperModel) -> float:
+    """I* of a validated model (``__post_init__`` replaces ``None`` by the plate's)."""
+    istar = model.inertia_ratio
+    assert istar is not None
+    return istar
+
+
 def _uniform_model(kappa, fx, fy, f, inertia_ratio, nodes, i1):
     return PaperModel(kappa, fx, fy, f, inertia_ratio=inertia_ratio, nodes=nodes, i1=i1)
 
@@ -428,9 +442,33 @@ def uniform_rhs(t, y, kappa, fx, fy, f=0.0, inertia_ratio=None, nodes=48, i1="co
     >>> sol.status
     0
     """
-    return rhs(t, y, _uniform_model(float(kappa), float(fx), float(fy), float(f),
-                                    None if inertia_ratio is None else float(inertia_ratio),
-                                    int(nodes), str(i1)))
+    return rhs(
+        t,
+        y,
+        _uniform_model(
+            float(kappa),
+            float(fx),
+            float(fy),
+            float(f),
+            None if inertia_ratio is None else float(inertia_ratio),
+            int(nodes),
+            str(i1),
+        ),
+    )
+
+
+class _StopEvent:
+    """``solve_ivp`` event: √(v² + I* ω²) falls through ``level`` (the run's end)."""
+
+    terminal = True
+    direction = -1.0
+
+    def __init__(self, istar: float, level: float) -> None:
+        self.istar = istar
+        self.level = level
+
+    def __call__(self, t, y, _model) -> float:
+        return math.sqrt(y[3] ** 2 + self.istar * y[5] ** 2) - self.level
 
 
 @dataclass(frozen=True)
@@ -497,24 +535,38 @@ def integrate(
     v0 = v.in_range("v0", v0, 0.0, math.inf)
     omega0 = v.finite("omega0", omega0)
     stop = v.in_range("stop", stop, 0.0, 1.0, lo_open=True, hi_open=True)
-    istar = model.inertia_ratio
+    istar = _inertia(model)
     s0 = math.sqrt(v0 * v0 + istar * omega0 * omega0)
     if s0 == 0.0:
         raise ValueError("v0 and omega0 are both 0: the body is at rest")
 
-    def event(t, y, _model):
-        return math.sqrt(y[3] ** 2 + istar * y[5] ** 2) - stop * s0
-
-    event.terminal = True
-    event.direction = -1
+    event = _StopEvent(istar, stop * s0)
     y0 = [0.0, 0.0, v.finite("phi0", phi0), v0, v.finite("theta0", theta0), omega0]
-    sol = solve_ivp(rhs, (0.0, v.positive("t_max", t_max)), y0, method=method, rtol=rtol,
-                    atol=atol, events=event, args=(model,))
+    sol = solve_ivp(
+        rhs,
+        (0.0, v.positive("t_max", t_max)),
+        y0,
+        method=method,
+        rtol=rtol,
+        atol=atol,
+        events=event,
+        args=(model,),
+    )
     yy = sol.y
     beta = yy[3, -1] / yy[5, -1] if yy[5, -1] != 0.0 else math.inf
     t_stop = float(sol.t_events[0][0]) if sol.t_events[0].size else float(sol.t[-1])
     return SemiAnalyticRun(
-        t=sol.t, x=yy[0], y=yy[1], phi=yy[2], v=yy[3], theta=yy[4], omega=yy[5],
-        t_stop=t_stop, beta_stop=float(beta), theta_stop=float(yy[4, -1]), nfev=int(sol.nfev),
-        status=int(sol.status), message=str(sol.message),
+        t=sol.t,
+        x=yy[0],
+        y=yy[1],
+        phi=yy[2],
+        v=yy[3],
+        theta=yy[4],
+        omega=yy[5],
+        t_stop=t_stop,
+        beta_stop=float(beta),
+        theta_stop=float(yy[4, -1]),
+        nfev=int(sol.nfev),
+        status=int(sol.status),
+        message=str(sol.message),
     )

@@ -65,7 +65,7 @@ def paper_ratio(fx: float, mu: float, phi: float) -> float:
     """β/a of Table 1 for one cell: root of eq. 16 with ϑ = 0, uniform plate, e = 0.866."""
     body = sh.uniform_body()
     fr = FrictionTensor(fx, fx + mu)
-    a = body.patch.a
+    a = body.length_unit  # the semi-axis a of the ellipse
     try:
         beta = terminal_ratio(body, fr, phi, 0.0, bracket=(_BRACKET[0] * a, _BRACKET[1] * a))
     except ValueError:  # far from the paper's parameters: scan for the root
@@ -97,9 +97,9 @@ def infer_fx() -> FxFit:
     """
 
     def residuals(fx):
-        return np.array(
-            [[paper_ratio(fx, mu, phi) for mu in MU[1:]] for phi in PHI]
-        ) - PRINTED[:, 1:]
+        return (
+            np.array([[paper_ratio(fx, mu, phi) for mu in MU[1:]] for phi in PHI]) - PRINTED[:, 1:]
+        )
 
     def sse(fx):
         return float(np.sum(residuals(fx) ** 2))
@@ -136,6 +136,7 @@ def _consistent_fx(lo: float, hi: float) -> np.ndarray:
         for j, mu in enumerate(MU[1:]):
             target = PRINTED[i, j + 1]
             for k, edge in enumerate((+HALF_UNIT, -HALF_UNIT)):
+
                 def g(fx, t=target + edge, mu=mu, phi=phi):
                     return paper_ratio(fx, mu, phi) - t
 
@@ -146,8 +147,9 @@ def _consistent_fx(lo: float, hi: float) -> np.ndarray:
 def _best_overlap(intervals: np.ndarray):
     """Largest number of cell intervals sharing a common fx, and that common interval."""
     flat = intervals.reshape(-1, 2)
-    events = sorted([(x, +1) for x in flat[:, 0]] + [(x, -1) for x in flat[:, 1]],
-                    key=lambda e: (e[0], -e[1]))
+    events = sorted(
+        [(x, +1) for x in flat[:, 0]] + [(x, -1) for x in flat[:, 1]], key=lambda e: (e[0], -e[1])
+    )
     best, count, start, span = 0, 0, None, (math.nan, math.nan)
     for k, (x, step) in enumerate(events):
         count += step
@@ -229,17 +231,24 @@ class Table1Result:
             return ""
         lo, hi = self.best_interval if self.best_interval else (math.nan, math.nan)
         in_best = lo <= ROUND_FX <= hi
-        if self.round_matching > self.matching:
-            why = (f"it is a round value, it makes {self.round_matching} of 27 cells round to "
-                   f"the print against {self.matching} for the least-squares fx = "
-                   f"{self.fx:.5f}")
+        round_matching = len(self.round_cells) - len(self.round_mismatches)
+        if round_matching > self.matching:
+            why = (
+                f"it is a round value, it makes {round_matching} of 27 cells round to "
+                f"the print against {self.matching} for the least-squares fx = "
+                f"{self.fx:.5f}"
+            )
             if in_best:
-                why += (f", and it lies in the interval [{lo:.5f}, {hi:.5f}] that makes the "
-                        "most fx-dependent cells round right")
+                why += (
+                    f", and it lies in the interval [{lo:.5f}, {hi:.5f}] that makes the "
+                    "most fx-dependent cells round right"
+                )
             return f"the authors most likely used fx = {ROUND_FX:g}: {why}."
-        return (f"the least-squares fx = {self.fx:.5f} makes {self.matching} of 27 cells round "
-                f"right, fx = {ROUND_FX:g} makes {self.round_matching}: the printed digits do "
-                "not single out a round value.")
+        return (
+            f"the least-squares fx = {self.fx:.5f} makes {self.matching} of 27 cells round "
+            f"right, fx = {ROUND_FX:g} makes {round_matching}: the printed digits do "
+            "not single out a round value."
+        )
 
     def grid(self, name: str) -> np.ndarray:
         """A 3 × 9 array of one cell attribute (``beta``, ``paper``, ``true_beta``, ...)."""
@@ -260,34 +269,55 @@ class Table1Result:
             "fx_source": self.fx_source,
             "cells": [
                 {
-                    "phi": c.phi, "phi_label": c.phi_label, "mu": c.mu, "beta": c.beta,
-                    "paper": c.paper, "diff": c.diff, "matches": c.matches,
-                    "true_beta": sh.num(c.true_beta), "true_theta": sh.num(c.true_theta),
+                    "phi": c.phi,
+                    "phi_label": c.phi_label,
+                    "mu": c.mu,
+                    "beta": c.beta,
+                    "paper": c.paper,
+                    "diff": c.diff,
+                    "matches": c.matches,
+                    "true_beta": sh.num(c.true_beta),
+                    "true_theta": sh.num(c.true_theta),
                     "true_ending": c.true_ending,
                 }
                 for c in self.cells
             ],
             "max_abs_diff": self.max_abs_diff,
             "mismatches": [
-                {"phi_label": c.phi_label, "mu": c.mu, "beta": c.beta, "paper": c.paper,
-                 "diff": c.diff} for c in self.mismatches
+                {
+                    "phi_label": c.phi_label,
+                    "mu": c.mu,
+                    "beta": c.beta,
+                    "paper": c.paper,
+                    "diff": c.diff,
+                }
+                for c in self.mismatches
             ],
         }
         if self.fit is not None:
             d["fit"] = {"rms": self.fit.rms, "max_abs": self.fit.max_abs}
         if self.round_cells is not None:
             d["round_fx"] = {
-                "fx": ROUND_FX, "matching": self.round_matching, "of": 27,
+                "fx": ROUND_FX,
+                "matching": self.round_matching,
+                "of": 27,
                 "mismatches": [
-                    {"phi_label": c.phi_label, "mu": c.mu, "beta": c.beta, "paper": c.paper,
-                     "diff": c.diff} for c in self.round_mismatches
+                    {
+                        "phi_label": c.phi_label,
+                        "mu": c.mu,
+                        "beta": c.beta,
+                        "paper": c.paper,
+                        "diff": c.diff,
+                    }
+                    for c in self.round_mismatches
                 ],
                 "least_squares_matching": self.matching,
                 "likely": self.likely_fx(),
             }
-        if self.best_count is not None:
+        if self.best_count is not None and self.best_interval is not None:
             d["fx_consistency"] = {
-                "best_count": self.best_count, "of": 24,
+                "best_count": self.best_count,
+                "of": 24,
                 "interval": [self.best_interval[0], self.best_interval[1]],
             }
         return d
@@ -308,23 +338,25 @@ class Table1Result:
         head = "mu".rjust(20) + "".join(f"{m:9.2f}" for m in MU)
         lines.append(head)
         for i, lab in enumerate(PHI_LABELS):
-            row = self.cells[9 * i: 9 * i + 9]
+            row = self.cells[9 * i : 9 * i + 9]
             lines.append(f"phi = {lab:<5} ours      " + "".join(f"{c.beta:9.5f}" for c in row))
             lines.append("            paper     " + "".join(f"{c.paper:9.3f}" for c in row))
             lines.append(
-                "            diff[1e-3]" + "".join(
-                    f"{c.diff * 1e3:+8.3f}" + ("*" if not c.matches else " ") for c in row)
+                "            diff[1e-3]"
+                + "".join(f"{c.diff * 1e3:+8.3f}" + ("*" if not c.matches else " ") for c in row)
             )
             lines.append("            true beta*" + "".join(f"{c.true_beta:9.5f}" for c in row))
-            lines.append("            true th*  " + "".join(
-                f"{round(c.true_theta, 5) + 0.0:9.5f}" for c in row))
+            lines.append(
+                "            true th*  "
+                + "".join(f"{round(c.true_theta, 5) + 0.0:9.5f}" for c in row)
+            )
             lines.append("")
         lines.append(
             f"max |diff| = {self.max_abs_diff * 1e3:.2f}e-3; "
             f"{24 + 3 - len(self.mismatches)} of 27 cells round to the printed value"
             + (" (* marks the others)" if self.mismatches else "")
         )
-        if self.best_count is not None:
+        if self.best_count is not None and self.best_interval is not None:
             lo, hi = self.best_interval
             lines.append(
                 "the least-squares fx above minimises the differences; no fx makes every cell "
@@ -332,8 +364,13 @@ class Table1Result:
                 f"{self.best_count} of the 24 fx-dependent cells round to the print"
             )
         if self.round_cells is not None:
-            off = ", ".join(f"phi = {c.phi_label}, mu = {c.mu:.2f}: {c.diff * 1e3:+.2f}e-3"
-                            for c in self.round_mismatches) or "none"
+            off = (
+                ", ".join(
+                    f"phi = {c.phi_label}, mu = {c.mu:.2f}: {c.diff * 1e3:+.2f}e-3"
+                    for c in self.round_mismatches
+                )
+                or "none"
+            )
             lines.append(
                 f"round value fx = {ROUND_FX:g}: {self.round_matching} of 27 cells round to the "
                 f"printed value (least squares: {self.matching} of 27); off: {off}"
@@ -370,11 +407,18 @@ def compute(fx: float | None = None, *, consistency: bool = True) -> Table1Resul
         for j, mu in enumerate(MU):
             beta = paper_ratio(fx_val, mu, phi)
             ts = true_terminal_state(fx_val, mu, phi)
-            cells.append(Table1Cell(
-                phi=phi, phi_label=PHI_LABELS[i], mu=float(mu), beta=beta,
-                paper=float(PRINTED[i, j]), true_beta=ts.beta_ratio, true_theta=ts.theta,
-                true_ending=ts.ending,
-            ))
+            cells.append(
+                Table1Cell(
+                    phi=phi,
+                    phi_label=PHI_LABELS[i],
+                    mu=float(mu),
+                    beta=beta,
+                    paper=float(PRINTED[i, j]),
+                    true_beta=ts.beta_ratio,
+                    true_theta=ts.theta,
+                    true_ending=ts.ending,
+                )
+            )
     intervals = best = span = None
     if consistency:
         intervals = consistent_fx()
@@ -382,10 +426,18 @@ def compute(fx: float | None = None, *, consistency: bool = True) -> Table1Resul
     round_cells = None
     if fit is not None:  # beside the least-squares fx, the round value
         round_cells = tuple(
-            Table1Cell(phi=phi, phi_label=PHI_LABELS[i], mu=float(mu),
-                       beta=paper_ratio(ROUND_FX, mu, phi), paper=float(PRINTED[i, j]),
-                       true_beta=math.nan, true_theta=math.nan, true_ending="")
-            for i, phi in enumerate(PHI) for j, mu in enumerate(MU)
+            Table1Cell(
+                phi=phi,
+                phi_label=PHI_LABELS[i],
+                mu=float(mu),
+                beta=paper_ratio(ROUND_FX, mu, phi),
+                paper=float(PRINTED[i, j]),
+                true_beta=math.nan,
+                true_theta=math.nan,
+                true_ending="",
+            )
+            for i, phi in enumerate(PHI)
+            for j, mu in enumerate(MU)
         )
     return Table1Result(fx_val, source, fit, tuple(cells), intervals, best, span, round_cells)
 
@@ -407,8 +459,10 @@ def plot(result: Table1Result):
         ax1.plot([], [], "--", color="0.3", lw=1.1, label="true terminal β*")
         ax1.set_xlabel("μ = fy − fx")
         ax1.set_ylabel("β/a = v/(aω) at the stop")
-        ax1.set_title(f"Table 1: eq. 16 with ϑ = 0 vs true terminal state (fx = {result.fx:.4f})",
-                      fontsize=8.5)
+        ax1.set_title(
+            f"Table 1: eq. 16 with ϑ = 0 vs true terminal state (fx = {result.fx:.4f})",
+            fontsize=8.5,
+        )
         ax1.legend(loc="upper left")
         ax2.axhline(0.0, color="0.5", lw=0.6, zorder=0)
         ax2.set_xlabel("μ = fy − fx")
@@ -418,8 +472,9 @@ def plot(result: Table1Result):
     return fig
 
 
-def main(out=None, *, as_json: bool = False, fx: float | None = None, fmt: str = "png",
-         stream=None) -> Table1Result:
+def main(
+    out=None, *, as_json: bool = False, fx: float | None = None, fmt: str = "png", stream=None
+) -> Table1Result:
     """Print Table 1 (text or JSON) and, if ``out`` is given, write table1.json/.txt and a
     figure. ``fx`` overrides the least-squares value."""
     if out is not None:

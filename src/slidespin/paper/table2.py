@@ -41,8 +41,11 @@ __all__ = [
     "main",
 ]
 
-LAWS = (("uniform", UniformPressure()), ("Boussinesq", BoussinesqPressure()),
-        ("Hertz", HertzPressure()))
+LAWS = (
+    ("uniform", UniformPressure()),
+    ("Boussinesq", BoussinesqPressure()),
+    ("Hertz", HertzPressure()),
+)
 EXPECTED = {1: "pure_sliding", 2: "mixed, k > 1", 3: "mixed, k < 1", 4: "pure_spinning"}
 LAW_COLORS = {"uniform": "C0", "Boussinesq": "C3", "Hertz": "C2"}
 PUBLISHED = (0.5, 0.653)  # uniform isotropic disk: I* = 1/2 stops with v/(aω) = 0.653
@@ -100,31 +103,52 @@ class Table2Result:
     def as_dict(self) -> dict:
         return {
             "rows": [
-                {"law": r.law, "fx": r.fx, "mu": r.mu,
-                 "numeric": {"I1": r.numeric[0], "I2": r.numeric[1], "I3": r.numeric[2]},
-                 "printed": {"I1": r.printed[0], "I2": r.printed[1], "I3": r.printed[2]},
-                 "max_abs_diff": r.max_abs_diff}
+                {
+                    "law": r.law,
+                    "fx": r.fx,
+                    "mu": r.mu,
+                    "numeric": {"I1": r.numeric[0], "I2": r.numeric[1], "I3": r.numeric[2]},
+                    "printed": {"I1": r.printed[0], "I2": r.printed[1], "I3": r.printed[2]},
+                    "max_abs_diff": r.max_abs_diff,
+                }
                 for r in self.rows
             ],
             "runs": [
-                {"law": r.law, "fx": r.fx, "mu": r.mu, "regime": r.regime,
-                 "inertia_ratio": r.inertia_ratio, "expected": r.expected,
-                 "observed": r.observed, "ending": r.ending, "k": sh.num(r.k),
-                 "k_theory": sh.num(r.k_theory), "theta_stop": sh.num(r.theta_stop),
-                 "agrees": r.agrees}
+                {
+                    "law": r.law,
+                    "fx": r.fx,
+                    "mu": r.mu,
+                    "regime": r.regime,
+                    "inertia_ratio": r.inertia_ratio,
+                    "expected": r.expected,
+                    "observed": r.observed,
+                    "ending": r.ending,
+                    "k": sh.num(r.k),
+                    "k_theory": sh.num(r.k_theory),
+                    "theta_stop": sh.num(r.theta_stop),
+                    "agrees": r.agrees,
+                }
                 for r in self.runs
             ],
         }
 
     def to_text(self) -> str:
-        lines = ["Table 2 - inertia intervals of a circular patch (f = 0): I1 = J(inf), "
-                 "I2 = J(1), I3 = J(0+)"]
+        lines = [
+            "Table 2 - inertia intervals of a circular patch (f = 0): I1 = J(inf), "
+            "I2 = J(1), I3 = J(0+)"
+        ]
         for mu in sorted({r.mu for r in self.rows}):
             sub = [r for r in self.rows if r.mu == mu]
             fx = sub[0].fx
             lines.append("")
-            lines.append(f"mu = {mu:g}" + ("  (isotropic; no parameter)" if mu == 0 else
-                                          f"  (fx = {fx:g}, fy = {fx + mu:g})"))
+            lines.append(
+                f"mu = {mu:g}"
+                + (
+                    "  (isotropic; no parameter)"
+                    if mu == 0
+                    else f"  (fx = {fx:g}, fy = {fx + mu:g})"
+                )
+            )
             lines.append("law          boundary   numeric          printed formula  |diff|")
             for r in sub:
                 for j, name in enumerate(("I1", "I2", "I3")):
@@ -134,8 +158,10 @@ class Table2Result:
                     )
         lines.append("")
         lines.append("simulations (circle, v0 = a*omega0, theta0 = pi/4) - one per interval:")
-        lines.append("law          mu     row  I*       expected         observed         "
-                     "k = beta*/a   J^-1(I*)")
+        lines.append(
+            "law          mu     row  I*       expected         observed         "
+            "k = beta*/a   J^-1(I*)"
+        )
         for r in self.runs:
             lines.append(
                 f"{r.law:<12} {r.mu:<6g} {r.regime:<4d} {r.inertia_ratio:<8.4f} "
@@ -161,8 +187,9 @@ def _run(law_name, law, fx, mu, regime, i_star):
     tr = simulate(body, FrictionTensor(fx, fx + mu), st, g=sh.G)
     k = tr.beta_stop / sh.A
     kt = circle_terminal_ratio(law, FrictionTensor(fx, fx + mu), i_star)
-    return Table2Run(law_name, fx, mu, regime, i_star, EXPECTED[regime], tr.ending, k, kt,
-                     tr.theta_stop)
+    return Table2Run(
+        law_name, fx, mu, regime, i_star, EXPECTED[regime], tr.ending, k, kt, tr.theta_stop
+    )
 
 
 def compute(fx: float = 0.3, mu: float = 0.15, *, runs: bool = True) -> Table2Result:
@@ -185,7 +212,7 @@ def compute(fx: float = 0.3, mu: float = 0.15, *, runs: bool = True) -> Table2Re
     mu = v.in_range("mu", mu, 0.0, math.inf)
     settings = [(fx, 0.0)] + ([(fx, mu)] if mu != 0.0 else [])
     rows, sims, curves = [], [], {}
-    beta = np.geomspace(10 ** -2.5, 10 ** 2.5, 300)
+    beta = np.geomspace(10**-2.5, 10**2.5, 300)
     for f_x, m_u in settings:
         fr = FrictionTensor(f_x, f_x + m_u)
         for name, law in LAWS:
@@ -242,8 +269,9 @@ def plot(result: Table2Result):
         ] + [
             Line2D([], [], ls=":", color="0.3", lw=0.8, label="I₁, I₃ (numeric)"),
             Line2D([], [], ls="", marker="o", color="0.3", ms=4, label="I₂ (k = 1)"),
-            Line2D([], [], ls="", marker="*", color="k", ms=9,
-                   label="published: I* = 1/2 → k = 0.653"),
+            Line2D(
+                [], [], ls="", marker="*", color="k", ms=9, label="published: I* = 1/2 → k = 0.653"
+            ),
             Line2D([], [], ls="", marker="x", color="0.3", label="simulation: mixed ending"),
             Line2D([], [], ls="", marker="^", color="0.3", label="simulation: ω/v → 0"),
             Line2D([], [], ls="", marker="v", color="0.3", label="simulation: v/ω → 0"),
@@ -252,8 +280,15 @@ def plot(result: Table2Result):
     return fig
 
 
-def main(out=None, *, as_json: bool = False, fx: float = 0.3, mu: float = 0.15,
-         fmt: str = "png", stream=None) -> Table2Result:
+def main(
+    out=None,
+    *,
+    as_json: bool = False,
+    fx: float = 0.3,
+    mu: float = 0.15,
+    fmt: str = "png",
+    stream=None,
+) -> Table2Result:
     """Print Table 2 (text or JSON) and, if ``out`` is given, write table2.json and a figure."""
     if out is not None:
         sh.prepare_out(out)
