@@ -9,8 +9,9 @@ which file; outputs are written whole or not at all. Unexpected internal errors 
 message asking for a report and exit with status 3; ``--debug`` shows the traceback.
 
 Exit status: 0 success; 1 the command ran but a result did not converge (a case whose status
-is ``max_steps``, ``step_too_small`` or ``non_finite``; see :mod:`slidespin.outcomes`);
-2 bad input or a failed write; 3 internal error.
+is ``max_steps``, ``step_too_small`` or ``non_finite``, or a loaded run whose status is
+``max_steps``, ``max_phases``, ``step_too_small`` or ``no_onset``; see
+:mod:`slidespin.outcomes`); 2 bad input or a failed write; 3 internal error.
 
 Files written without an explicit path go to ``./slidespin-out/`` (:data:`DEFAULT_OUT_DIR`),
 never straight into the working directory.
@@ -27,8 +28,15 @@ import sys
 
 import numpy as np
 
-__all__ = ["main", "demo_case", "check_output_path", "check_figure_path", "write_outputs",
-           "DEFAULT_OUT_DIR", "FIGURE_FORMATS"]
+__all__ = [
+    "main",
+    "demo_case",
+    "check_output_path",
+    "check_figure_path",
+    "write_outputs",
+    "DEFAULT_OUT_DIR",
+    "FIGURE_FORMATS",
+]
 
 #: where files go when the command line gives no path (created when first needed)
 DEFAULT_OUT_DIR = "slidespin-out"
@@ -44,7 +52,11 @@ _PLUGINS = (
     ("bench", "slidespin.bench", "benchmark the compiled engine against naive approaches"),
     ("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion (CSV of t, x, y, phi)"),
     ("limit-surface", "slidespin.ls_cli", "sample and fit the limit surface of a case's body"),
-    ("animate", "slidespin.animate_cli", "write an animated GIF of a case's motion (Pillow; no ffmpeg)"),
+    (
+        "animate",
+        "slidespin.animate_cli",
+        "write an animated GIF of a case's motion (Pillow; no ffmpeg)",
+    ),
 )
 
 ISSUE_URL = "https://github.com/slidespin/slidespin/issues"
@@ -89,8 +101,7 @@ def check_output_path(path: str, what: str, *, create_parent: bool = False) -> s
         while not os.path.isdir(probe_dir):
             up = os.path.dirname(probe_dir)
             if up == probe_dir or (os.path.exists(probe_dir) and not os.path.isdir(probe_dir)):
-                raise ValueError(f"{what} = {path!r}: the directory {parent!r} cannot be "
-                                 "created")
+                raise ValueError(f"{what} = {path!r}: the directory {parent!r} cannot be created")
             probe_dir = up
     try:  # a real probe: permissions, read-only file systems, quotas
         import tempfile
@@ -111,20 +122,23 @@ def check_figure_path(path: str, what: str, *, create_parent: bool = False) -> s
     path = check_output_path(path, what, create_parent=create_parent)
     ext = os.path.splitext(path)[1].lower().lstrip(".")
     if ext not in FIGURE_FORMATS:
-        raise ValueError(f"{what} = {path!r}: unknown figure format {ext or '(no extension)'!r}; "
-                         f"valid extensions: {', '.join('.' + f for f in FIGURE_FORMATS)}")
+        raise ValueError(
+            f"{what} = {path!r}: unknown figure format {ext or '(no extension)'!r}; "
+            f"valid extensions: {', '.join('.' + f for f in FIGURE_FORMATS)}"
+        )
     return path
 
 
 def _distinct(*pairs) -> None:
     """Refuse two outputs that are the same file."""
-    seen = {}
+    seen: dict[str, str] = {}
     for path, what in pairs:
         if path:
             key = os.path.realpath(path)
             if key in seen:
-                raise ValueError(f"{what} = {path!r} is the same file as {seen[key]}; give "
-                                 "different paths")
+                raise ValueError(
+                    f"{what} = {path!r} is the same file as {seen[key]}; give different paths"
+                )
             seen[key] = what
 
 
@@ -228,8 +242,13 @@ def _run_case(case, args) -> int:
         return _run_loaded_case(case, args)
     # the same recorded points whatever the outputs asked for (CSV rows never depend on --plot)
     traj = simulate(
-        case.body, case.friction, case.initial_state, g=case.g, rtol=case.rtol,
-        max_steps=case.max_steps, max_step=CLI_MAX_STEP,
+        case.body,
+        case.friction,
+        case.initial_state,
+        g=case.g,
+        rtol=case.rtol,
+        max_steps=case.max_steps,
+        max_step=CLI_MAX_STEP,
     )
     files = []
     if args.csv:
@@ -255,24 +274,91 @@ def _run_loaded_case(case, args) -> int:
     """A case with ``[load]``, ``[incline]`` or ``[solver] t_end``: the stick-slip engine."""
     from .simulate import simulate
 
-    if args.plot:
-        raise ValueError("--plot is not available for cases with [load], [incline] or t_end "
-                         "yet; valid: --json, --csv")
-    traj = simulate(case.body, case.friction, case.initial_state, g=case.g, rtol=case.rtol,
-                    max_steps=case.max_steps, load=case.load, incline=case.incline,
-                    t_end=case.t_end)
+    traj = simulate(
+        case.body,
+        case.friction,
+        case.initial_state,
+        g=case.g,
+        rtol=case.rtol,
+        max_steps=case.max_steps,
+        load=case.load,
+        incline=case.incline,
+        t_end=case.t_end,
+    )
+    summary = _loaded_summary(traj)
+    files = []
     if args.csv:
-        write_outputs([(args.csv, traj.to_csv().encode("utf-8"))])
-    summary = traj.summary()
+        files.append((args.csv, traj.to_csv().encode("utf-8")))
+    if args.plot:
+        from .plotting import plot_loaded_trajectory
+
+        fig = plot_loaded_trajectory(traj, title=case.name or None)
+        files.append((args.plot, _render_figure(fig, args.plot)))
+    write_outputs(files)
     if args.json:
         print(json.dumps(summary, indent=2))
     else:
-        print(f"case        : {case.name or '(unnamed)'}")
-        for key, value in summary.items():
-            print(f"{key:<12}: {value}")
+        _print_loaded_summary(case, traj, summary, sys.stdout)
         if args.csv:
             print(f"trajectory  : {args.csv}  ({traj.t.size} rows)")
-    return 0 if traj.status == "ok" else 1
+        if args.plot:
+            print(f"figure      : {args.plot}")
+    return _loaded_exit_status(traj.status)
+
+
+def _loaded_summary(traj) -> dict:
+    """``LoadedTrajectory.summary()`` with the vocabulary's explanations of its status and
+    ending (:mod:`slidespin.outcomes`); a name outside the vocabulary is an internal error."""
+    from .outcomes import ending_message, status_message
+
+    summary = dict(traj.summary())
+    try:
+        summary["status_message"] = status_message(summary["status"], loaded=True)
+        summary["ending_message"] = ending_message(summary["ending"], loaded=True)
+    except ValueError as exc:  # a bug in the engine, not bad input (exit status 3)
+        raise RuntimeError(f"the loaded run reported an unknown outcome: {exc}") from None
+    return summary
+
+
+def _print_loaded_summary(case, traj, summary: dict, out) -> None:
+    def num(x, unit: str) -> str:
+        return "undefined" if x is None else f"{x:.10g} {unit}"
+
+    lines = [
+        f"case        : {case.name or '(unnamed)'}",
+        f"status      : {summary['status']}  ({summary['status_message']})",
+    ]
+    if summary.get("message"):
+        lines.append(f"              {summary['message']}")
+    lines += [
+        f"ending      : {summary['ending']}  ({summary['ending_message']})",
+        f"end time    : {num(summary['t_final'], 's')}",
+        f"stop time   : {num(summary['t_stop'], 's')}",
+        f"position    : x = {summary['x_final']:.6g} m, y = {summary['y_final']:.6g} m, "
+        f"phi = {summary['phi_final']:.6g} rad",
+        f"velocity    : vx = {summary['vx_final']:.6g} m/s, vy = {summary['vy_final']:.6g} m/s, "
+        f"omega = {summary['omega_final']:.6g} rad/s",
+        f"phases      : {_phases_text(traj.phases)}",
+        f"energy error: {summary['energy_error']:.3g} J",
+    ]
+    if traj.incline is not None:
+        lines.append(f"gravity work: {summary['gravity_work']:.10g} J")
+    print("\n".join(lines), file=out)
+
+
+def _phases_text(phases, limit: int = 6) -> str:
+    """``stick 0-0.475 s, slip 0.475-2.06 s, ...`` (the first ``limit`` phases)."""
+    parts = [f"{kind} {a:.6g}-{b:.6g} s" for kind, a, b in phases[:limit]]
+    if len(phases) > limit:
+        parts.append(f"... ({len(phases)} phases; all in --json)")
+    return ", ".join(parts) or "none"
+
+
+def _loaded_exit_status(status: str) -> int:
+    """0 for a loaded run that reached its end, 1 for one that ended early."""
+    from .outcomes import LOADED_UNCONVERGED
+
+    return 1 if status in LOADED_UNCONVERGED else 0
 
 
 def _cmd_demo(args) -> int:
@@ -302,8 +388,13 @@ def _cmd_sweep(args) -> int:
     if args.scheduler or args.workers:
         client = connect_dask(args.scheduler, args.workers)
     try:
-        res = sweep(spec, args.out, executor=client, resume=args.resume,
-                    progress=False if args.quiet else None)
+        res = sweep(
+            spec,
+            args.out,
+            executor=client,
+            resume=args.resume,
+            progress=False if args.quiet else None,
+        )
     finally:
         if client is not None:
             cluster = getattr(client, "cluster", None)
@@ -312,8 +403,10 @@ def _cmd_sweep(args) -> int:
                 cluster.close()
     if not args.quiet:
         print(f"sweep       : {spec.name or args.spec}")
-        print(f"cases       : {res.n_cases} in {res.n_chunks} chunks "
-              f"({res.chunks_computed} computed now)")
+        print(
+            f"cases       : {res.n_cases} in {res.n_chunks} chunks "
+            f"({res.chunks_computed} computed now)"
+        )
         if res.chunks_repaired:
             print(f"repaired    : {res.chunks_repaired} damaged chunk files computed again")
         if res.cases_computed:
@@ -322,9 +415,12 @@ def _cmd_sweep(args) -> int:
         print(f"endings     : {_counts_text(res.ending_counts)}")
         print(f"results     : {res.out}")
     if res.n_unconverged:
-        print(f"slidespin: warning: {res.n_unconverged} of {res.n_cases} cases did not converge "
-              f"({_unconverged_text(res.status_counts)}); sweep-read and sweep-plot leave them "
-              "out unless --include-unconverged", file=sys.stderr)
+        print(
+            f"slidespin: warning: {res.n_unconverged} of {res.n_cases} cases did not converge "
+            f"({_unconverged_text(res.status_counts)}); sweep-read and sweep-plot leave them "
+            "out unless --include-unconverged",
+            file=sys.stderr,
+        )
         return 1
     return 0
 
@@ -376,8 +472,10 @@ def _cmd_sweep_read(args) -> int:
         raise ValueError(_write_failure(exc, args.csv)) from None
     note = ""
     if left:
-        note = (f"; {sum(left.values())} unconverged cases left out ({_counts_text(left)}): "
-                "--include-unconverged keeps them")
+        note = (
+            f"; {sum(left.values())} unconverged cases left out ({_counts_text(left)}): "
+            "--include-unconverged keeps them"
+        )
     print(f"{n} cases -> {args.csv}{note}")
     return 0
 
@@ -408,39 +506,59 @@ def _cmd_sweep_plot(args) -> int:
     man = _read_manifest(Path(args.dir)) or {}
     spec = man.get("spec", {}) if isinstance(man.get("spec"), dict) else {}
     varied = list(spec.get("vary", {})) if isinstance(spec.get("vary", {}), dict) else None
-    fig = plot_sweep(table, args.x, args.value, args.y, varied=varied,
-                     include_unconverged=args.include_unconverged,
-                     kind=spec.get("kind", "grid"))
+    fig = plot_sweep(
+        table,
+        args.x,
+        args.value,
+        args.y,
+        varied=varied,
+        include_unconverged=args.include_unconverged,
+        kind=spec.get("kind", "grid"),
+    )
     write_outputs([(out, _render_figure(fig, out))])
     print(f"figure      : {out}")
     if left:
-        print(f"left out    : {sum(left.values())} unconverged cases ({_counts_text(left)}); "
-              "--include-unconverged keeps them")
+        print(
+            f"left out    : {sum(left.values())} unconverged cases ({_counts_text(left)}); "
+            "--include-unconverged keeps them"
+        )
     return 0
 
 
 def _add_outputs(p, default_plot=None) -> None:
     p.add_argument("--json", action="store_true", help="print the stop summary as JSON")
-    p.add_argument("--plot", metavar="OUT.png", default=default_plot,
-                   help="write a figure of the motion (format from the extension: "
-                   + ", ".join(FIGURE_FORMATS) + ")")
-    p.add_argument("--csv", metavar="OUT.csv",
-                   help="write the trajectory as CSV (about 1000 rows; the same with or "
-                   "without --plot)")
+    p.add_argument(
+        "--plot",
+        metavar="OUT.png",
+        default=default_plot,
+        help="write a figure of the motion (format from the extension: "
+        + ", ".join(FIGURE_FORMATS)
+        + ")",
+    )
+    p.add_argument(
+        "--csv",
+        metavar="OUT.csv",
+        help="write the trajectory as CSV (about 1000 rows; the same with or without --plot)",
+    )
 
 
 def _add_include(p) -> None:
-    p.add_argument("--include-unconverged", action="store_true",
-                   help="keep the cases that did not converge (status max_steps, "
-                   "step_too_small, non_finite: values as reached); left out by default")
+    p.add_argument(
+        "--include-unconverged",
+        action="store_true",
+        help="keep the cases that did not converge (status max_steps, "
+        "step_too_small, non_finite: values as reached); left out by default",
+    )
 
 
 class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors (exit status 2), like every other slidespin error."""
 
     def error(self, message):
-        print(f"slidespin: error: {self.prog.split()[-1]}: {message} "
-              f"(see '{self.prog} --help')", file=sys.stderr)
+        print(
+            f"slidespin: error: {self.prog.split()[-1]}: {message} (see '{self.prog} --help')",
+            file=sys.stderr,
+        )
         sys.exit(2)
 
 
@@ -460,8 +578,10 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("demo", help="simulate the demo case, print the stop, draw a figure")
     _add_outputs(p)
     p.set_defaults(func=_cmd_demo)
-    p.epilog = (f"The figure goes to {DEFAULT_OUT_DIR}/demo.png unless --plot says otherwise. "
-                "Exit status: 0 stopped, 1 not converged, 2 bad input, 3 internal error.")
+    p.epilog = (
+        f"The figure goes to {DEFAULT_OUT_DIR}/demo.png unless --plot says otherwise. "
+        "Exit status: 0 stopped, 1 not converged, 2 bad input, 3 internal error."
+    )
 
     p = sub.add_parser("simulate", help="simulate a case described in a TOML file")
     p.add_argument("case", metavar="CASE.toml", help="case file (see examples/)")
@@ -469,19 +589,30 @@ def build_parser() -> argparse.ArgumentParser:
     p.set_defaults(func=_cmd_simulate)
 
     p = sub.add_parser("sweep", help="run a parameter sweep (locally or on a Dask cluster)")
-    p.add_argument("spec", metavar="SPEC.toml", help="sweep specification (see examples/sweep_*.toml)")
+    p.add_argument(
+        "spec", metavar="SPEC.toml", help="sweep specification (see examples/sweep_*.toml)"
+    )
     p.add_argument("--out", required=True, metavar="DIR", help="result directory")
-    p.add_argument("--scheduler", metavar="ADDRESS",
-                   help="Dask scheduler, e.g. tcp://HOST:8786 (default: local cores)")
-    p.add_argument("--workers", type=int, metavar="N",
-                   help="start a local Dask cluster with N worker processes")
+    p.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="Dask scheduler, e.g. tcp://HOST:8786 (default: local cores)",
+    )
+    p.add_argument(
+        "--workers",
+        type=int,
+        metavar="N",
+        help="start a local Dask cluster with N worker processes",
+    )
     p.add_argument("--resume", action="store_true", help="finish an interrupted sweep")
     p.add_argument("--quiet", action="store_true", help="no progress bar, no summary")
     p.set_defaults(func=_cmd_sweep)
-    p.epilog = ("The summary counts the cases per status and per ending (also in "
-                "DIR/manifest.json). Exit status 1 if some cases did not converge "
-                "(max_steps, step_too_small, non_finite), 2 on bad input, a busy directory "
-                "(DIR/.lock) or a failed write (the sweep can then be finished with --resume).")
+    p.epilog = (
+        "The summary counts the cases per status and per ending (also in "
+        "DIR/manifest.json). Exit status 1 if some cases did not converge "
+        "(max_steps, step_too_small, non_finite), 2 on bad input, a busy directory "
+        "(DIR/.lock) or a failed write (the sweep can then be finished with --resume)."
+    )
 
     p = sub.add_parser("sweep-read", help="gather a sweep's results into one CSV table")
     p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
@@ -493,12 +624,17 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--x", required=True, help="input column for the x axis, e.g. fx")
     p.add_argument("--y", help="input column for the y axis (heat map), e.g. I_star")
-    p.add_argument("--value", default="beta_stop",
-                   help="result column shown (default beta_stop); ending and status are drawn "
-                   "as categories")
-    p.add_argument("--out", default=None, metavar="OUT.png",
-                   help=f"figure file (default {DEFAULT_OUT_DIR}/sweep.png; format from the "
-                   "extension)")
+    p.add_argument(
+        "--value",
+        default="beta_stop",
+        help="result column shown (default beta_stop); ending and status are drawn as categories",
+    )
+    p.add_argument(
+        "--out",
+        default=None,
+        metavar="OUT.png",
+        help=f"figure file (default {DEFAULT_OUT_DIR}/sweep.png; format from the extension)",
+    )
     _add_include(p)
     p.set_defaults(func=_cmd_sweep_plot)
 
