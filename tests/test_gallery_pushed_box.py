@@ -19,8 +19,15 @@ G = 9.81
 def run(name: str, label: str, tmp_path) -> float:
     """Run a gallery script in a fresh interpreter; return the number printed after label."""
     env = dict(os.environ, MPLBACKEND="Agg")
-    proc = subprocess.run([sys.executable, str(GALLERY / name)], cwd=tmp_path, env=env,
-                          capture_output=True, text=True, timeout=600, check=False)
+    proc = subprocess.run(
+        [sys.executable, str(GALLERY / name)],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        check=False,
+    )
     assert proc.returncode == 0, proc.stderr[-3000:]
     m = re.search(r"^" + re.escape(label) + r" = ([-+0-9.eE]+)", proc.stdout, re.MULTILINE)
     assert m, f"{name} printed no '{label} = <number>':\n{proc.stdout}"

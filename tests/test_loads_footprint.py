@@ -13,6 +13,9 @@ import math
 
 import numpy as np
 import pytest
+from scipy.integrate import quad_vec
+
+import slidespin as ss
 from footprint_reference import (
     _breaks,
     _ray_intervals,
@@ -21,9 +24,6 @@ from footprint_reference import (
     reference_wrench,
     regions_of,
 )
-from scipy.integrate import quad_vec
-
-import slidespin as ss
 from slidespin import statics
 from slidespin.footprint import Annulus, Disk, Pads, Polygon, Rectangle
 from slidespin.limit_surface import limit_surface
@@ -40,22 +40,29 @@ ORTHO = ss.FrictionTensor(0.3, 0.5)
 # ------------------------------------------------------------------------------------------
 # a block on a slope: holds for tan α ≤ μ, slides with a = g (sin α − μ cos α)
 # ------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("friction, downhill, mu", [
-    (ISO, 0.0, MU), (ISO, 2.0, MU),
-    (ORTHO, 0.0, 0.3), (ORTHO, math.pi / 2, 0.5),  # the slope along a principal axis
-])
+@pytest.mark.parametrize(
+    "friction, downhill, mu",
+    [
+        (ISO, 0.0, MU),
+        (ISO, 2.0, MU),
+        (ORTHO, 0.0, 0.3),
+        (ORTHO, math.pi / 2, 0.5),  # the slope along a principal axis
+    ],
+)
 def test_block_on_slope(friction, downhill, mu):
     phi = 0.7  # the block turned on the slope: a plane-fixed tensor, a centred pressure
     assert statics.critical_tilt(BOX, friction, downhill, phi) == pytest.approx(
-        math.atan(mu), abs=1e-12)
+        math.atan(mu), abs=1e-12
+    )
     below = Incline(math.atan(mu) - 1e-9, downhill)
     tr = simulate_loaded(BOX, friction, ss.State(phi=phi), incline=below, t_end=0.5)
     assert tr.ending == "at_rest_throughout"
     assert (tr.x[-1], tr.y[-1], tr.phi[-1]) == (0.0, 0.0, phi)
     alpha = math.atan(mu) + 0.1
     t_end = 0.8
-    tr = simulate_loaded(BOX, friction, ss.State(phi=phi), incline=Incline(alpha, downhill),
-                         t_end=t_end)
+    tr = simulate_loaded(
+        BOX, friction, ss.State(phi=phi), incline=Incline(alpha, downhill), t_end=t_end
+    )
     dist = 0.5 * G * (math.sin(alpha) - mu * math.cos(alpha)) * t_end**2
     assert tr.ending == "moving_at_t_end"
     assert tr.x[-1] == pytest.approx(dist * math.cos(downhill), abs=1e-9 * dist)
@@ -77,10 +84,13 @@ def _ring_torque(r_in, r_out, m, g=G):
     return 2.0 / 3.0 * MU * m * g * (r_out**3 - r_in**3) / (r_out**2 - r_in**2)
 
 
-@pytest.mark.parametrize("patch, t_c", [
-    (Disk(0.1), _ring_torque(0.0, 0.1, 2.0)),
-    (Annulus(0.06, 0.1), _ring_torque(0.06, 0.1, 2.0)),
-])
+@pytest.mark.parametrize(
+    "patch, t_c",
+    [
+        (Disk(0.1), _ring_torque(0.0, 0.1, 2.0)),
+        (Annulus(0.06, 0.1), _ring_torque(0.06, 0.1, 2.0)),
+    ],
+)
 def test_torque_threshold(patch, t_c):
     body = ss.Body(patch, ss.UniformPressure(), mass=2.0)
     assert statics.load_factor(body, ISO, (0.0, 0.0, 1.0)) == pytest.approx(t_c, rel=1e-12)
@@ -128,8 +138,13 @@ def test_limit_surface_disk_footprint_equals_circle(friction):
     fp = limit_surface(ss.Body(Disk(r), ss.UniformPressure(), m), friction, n=80, phi=0.5)
     el = limit_surface(ss.Body(ss.Circle(r), ss.UniformPressure(), m), friction, n=80, phi=0.5)
     p = m * G
-    for name, scale in (("force_x", p), ("force_y", p), ("moment", p * r),
-                        ("support", p), ("dissipation_gap", p)):
+    for name, scale in (
+        ("force_x", p),
+        ("force_y", p),
+        ("moment", p * r),
+        ("support", p),
+        ("dissipation_gap", p),
+    ):
         assert np.max(np.abs(getattr(fp, name) - getattr(el, name))) < 1e-9 * scale, name
     assert fp.length == pytest.approx(el.length, rel=1e-14)
 
@@ -141,16 +156,18 @@ def test_limit_surface_of_a_polygon_equals_its_wrenches():
     body = ss.Body(POLY, ss.LinearPressure(0.08, 0.035), mass=0.7)
     fr = ss.FrictionTensor(0.3, 0.4, 0.05)
     ls = limit_surface(body, fr, n=40, phi=0.2)
-    w = ss.footprint_wrench(POLY, ss.LinearPressure(0.08, 0.035), fr, ls.vx, ls.vy, ls.omega,
-                            0.2, load=0.7 * G)
+    w = ss.footprint_wrench(
+        POLY, ss.LinearPressure(0.08, 0.035), fr, ls.vx, ls.vy, ls.omega, 0.2, load=0.7 * G
+    )
     assert np.array_equal(ls.force_x, w.force_x)
     assert np.array_equal(ls.moment, w.moment)
     # and the independent reference, for a few of the twists
     p = 0.7 * G
     ext = POLY.extent
     for i in (0, 7, 19, 33):
-        ref = reference_wrench(POLY, ("linear", 0.08, 0.035), fr.matrix, ls.vx[i], ls.vy[i],
-                               ls.omega[i], 0.2, load=p)
+        ref = reference_wrench(
+            POLY, ("linear", 0.08, 0.035), fr.matrix, ls.vx[i], ls.vy[i], ls.omega[i], 0.2, load=p
+        )
         assert abs(ls.force_x[i] - ref[0]) < 1e-9 * p
         assert abs(ls.force_y[i] - ref[1]) < 1e-9 * p
         assert abs(ls.moment[i] - ref[2]) < 1e-9 * p * ext
@@ -189,22 +206,43 @@ def reference_support(footprint, law, friction, d, phi, load):
             k2 += pr.sum()
             k3 += pr @ ((pts - (gx, gy)) @ rot.T)  # ∫ p r′
         tz = fw @ zhat
-        return np.array([abs(d_m) * np.linalg.norm(sje) * k1, k2 * tz[0], k2 * tz[1],
-                         k3[0] * tz[1] - k3[1] * tz[0]])
+        return np.array(
+            [
+                abs(d_m) * np.linalg.norm(sje) * k1,
+                k2 * tz[0],
+                k2 * tz[1],
+                k3[0] * tz[1] - k3[1] * tz[0],
+            ]
+        )
 
     br = np.sort(np.mod(_breaks(regions, r0), 2 * np.pi))
-    res, _ = quad_vec(integrand, br[0], br[0] + 2 * np.pi,
-                      points=[b for b in br if br[0] < b < br[0] + 2 * np.pi],
-                      epsabs=1e-14 * load, epsrel=1e-13, norm="max", limit=20000)
+    res, _ = quad_vec(
+        integrand,
+        br[0],
+        br[0] + 2 * np.pi,
+        points=[b for b in br if br[0] < b < br[0] + 2 * np.pi],
+        epsabs=1e-14 * load,
+        epsrel=1e-13,
+        norm="max",
+        limit=20000,
+    )
     return res[0], res[1:]
 
 
 SUPPORT_CASES = [
     (Rectangle(0.4, 0.3), ss.LinearPressure(0.02, -0.01), ss.FrictionTensor(0.3, 0.5, 0.1)),
-    (Annulus(0.03, 0.1, centre=(0.01, 0.0)), ss.LinearPressure(0.015, 0.005),
-     ss.FrictionTensor(0.2, 0.6, -0.15, "body", 0.4)),
-    (Pads([Rectangle(0.1, 0.05, centre=(-0.15, 0.0), angle=0.3), Disk(0.04, centre=(0.12, 0.05))]),
-     ss.UniformPressure(), ss.FrictionTensor(0.5, 0.25, 0.0, "plane", 1.0)),
+    (
+        Annulus(0.03, 0.1, centre=(0.01, 0.0)),
+        ss.LinearPressure(0.015, 0.005),
+        ss.FrictionTensor(0.2, 0.6, -0.15, "body", 0.4),
+    ),
+    (
+        Pads(
+            [Rectangle(0.1, 0.05, centre=(-0.15, 0.0), angle=0.3), Disk(0.04, centre=(0.12, 0.05))]
+        ),
+        ss.UniformPressure(),
+        ss.FrictionTensor(0.5, 0.25, 0.0, "plane", 1.0),
+    ),
 ]
 
 
@@ -303,8 +341,9 @@ def test_ramped_push_below_threshold_holds():
 
 def test_off_centre_ramped_push_energy_balance():
     # a push off G turns the box as it slides; ΔKE = W_loads + W_friction along the way
-    push = Load.piecewise_linear([0.0, 1.0, 1.5, 1.6], [0.0, 30.0, 30.0, 0.0], [0.0] * 4,
-                                 at=(0.1, 0.12))
+    push = Load.piecewise_linear(
+        [0.0, 1.0, 1.5, 1.6], [0.0, 30.0, 30.0, 0.0], [0.0] * 4, at=(0.1, 0.12)
+    )
     tr = simulate_loaded(BOX, ISO, ss.State(), load=push, t_end=3.0)
     assert [k for k, _, _ in tr.phases] == ["stick", "slip", "stick"]
     assert abs(tr.phi[-1]) > 1e-3  # it turned
@@ -341,10 +380,12 @@ def test_onset_of_an_off_centre_push_is_normal_to_the_limit_surface():
     basis = np.linalg.svd(tw.reshape(1, 3))[2][1:]
     eps = 1e-4 * np.linalg.norm(tw)
     for b in basis:
-        wp = np.array(reference_wrench(BOX.patch, law, ISO.matrix, *(tw + eps * b), phi,
-                                       load=p_load))
-        wm = np.array(reference_wrench(BOX.patch, law, ISO.matrix, *(tw - eps * b), phi,
-                                       load=p_load))
+        wp = np.array(
+            reference_wrench(BOX.patch, law, ISO.matrix, *(tw + eps * b), phi, load=p_load)
+        )
+        wm = np.array(
+            reference_wrench(BOX.patch, law, ISO.matrix, *(tw - eps * b), phi, load=p_load)
+        )
         tangent = (wp - wm) / (2 * eps)
         assert abs(tangent @ tw) < 1e-6 * np.linalg.norm(tangent) * np.linalg.norm(tw)
     # beyond the threshold, the onset law M⁻¹(W_a + W(u)) = λ u with the reference wrench
@@ -353,8 +394,13 @@ def test_onset_of_an_off_centre_push_is_normal_to_the_limit_surface():
     tw = _twist(BOX, o.direction)
     ref = np.array(reference_wrench(BOX.patch, law, ISO.matrix, *tw, phi, load=p_load))
     k = BOX.radius_of_gyration
-    acc = np.array([(w_b[0] + ref[0]) / BOX.mass, (w_b[1] + ref[1]) / BOX.mass,
-                    (w_b[2] + ref[2]) / (BOX.mass * k)])
+    acc = np.array(
+        [
+            (w_b[0] + ref[0]) / BOX.mass,
+            (w_b[1] + ref[1]) / BOX.mass,
+            (w_b[2] + ref[2]) / (BOX.mass * k),
+        ]
+    )
     assert np.allclose(acc, o.acceleration * o.direction, atol=1e-8 * G)
 
 

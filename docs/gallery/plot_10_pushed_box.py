@@ -24,8 +24,9 @@ from slidespin.loaded import simulate_loaded
 # the repository's examples/ folder (this script lives in docs/gallery/)
 EXAMPLES = Path(ss.__file__).resolve().parents[2] / "examples"
 case = load_case(EXAMPLES / "pushed_box.toml")
-tr = simulate_loaded(case.body, case.friction, case.initial_state, load=case.load,
-                     t_end=case.t_end, max_step=0.5)
+tr = simulate_loaded(
+    case.body, case.friction, case.initial_state, load=case.load, t_end=case.t_end, max_step=0.5
+)
 for kind, t0, t1 in tr.phases:
     print(f"{kind:5s} {t0:.4f} - {t1:.4f} s")
 print(f"distance {tr.x[-1]:.4f} m, energy error {tr.energy_error:.1e} J")
@@ -37,8 +38,9 @@ fig, ax = plt.subplots(figsize=(6.4, 3.8))
 tt = np.linspace(0.0, tr.t[-1], 501)
 push = np.array([case.load.force_at(x)[0] for x in tt])
 mg = case.body.mass * case.g
-friction = np.where(np.array([any(a < x < b for a, b in tr.slip_intervals) for x in tt]),
-                    -0.35 * mg, -push)
+friction = np.where(
+    np.array([any(a < x < b for a, b in tr.slip_intervals) for x in tt]), -0.35 * mg, -push
+)
 ax.plot(tt, push / 10.0, "k:", label="push / 10 N")
 ax.plot(tt, friction / 10.0, "C2--", label="friction / 10 N")
 ax.plot(tr.t, tr.speed, "C0", label="speed of G [m/s]")

@@ -46,16 +46,34 @@ class TwistWrench:
         self.k = float(par[_ode.P_K])
         self.footprint = bool(par[_ode.P_SHAPE] == _ode.SHAPE_FOOTPRINT)
         p = par
+        self._args: tuple
         if self.footprint:
-            self._args = (fe, fc, geo, p[_ode.P_T00], p[_ode.P_T01], p[_ode.P_T10],
-                          p[_ode.P_T11], p[_ode.P_BODY] != 0.0)
+            self._args = (
+                fe,
+                fc,
+                geo,
+                p[_ode.P_T00],
+                p[_ode.P_T01],
+                p[_ode.P_T10],
+                p[_ode.P_T11],
+                p[_ode.P_BODY] != 0.0,
+            )
         else:
-            self._args = (p[_ode.P_BN], int(p[_ode.P_LAW]), p[_ode.P_XG], p[_ode.P_YG],
-                          p[_ode.P_T00], p[_ode.P_T01], p[_ode.P_T10], p[_ode.P_T11],
-                          p[_ode.P_BODY] != 0.0)
+            self._args = (
+                p[_ode.P_BN],
+                int(p[_ode.P_LAW]),
+                p[_ode.P_XG],
+                p[_ode.P_YG],
+                p[_ode.P_T00],
+                p[_ode.P_T01],
+                p[_ode.P_T10],
+                p[_ode.P_T11],
+                p[_ode.P_BODY] != 0.0,
+            )
 
-    def __call__(self, phi: float, vx: float, vy: float, omega: float
-                 ) -> tuple[float, float, float]:
+    def __call__(
+        self, phi: float, vx: float, vy: float, omega: float
+    ) -> tuple[float, float, float]:
         """(Fx, Fy, M about G) per unit load (M per unit load × ℓ) of the twist (vx, vy, ω)
         [ℓ/time, ℓ/time, 1/time] at body angle ``phi`` [rad]; only its direction matters.
 

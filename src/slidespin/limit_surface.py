@@ -8,6 +8,10 @@ twist is normal to it (maximum dissipation: −W(û)·û = h(û), the support fu
 an anisotropic tensor τ = −p 𝔽 ŵ is not of maximum dissipation and L may lie inside C;
 ``dissipation_gap`` = h(û) − (−W(û)·û) ≥ 0 reports by how much.
 
+Every patch: the paper's ellipses and circles and the footprints of MODEL §10 (the samples
+are :func:`slidespin.friction_wrench`'s exact wrenches; the support h of
+:func:`slidespin.statics.static_support`).
+
 Fits used in planar pushing, in the normalised wrench w = (Fx/P, Fy/P, M/(P ℓ)):
 
 * ellipsoid  wᵀ A w = 1, A symmetric (6 coefficients; Lee & Cutkosky 1991, Howe & Cutkosky
@@ -48,9 +52,7 @@ MAX_DIRECTIONS = 100_000
 MAX_QUARTIC_DIRECTIONS = 1_000
 
 #: exponents (i, j, k) of the 15 monomials w₁ⁱ w₂ʲ w₃ᵏ of the quartic, in this order
-QUARTIC_EXPONENTS = tuple(
-    (i, j, 4 - i - j) for i in range(4, -1, -1) for j in range(4 - i, -1, -1)
-)
+QUARTIC_EXPONENTS = tuple((i, j, 4 - i - j) for i in range(4, -1, -1) for j in range(4 - i, -1, -1))
 
 
 def sphere_directions(n: int) -> np.ndarray:
@@ -63,8 +65,9 @@ def sphere_directions(n: int) -> np.ndarray:
 
 
 def _quartic_features(w):
-    return np.column_stack([w[:, 0] ** i * w[:, 1] ** j * w[:, 2] ** k
-                            for i, j, k in QUARTIC_EXPONENTS])
+    return np.column_stack(
+        [w[:, 0] ** i * w[:, 1] ** j * w[:, 2] ** k for i, j, k in QUARTIC_EXPONENTS]
+    )
 
 
 def _quartic_value_grad(coef, w):
@@ -140,8 +143,8 @@ class LimitSurface:
     quartic_error: float
     quartic_normal_error: float
     phi: float = 0.0
-    body: Body = field(default=None, repr=False)
-    friction: FrictionTensor = field(default=None, repr=False)
+    body: Body | None = field(default=None, repr=False)
+    friction: FrictionTensor | None = field(default=None, repr=False)
 
     @property
     def twists(self) -> np.ndarray:
@@ -177,8 +180,16 @@ class LimitSurface:
         """Write (or return) the summary, with the samples unless ``samples=False``."""
         d = self.summary()
         if samples:
-            for name in ("vx", "vy", "omega", "force_x", "force_y", "moment", "support",
-                         "dissipation_gap"):
+            for name in (
+                "vx",
+                "vy",
+                "omega",
+                "force_x",
+                "force_y",
+                "moment",
+                "support",
+                "dissipation_gap",
+            ):
                 d[name] = getattr(self, name).tolist()
         text = json.dumps(d, indent=2)
         if path is not None:
@@ -189,11 +200,19 @@ class LimitSurface:
     def arrays(self) -> dict:
         """Every array and the fits, as written by :meth:`to_npz`."""
         return {
-            "vx": self.vx, "vy": self.vy, "omega": self.omega, "force_x": self.force_x,
-            "force_y": self.force_y, "moment": self.moment, "support": self.support,
-            "dissipation_gap": self.dissipation_gap, "length": self.length,
-            "normal_load": self.normal_load, "ellipsoid": self.ellipsoid,
-            "quartic": self.quartic, "quartic_exponents": np.array(QUARTIC_EXPONENTS),
+            "vx": self.vx,
+            "vy": self.vy,
+            "omega": self.omega,
+            "force_x": self.force_x,
+            "force_y": self.force_y,
+            "moment": self.moment,
+            "support": self.support,
+            "dissipation_gap": self.dissipation_gap,
+            "length": self.length,
+            "normal_load": self.normal_load,
+            "ellipsoid": self.ellipsoid,
+            "quartic": self.quartic,
+            "quartic_exponents": np.array(QUARTIC_EXPONENTS),
         }
 
     def to_npz(self, path) -> None:
@@ -211,8 +230,15 @@ class LimitSurface:
             fig = plt.figure(figsize=(6.4, 5.6))
             ax = fig.add_subplot(projection="3d")
         w = self.wrenches
-        sc = ax.scatter(w[:, 0], w[:, 1], w[:, 2], c=self.length * self.omega, cmap="coolwarm",
-                        s=8, depthshade=False)
+        sc = ax.scatter(
+            w[:, 0],
+            w[:, 1],
+            w[:, 2],
+            c=self.length * self.omega,
+            cmap="coolwarm",
+            s=8,
+            depthshade=False,
+        )
         # the fitted ellipsoid wᵀAw = 1 as a wireframe
         vals, vecs = np.linalg.eigh(self.ellipsoid)
         if np.all(vals > 0):
@@ -223,16 +249,26 @@ class LimitSurface:
         ax.set_xlabel("$F_x/P$")
         ax.set_ylabel("$F_y/P$")
         ax.set_zlabel(f"$M/(P\\ell)$, ℓ = {self.length:g} m")
-        ax.set_title(f"limit surface (ellipsoid error {self.ellipsoid_error:.2%}, "
-                     f"quartic {self.quartic_error:.2%})", fontsize=9)
+        ax.set_title(
+            f"limit surface (ellipsoid error {self.ellipsoid_error:.2%}, "
+            f"quartic {self.quartic_error:.2%})",
+            fontsize=9,
+        )
         ax.figure.colorbar(sc, ax=ax, shrink=0.6, label="ℓω of the twist")
         return ax
 
 
-def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float = 0.0,
-                  g: float = 9.81, *, length: float | None = None,
-                  incline: Incline | None = None, quartic_directions: int = 200
-                  ) -> LimitSurface:
+def limit_surface(
+    body: Body,
+    friction: FrictionTensor,
+    n: int = 400,
+    phi: float = 0.0,
+    g: float = 9.81,
+    *,
+    length: float | None = None,
+    incline: Incline | None = None,
+    quartic_directions: int = 200,
+) -> LimitSurface:
     """Sample the limit surface of ``body`` and fit an ellipsoid and a convex quartic.
 
     Parameters
@@ -267,20 +303,22 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
     """
     check_body_friction(body, friction)
     check_anisotropy(body, friction, "limit_surface")
-    if (isinstance(n, bool) or not isinstance(n, (int, np.integer))
-            or not 10 <= n <= MAX_DIRECTIONS):
-        raise ValueError(f"n = {_short(n)} is invalid; valid range: integer in "
-                         f"[10, {MAX_DIRECTIONS}]")
-    if (isinstance(quartic_directions, bool)
-            or not isinstance(quartic_directions, (int, np.integer))
-            or not 6 <= quartic_directions <= MAX_QUARTIC_DIRECTIONS):
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 10 <= n <= MAX_DIRECTIONS:
+        raise ValueError(
+            f"n = {_short(n)} is invalid; valid range: integer in [10, {MAX_DIRECTIONS}]"
+        )
+    if (
+        isinstance(quartic_directions, bool)
+        or not isinstance(quartic_directions, (int, np.integer))
+        or not 6 <= quartic_directions <= MAX_QUARTIC_DIRECTIONS
+    ):
         raise ValueError(
             f"quartic_directions = {_short(quartic_directions)} is invalid; valid range: "
-            f"integer in [6, {MAX_QUARTIC_DIRECTIONS}]")
+            f"integer in [6, {MAX_QUARTIC_DIRECTIONS}]"
+        )
     phi = v.finite("phi", phi)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    ell = (body.radius_of_gyration if length is None
-           else v.bounded("length", length, *v.LENGTH, "m"))
+    ell = body.radius_of_gyration if length is None else v.bounded("length", length, *v.LENGTH, "m")
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(f"incline = {incline!r} is invalid; valid values: an Incline or None")
     nf = 1.0 if incline is None else incline.normal_factor
@@ -297,8 +335,16 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
 
     wn = np.column_stack((fx / load, fy / load, mz / (load * ell)))
     # ellipsoid wᵀ A w = 1
-    feats = np.column_stack((wn[:, 0] ** 2, wn[:, 1] ** 2, wn[:, 2] ** 2, 2 * wn[:, 0] * wn[:, 1],
-                             2 * wn[:, 0] * wn[:, 2], 2 * wn[:, 1] * wn[:, 2]))
+    feats = np.column_stack(
+        (
+            wn[:, 0] ** 2,
+            wn[:, 1] ** 2,
+            wn[:, 2] ** 2,
+            2 * wn[:, 0] * wn[:, 1],
+            2 * wn[:, 0] * wn[:, 2],
+            2 * wn[:, 1] * wn[:, 2],
+        )
+    )
     c, *_ = np.linalg.lstsq(feats, np.ones(len(wn)), rcond=None)
     amat = np.array([[c[0], c[3], c[4]], [c[3], c[1], c[5]], [c[4], c[5], c[2]]])
     q2 = np.einsum("ni,ij,nj->n", wn, amat, wn)
@@ -315,10 +361,23 @@ def limit_surface(body: Body, friction: FrictionTensor, n: int = 400, phi: float
     q_err = float(np.max(np.abs(np.maximum(val, 0.0) ** 0.25 - 1.0)))
     q_nerr = float(np.max(_angle(grad, -u)))
     return LimitSurface(
-        vx=vx, vy=vy, omega=om, force_x=fx, force_y=fy, moment=mz, support=h,
-        dissipation_gap=gap, length=float(ell), normal_load=float(load), ellipsoid=amat,
-        ellipsoid_error=ell_err, ellipsoid_normal_error=ell_nerr, quartic=coef,
-        quartic_error=q_err, quartic_normal_error=q_nerr, phi=phi, body=body,
+        vx=vx,
+        vy=vy,
+        omega=om,
+        force_x=fx,
+        force_y=fy,
+        moment=mz,
+        support=h,
+        dissipation_gap=gap,
+        length=float(ell),
+        normal_load=float(load),
+        ellipsoid=amat,
+        ellipsoid_error=ell_err,
+        ellipsoid_normal_error=ell_nerr,
+        quartic=coef,
+        quartic_error=q_err,
+        quartic_normal_error=q_nerr,
+        phi=phi,
+        body=body,
         friction=friction,
     )
-

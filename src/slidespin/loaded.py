@@ -40,6 +40,12 @@ direction u relaxes in O(1) τ while the motion evolves over O(1/λ) τ), so the
 integrator is ``Radau`` (implicit, order 5) of :func:`scipy.integrate.solve_ivp`, which
 calls the compiled wrench kernel once per right-hand side.
 
+Every patch: the ellipses and circles of the paper and the footprints of MODEL §10; the
+friction wrench comes from :class:`slidespin._twist_wrench.TwistWrench` (the elliptic or the
+exact footprint kernel) and the static-friction set C from
+:func:`slidespin.statics.static_support`. Natural units use the body's length unit
+(:attr:`slidespin.Body.length_unit`).
+
 Energy: ΔKE = W_f + W_Q, reported as ``energy_error`` (an integration-accuracy check); on a
 slope the gravity work m g sin α d·Δr is also computed from the displacement alone.
 """
@@ -173,8 +179,7 @@ class LoadedTrajectory:
     @property
     def final_state(self) -> State:
         """State at the last recorded time."""
-        return State(self.x[-1], self.y[-1], self.phi[-1], self.vx[-1], self.vy[-1],
-                     self.omega[-1])
+        return State(self.x[-1], self.y[-1], self.phi[-1], self.vx[-1], self.vy[-1], self.omega[-1])
 
     @property
     def speed(self) -> np.ndarray:
@@ -193,8 +198,12 @@ class LoadedTrajectory:
         return {
             "t_final": float(self.t[-1]),
             "t_stop": None if math.isnan(self.t_stop) else self.t_stop,
-            "x_final": f.x, "y_final": f.y, "phi_final": f.phi,
-            "vx_final": f.vx, "vy_final": f.vy, "omega_final": f.omega,
+            "x_final": f.x,
+            "y_final": f.y,
+            "phi_final": f.phi,
+            "vx_final": f.vx,
+            "vy_final": f.vy,
+            "omega_final": f.omega,
             "ending": self.ending,
             "status": self.status,
             "message": self.message,
@@ -211,8 +220,18 @@ class LoadedTrajectory:
                 fh.write(text + "\n")
         return text
 
-    COLUMNS = ("t", "x", "y", "phi", "vx", "vy", "omega", "kinetic_energy", "friction_work",
-               "load_work")
+    COLUMNS = (
+        "t",
+        "x",
+        "y",
+        "phi",
+        "vx",
+        "vy",
+        "omega",
+        "kinetic_energy",
+        "friction_work",
+        "load_work",
+    )
 
     def to_csv(self, path=None) -> str:
         """Write (or return) the recorded instants as CSV (SI units)."""
@@ -265,7 +284,8 @@ class _Problem:
                     f"load = {_short(self.load)} gives (Qx, Qy, T) = ({qx:.6g} N, {qy:.6g} N, "
                     f"{mz:.6g} N m) at t = {t * self.t_unit:.6g} s, {big:.3g} in units of "
                     f"(m g, m g, m g a); valid range: force and torque up to {WRENCH_MAX:g} "
-                    "m g (m g a)")
+                    "m g (m g a)"
+                )
         return bx, by, bm
 
     def friction_acc(self, u1, u2, u3, phi):
@@ -286,11 +306,20 @@ class _Problem:
         ux = u1 * xx + u2 * xy + u3 * xm
         s = math.exp(y[3])
         s2 = s * s
-        return np.array([
-            xx - ux * u1, xy - ux * u2, xm - ux * u3, ux, s,
-            s2 * u1, s2 * u2, s2 * u3 / self.k,
-            s2 * (u1 * ax + u2 * ay + u3 * am), s2 * (u1 * bx + u2 * by + u3 * bm),
-        ])
+        return np.array(
+            [
+                xx - ux * u1,
+                xy - ux * u2,
+                xm - ux * u3,
+                ux,
+                s,
+                s2 * u1,
+                s2 * u2,
+                s2 * u3 / self.k,
+                s2 * (u1 * ax + u2 * ay + u3 * am),
+                s2 * (u1 * bx + u2 * by + u3 * bm),
+            ]
+        )
 
     def jac(self, tau, y):
         """Forward-difference Jacobian of :meth:`rhs` (the columns of x, y, W vanish)."""
@@ -335,8 +364,16 @@ class _Problem:
         Raises :class:`~slidespin.statics.OnsetNotFound` if the solve fails.
         """
         b = np.array(self.b(t, phi))
-        return _onset_from_par(self.tw, self.friction, phi, b, self.nf,
-                               self.support(phi), slipping=True, d0=self._d_last)
+        return _onset_from_par(
+            self.tw,
+            self.friction,
+            phi,
+            b,
+            self.nf,
+            self.support(phi),
+            slipping=True,
+            d0=self._d_last,
+        )
 
 
 def simulate_loaded(
@@ -420,17 +457,27 @@ def simulate_loaded(
         check_anisotropy(body, friction, "static friction under a load or on an incline")
     if not isinstance(initial_state, State):
         raise ValueError(
-            f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State")
+            f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
+        )
     if load is not None and not isinstance(load, Load):
-        raise ValueError(f"load = {load!r} is invalid; valid values: a slidespin.loads.Load or None")
+        raise ValueError(
+            f"load = {load!r} is invalid; valid values: a slidespin.loads.Load or None"
+        )
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(
-            f"incline = {incline!r} is invalid; valid values: a slidespin.loads.Incline or None")
+            f"incline = {incline!r} is invalid; valid values: a slidespin.loads.Incline or None"
+        )
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     method = v.choice("method", method, ("auto", "radau", "dop853", "lsoda", "bdf", "rk45"))
-    method = {"radau": "Radau", "dop853": "DOP853", "lsoda": "LSODA", "bdf": "BDF",
-              "rk45": "RK45", "auto": "auto"}[method]
+    method = {
+        "radau": "Radau",
+        "dop853": "DOP853",
+        "lsoda": "LSODA",
+        "bdf": "BDF",
+        "rk45": "RK45",
+        "auto": "auto",
+    }[method]
     prob = _Problem(body, friction, load, incline, g)
     prob.b(0.0, initial_state.phi)  # the load's range, before any work
     if t_end is None:
@@ -500,17 +547,21 @@ def simulate_loaded(
                 # a slip direction exists whenever γ > 1 (MODEL §11), so this is a solver
                 # failure: end the run honestly, at rest where the onset was sought
                 status = "no_onset"
-                message = (f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
-                           f"set C but the body could not be started: {exc}; the run ends "
-                           "there with the body at rest")
+                message = (
+                    f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
+                    f"set C but the body could not be started: {exc}; the run ends "
+                    "there with the body at rest"
+                )
                 break
             if qs[5] == "stall" and qs[3] <= 0.0 and qs[0] <= t:
                 # the start stalled at once: λ ≤ 0 beyond C, not a Coulomb onset (never seen
                 # for isotropic friction, where λ ∝ γ − 1 > 0); end rather than loop here
                 status = "no_onset"
-                message = (f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
-                           "set C but the onset rate was not positive, so the body did not "
-                           "start; the run ends there with the body at rest")
+                message = (
+                    f"at t = {t * prob.t_unit:.12g} s the load left the static-friction "
+                    "set C but the onset rate was not positive, so the body did not "
+                    "start; the run ends there with the body at rest"
+                )
                 break
             moved = True
             t, pos, work, s_now, u, reason, rec = qs
@@ -520,8 +571,10 @@ def simulate_loaded(
                 vel = s_now * u
                 phases.append(["slip", t_phase0, t])
                 status = "step_too_small"
-                message = (f"the integrator of the slow start gave up at t = "
-                           f"{t * prob.t_unit:.12g} s: {prob.failure}; values as reached")
+                message = (
+                    f"the integrator of the slow start gave up at t = "
+                    f"{t * prob.t_unit:.12g} s: {prob.failure}; values as reached"
+                )
                 break
             if reason == "t_end" or s_now <= 0.0:
                 vel = s_now * u
@@ -543,8 +596,9 @@ def simulate_loaded(
         while True:
             # Radau while stiff; every time s has grown e^5-fold, look again
             ln_switch = y0[3] + 5.0 if phase_method == "Radau" and method == "auto" else None
-            y_end, rec, nst, reason = _slip(prob, y0, ln_stop, t_end_n, rtol, phase_method,
-                                            h_max, steps_left, ln_switch)
+            y_end, rec, nst, reason = _slip(
+                prob, y0, ln_stop, t_end_n, rtol, phase_method, h_max, steps_left, ln_switch
+            )
             steps_left -= nst
             for r in rec:
                 s = math.exp(r[3])
@@ -572,8 +626,10 @@ def simulate_loaded(
             message = f"the budget of max_steps = {max_steps} integrator steps ran out"
         elif reason == "failed":
             status = "step_too_small"
-            message = (f"the slip integrator gave up at t = {t * prob.t_unit:.12g} s: "
-                       f"{prob.failure}; values as reached")
+            message = (
+                f"the slip integrator gave up at t = {t * prob.t_unit:.12g} s: "
+                f"{prob.failure}; values as reached"
+            )
         break
 
     arr = np.array(rows)
@@ -603,12 +659,29 @@ def simulate_loaded(
     energy_error = abs((ke[-1] - ke[0]) - (wf[-1] - wf[0]) - (wq[-1] - wq[0]))
     phases_si = tuple((kind, float(t0 * tu), float(t1 * tu)) for kind, t0, t1 in phases)
     return LoadedTrajectory(
-        t=arr[:, 0] * tu, x=arr[:, 1] * a, y=arr[:, 2] * a, phi=arr[:, 3].copy(),
-        vx=arr[:, 4] * vu, vy=arr[:, 5] * vu, omega=arr[:, 6] / k / tu,
-        kinetic_energy=ke, friction_work=wf, load_work=wq, phases=phases_si, ending=ending,
-        status=status, energy_error=float(energy_error), gravity_work=float(grav),
-        n_rhs=prob.n_rhs, body=body, friction=friction, initial_state=initial_state,
-        load=load, incline=incline, g=g, message=message,
+        t=arr[:, 0] * tu,
+        x=arr[:, 1] * a,
+        y=arr[:, 2] * a,
+        phi=arr[:, 3].copy(),
+        vx=arr[:, 4] * vu,
+        vy=arr[:, 5] * vu,
+        omega=arr[:, 6] / k / tu,
+        kinetic_energy=ke,
+        friction_work=wf,
+        load_work=wq,
+        phases=phases_si,
+        ending=ending,
+        status=status,
+        energy_error=float(energy_error),
+        gravity_work=float(grav),
+        n_rhs=prob.n_rhs,
+        body=body,
+        friction=friction,
+        initial_state=initial_state,
+        load=load,
+        incline=incline,
+        g=g,
+        message=message,
     )
 
 
@@ -636,8 +709,9 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
         if got is None:
             got = _onset_nat(acc, b, cache["u"], allow_negative=True)
         if got is None:
-            raise OnsetNotFound(f"the slow start lost its slip direction at t = "
-                                f"{t * prob.t_unit:.12g} s")
+            raise OnsetNotFound(
+                f"the slow start lost its slip direction at t = {t * prob.t_unit:.12g} s"
+            )
         u, lam, _ = got
         cache["u"] = u
         a = np.array(acc(u))
@@ -675,8 +749,7 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
     events = [ev_fast, ev_stall, ev_back] + ([] if math.isinf(t_end) else [ev_end])
     z0 = np.array([0.0, pos[0], pos[1], pos[2], work[0], work[1]])
     t_hi = t0 + 1e6 if math.isinf(t_end) else t_end + 1.0
-    sol = solve_ivp(rhs, (t0, t_hi), z0, method="DOP853", rtol=rtol, atol=1e-18,
-                    events=events)
+    sol = solve_ivp(rhs, (t0, t_hi), z0, method="DOP853", rtol=rtol, atol=1e-18, events=events)
     z = sol.y[:, -1]
     te = sol.t[-1]
     reason = "t_end"
@@ -759,6 +832,7 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
 
     ev_end.terminal = True
     ev_end.direction = 1.0
+
     def ev_switch(tau, y):
         return y[3] - ln_switch
 
@@ -794,8 +868,17 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
         extra = {"jac": prob.jac} if implicit else {}
         taken.clear()
         try:
-            sol = solve_ivp(prob.rhs, (tau0, tau0 + chunk), y, method=method, rtol=rtol,
-                            atol=atol, events=events, max_step=h_max, **extra)
+            sol = solve_ivp(
+                prob.rhs,
+                (tau0, tau0 + chunk),
+                y,
+                method=method,
+                rtol=rtol,
+                atol=atol,
+                events=events,
+                max_step=h_max,
+                **extra,
+            )
         except _StepBudget:  # the accepted steps so far, the last one as reached
             rec.extend(taken[1:])
             steps += len(taken) - 1

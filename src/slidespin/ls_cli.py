@@ -22,14 +22,28 @@ def configure(parser) -> None:
         "of a case file and fit an ellipsoid and a convex quartic (MODEL §11)."
     )
     parser.add_argument("case", metavar="CASE.toml", help="case file (examples/*.toml)")
-    parser.add_argument("--n", type=int, default=400, metavar="N",
-                        help="number of twist directions (default 400, at least 10)")
-    parser.add_argument("--length", type=float, default=None, metavar="L",
-                        help="length scale ℓ [m] of the twist (vx, vy, ℓω); default √(I/m)")
-    parser.add_argument("--json", action="store_true",
-                        help="print the fits (and with --samples the samples) as JSON")
-    parser.add_argument("--samples", action="store_true",
-                        help="with --json, include every sampled twist and wrench")
+    parser.add_argument(
+        "--n",
+        type=int,
+        default=400,
+        metavar="N",
+        help="number of twist directions (default 400, at least 10)",
+    )
+    parser.add_argument(
+        "--length",
+        type=float,
+        default=None,
+        metavar="L",
+        help="length scale ℓ [m] of the twist (vx, vy, ℓω); default √(I/m)",
+    )
+    parser.add_argument(
+        "--json",
+        action="store_true",
+        help="print the fits (and with --samples the samples) as JSON",
+    )
+    parser.add_argument(
+        "--samples", action="store_true", help="with --json, include every sampled twist and wrench"
+    )
     parser.add_argument("--npz", metavar="OUT.npz", default=None, help="write all arrays")
     parser.add_argument("--plot", metavar="OUT.png", default=None, help="write a 3-D figure")
 
@@ -47,8 +61,15 @@ def run(args) -> int:
     if npz and not npz.endswith(".npz"):
         raise ValueError(f"--npz = {npz!r} is invalid; valid values: a path ending in .npz")
     case = load_case(args.case)
-    ls = limit_surface(case.body, case.friction, n=args.n, phi=case.initial_state.phi,
-                       g=case.g, length=args.length, incline=case.incline)
+    ls = limit_surface(
+        case.body,
+        case.friction,
+        n=args.n,
+        phi=case.initial_state.phi,
+        g=case.g,
+        length=args.length,
+        incline=case.incline,
+    )
     files = []
     if npz:
         import io
@@ -77,18 +98,28 @@ def run(args) -> int:
     else:
         s = ls.summary()
         print(f"case               : {case.name or args.case}")
-        print(f"samples            : {s['n']} twist directions, ℓ = {s['length']:.6g} m, "
-              f"P = {s['normal_load']:.6g} N")
+        print(
+            f"samples            : {s['n']} twist directions, ℓ = {s['length']:.6g} m, "
+            f"P = {s['normal_load']:.6g} N"
+        )
         print(f"largest force      : {s['max_force']:.10g} N")
         print(f"largest moment     : {s['max_moment']:.10g} N m")
-        print(f"ellipsoid fit      : radial error {s['ellipsoid_error']:.3e}, normal error "
-              f"{s['ellipsoid_normal_error']:.3e} rad")
-        print(f"convex quartic fit : radial error {s['quartic_error']:.3e}, normal error "
-              f"{s['quartic_normal_error']:.3e} rad")
-        print(f"dissipation gap    : {s['max_dissipation_gap']:.3e} W per m/s "
-              "(0: maximum dissipation, the twist is normal to the surface)")
-        print("ellipsoid matrix A : " + json.dumps([[round(x, 10) for x in r]
-                                                     for r in s["ellipsoid"]]))
+        print(
+            f"ellipsoid fit      : radial error {s['ellipsoid_error']:.3e}, normal error "
+            f"{s['ellipsoid_normal_error']:.3e} rad"
+        )
+        print(
+            f"convex quartic fit : radial error {s['quartic_error']:.3e}, normal error "
+            f"{s['quartic_normal_error']:.3e} rad"
+        )
+        print(
+            f"dissipation gap    : {s['max_dissipation_gap']:.3e} W per m/s "
+            "(0: maximum dissipation, the twist is normal to the surface)"
+        )
+        print(
+            "ellipsoid matrix A : "
+            + json.dumps([[round(x, 10) for x in r] for r in s["ellipsoid"]])
+        )
     write_outputs(files)
     for path, _ in files:
         if not args.json:

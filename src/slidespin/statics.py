@@ -24,6 +24,14 @@ own quadratic form; the linear law stays linear with its centroid at the image o
 h(d) = −W_iso·(S d_F, d_M), the dissipation of that twist under *isotropic unit* friction on
 the image patch, and the support point is ∇h(d) = (−𝔽 F_iso, −M_iso). One kernel call, 1e-12.
 
+On a footprint (MODEL §10; :class:`FootprintSupport`) the same change of variables holds,
+y = L r′ with the pressure p/det L: a polygon's image is a polygon (the exact footprint
+kernel), a disk's or a ring hole's is an ellipse (the elliptic kernel, one call per disk,
+with its own load and pressure centroid), and a linear pressure stays linear. For isotropic
+friction no map is needed: h(d) = −W(d)·d and ∇h(d) = −W(d), one call of the footprint
+kernel. The sliding wrench W(u) of every feature below comes from one dispatch on the shape,
+:class:`slidespin._twist_wrench.TwistWrench` (elliptic or footprint kernel).
+
 For isotropic friction (𝔽 = μ 1) the support point in direction d is −W(d), minus the friction
 wrench of the twist d: C is bounded by the limit surface, and the twist is normal to it
 (maximum dissipation; Goyal, Ruina & Papadopoulos 1991). For an anisotropic tensor the law
@@ -46,7 +54,9 @@ force plus a torque start a mixed motion. At the threshold (−W_a on ∂C) λ =
 twist whose friction wrench is −W_a (for isotropic friction the outward normal of C at W_a).
 
 Units: wrenches in N, N, N m; directions d = (d_Fx, d_Fy, d_M) pair with wrenches as
-d·W = d_Fx Fx + d_Fy Fy + d_M M, so d_M is in 1/m. Internally natural units (a = m = g = 1).
+d·W = d_Fx Fx + d_Fy Fy + d_M M, so d_M is in 1/m. Internally natural units (a = m = g = 1,
+a the body's length unit :attr:`slidespin.Body.length_unit`: the semi-axis of an ellipse, the
+extent of a footprint).
 """
 
 from __future__ import annotations
@@ -119,15 +129,32 @@ class StaticSupport:
         vx, vy = self.S @ np.asarray(d[:2], dtype=float)
         om = float(d[2])
         f1, f2, m, st = wrench_world(
-            self.bn, self.law, self.xg, self.yg, 1.0, 0.0, 0.0, 1.0, False, self.psi,
-            vx / self.s1, vy / self.s1, om, _TOL,
+            self.bn,
+            self.law,
+            self.xg,
+            self.yg,
+            1.0,
+            0.0,
+            0.0,
+            1.0,
+            False,
+            self.psi,
+            vx / self.s1,
+            vy / self.s1,
+            om,
+            _TOL,
         )
         if st != STATUS_OK:  # pragma: no cover - guard
             raise RuntimeError("statics: the wrench quadrature missed its error target")
         mom = m * self.s1
         h = -(f1 * vx + f2 * vy + mom * om)
-        grad = np.array([-(self.fw[0, 0] * f1 + self.fw[0, 1] * f2),
-                         -(self.fw[1, 0] * f1 + self.fw[1, 1] * f2), -mom])
+        grad = np.array(
+            [
+                -(self.fw[0, 0] * f1 + self.fw[0, 1] * f2),
+                -(self.fw[1, 0] * f1 + self.fw[1, 1] * f2),
+                -mom,
+            ]
+        )
         return h, grad
 
 
@@ -190,8 +217,9 @@ class FootprintSupport:
             ext = float(np.max(np.hypot(a0[:, 0] - o[0], a0[:, 1] - o[1])))
             # load and first moments of the polygons' part (the kernel's pure-translation
             # branch needs them): signed fan from o, exact rules for linear and quadratic
-            ar = 0.5 * ((a0[:, 0] - o[0]) * (a1[:, 1] - o[1])
-                        - (a0[:, 1] - o[1]) * (a1[:, 0] - o[0]))
+            ar = 0.5 * (
+                (a0[:, 0] - o[0]) * (a1[:, 1] - o[1]) - (a0[:, 1] - o[1]) * (a1[:, 0] - o[0])
+            )
             mids = (0.5 * (a0 + a1), 0.5 * (a0 + o), 0.5 * (a1 + o))
             load = 0.0
             mx = my = 0.0
@@ -200,8 +228,9 @@ class FootprintSupport:
                 load += float(np.sum(ar * pv)) / 3.0
                 mx += float(np.sum(ar * pv * mid[:, 0])) / 3.0
                 my += float(np.sum(ar * pv * mid[:, 1])) / 3.0
-            self.edge_geo = np.array([o[0], o[1], ext, q0, q1, q2, 0.0, 0.0, mx / load,
-                                      my / load, load])
+            self.edge_geo = np.array(
+                [o[0], o[1], ext, q0, q1, q2, 0.0, 0.0, mx / load, my / load, load]
+            )
         if tw.circles.shape[0]:
             u_, sig, _ = np.linalg.svd(lmap)
             if np.linalg.det(u_) < 0.0:
@@ -216,21 +245,33 @@ class FootprintSupport:
                 semi = float(rad * sig[0])
                 gl = u_.T @ (gimg - eimg) / semi  # centroid in the ellipse's frame, per a
                 law = LAW_UNIFORM if p1 == 0.0 and p2 == 0.0 else LAW_LINEAR
-                self.circ.append((bn, law, float(gl[0]), float(gl[1]), psi, semi,
-                                  float(gimg[0]), float(gimg[1]),
-                                  float(sgn * math.pi * rad * rad * po)))
+                self.circ.append(
+                    (
+                        bn,
+                        law,
+                        float(gl[0]),
+                        float(gl[1]),
+                        psi,
+                        semi,
+                        float(gimg[0]),
+                        float(gimg[1]),
+                        float(sgn * math.pi * rad * rad * po),
+                    )
+                )
 
     def _image_wrench(self, vx, vy, om):
         """Isotropic unit-friction wrench (F, M about G) of the image twist (vx, vy, ω)."""
         fx = fy = mm = 0.0
         if self.edges.shape[0]:
-            fx, fy, mm = fp_wrench_world(self.edges, _NO_CIRCLES, self.edge_geo, 1.0, 0.0,
-                                         0.0, 1.0, False, 0.0, vx, vy, om)
+            fx, fy, mm = fp_wrench_world(
+                self.edges, _NO_CIRCLES, self.edge_geo, 1.0, 0.0, 0.0, 1.0, False, 0.0, vx, vy, om
+            )
         for bn, law, xg, yg, psi, semi, gx, gy, load in self.circ:
             # velocity of the twist at the disk's pressure centroid, lengths per semi-axis
             wx, wy = vx - om * gy, vy + om * gx
-            f1, f2, m, st = wrench_world(bn, law, xg, yg, 1.0, 0.0, 0.0, 1.0, False, psi,
-                                         wx / semi, wy / semi, om, _TOL)
+            f1, f2, m, st = wrench_world(
+                bn, law, xg, yg, 1.0, 0.0, 0.0, 1.0, False, psi, wx / semi, wy / semi, om, _TOL
+            )
             if st != STATUS_OK:  # pragma: no cover - guard
                 raise RuntimeError("statics: the wrench quadrature missed its error target")
             f1 *= load
@@ -249,8 +290,13 @@ class FootprintSupport:
         om = float(d[2])
         f1, f2, mom = self._image_wrench(float(vx), float(vy), om)
         h = -(f1 * vx + f2 * vy + mom * om)
-        grad = np.array([-(self.fw[0, 0] * f1 + self.fw[0, 1] * f2),
-                         -(self.fw[1, 0] * f1 + self.fw[1, 1] * f2), -mom])
+        grad = np.array(
+            [
+                -(self.fw[0, 0] * f1 + self.fw[0, 1] * f2),
+                -(self.fw[1, 0] * f1 + self.fw[1, 1] * f2),
+                -mom,
+            ]
+        )
         return h, grad
 
 
@@ -297,7 +343,8 @@ def check_anisotropy(body, friction, feature="static friction") -> None:
         raise ValueError(
             f"friction = {friction!r} is invalid for {feature} on this patch: anisotropy "
             f"(ratio of the tensor's singular values) x patch elongation max(b/a, a/b) = "
-            f"{prod:.3g}; valid range: [1, {ANISOTROPY_ELONGATION:g}]")
+            f"{prod:.3g}; valid range: [1, {ANISOTROPY_ELONGATION:g}]"
+        )
 
 
 def _check(body, friction):
@@ -318,7 +365,8 @@ def _check_load(name, b):
         raise ValueError(
             f"{name} = ({', '.join(f'{x:.6g}' for x in b)}) in units of (m g, m g, m g a) is "
             f"invalid; valid range: magnitude <= {WRENCH_MAX:g} m g (the load must be finite "
-            "relative to the weight)")
+            "relative to the weight)"
+        )
     return nb >= WRENCH_NEGLIGIBLE
 
 
@@ -328,7 +376,9 @@ def _wrench3(name, w):
     except (TypeError, ValueError):
         raise ValueError(f"{name} = {w!r} is invalid; valid values: (Fx, Fy, M)") from None
     if len(items) != 3 or not all(math.isfinite(x) for x in items):
-        raise ValueError(f"{name} = {w!r} is invalid; valid values: three finite numbers (Fx, Fy, M)")
+        raise ValueError(
+            f"{name} = {w!r} is invalid; valid values: three finite numbers (Fx, Fy, M)"
+        )
     return np.array(items)
 
 
@@ -340,8 +390,15 @@ def _normal(incline, normal_factor):
     return v.positive("normal_factor", normal_factor)
 
 
-def support_function(body: Body, friction: FrictionTensor, direction, phi: float = 0.0,
-                     g: float = 9.81, *, incline: Incline | None = None):
+def support_function(
+    body: Body,
+    friction: FrictionTensor,
+    direction,
+    phi: float = 0.0,
+    g: float = 9.81,
+    *,
+    incline: Incline | None = None,
+):
     """Support function h(d) of the static-friction set C and its support point (MODEL §11).
 
     Parameters
@@ -413,13 +470,21 @@ def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
             best = r
         if r.success or np.linalg.norm(r.jac) < 1e-10:
             break
+    assert best is not None  # at least one start ran
     pq = best.x
     d = bh + pq[0] * e1 + pq[1] * e2
     return float(best.fun) / nb, d / np.linalg.norm(d)
 
 
-def load_factor(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
-                g: float = 9.81, *, incline: Incline | None = None) -> float:
+def load_factor(
+    body: Body,
+    friction: FrictionTensor,
+    applied_wrench,
+    phi: float = 0.0,
+    g: float = 9.81,
+    *,
+    incline: Incline | None = None,
+) -> float:
     """Load factor λ*: the applied wrench can be multiplied by λ* before the body slips.
 
     λ* = min over wrench directions d with d·W_a > 0 of h(d)/(d·W_a) (the inverse of the
@@ -470,8 +535,15 @@ def _natural_wrench(body, w, nf, g):
     return np.array([w[0] / load, w[1] / load, w[2] / (load * body.length_unit)])
 
 
-def can_stick(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
-              g: float = 9.81, *, incline: Incline | None = None) -> bool:
+def can_stick(
+    body: Body,
+    friction: FrictionTensor,
+    applied_wrench,
+    phi: float = 0.0,
+    g: float = 9.81,
+    *,
+    incline: Incline | None = None,
+) -> bool:
     """Whether static friction can hold the body at rest under ``applied_wrench``.
 
     True iff −W_a ∈ C (MODEL §11), i.e. :func:`load_factor` ≥ 1: a load exactly at the
@@ -488,8 +560,9 @@ def can_stick(body: Body, friction: FrictionTensor, applied_wrench, phi: float =
     return load_factor(body, friction, applied_wrench, phi, g, incline=incline) >= 1.0
 
 
-def critical_tilt(body: Body, friction: FrictionTensor, downhill: float = 0.0,
-                  phi: float = 0.0) -> float:
+def critical_tilt(
+    body: Body, friction: FrictionTensor, downhill: float = 0.0, phi: float = 0.0
+) -> float:
     """Tilt α_c [rad] above which the body at rest slides down a plane (MODEL §11).
 
     On a plane tilted by α the applied wrench is m g sin α (d, 0) and C scales by cos α, so
@@ -515,8 +588,9 @@ def critical_tilt(body: Body, friction: FrictionTensor, downhill: float = 0.0,
     _check(body, friction)
     d = v.finite("downhill", downhill)
     mg = body.mass * 9.81
-    return math.atan(load_factor(body, friction, (mg * math.cos(d), mg * math.sin(d), 0.0),
-                                 phi, 9.81))
+    return math.atan(
+        load_factor(body, friction, (mg * math.cos(d), mg * math.sin(d), 0.0), phi, 9.81)
+    )
 
 
 # ------------------------------------------------------------------------------------------
@@ -638,8 +712,15 @@ def _scaled_b(body, wrench, load_nf, g):
     return np.array([wrench[0] / mg, wrench[1] / mg, wrench[2] / (mg * body.length_unit * k)])
 
 
-def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0,
-          g: float = 9.81, *, incline: Incline | None = None) -> Onset | None:
+def onset(
+    body: Body,
+    friction: FrictionTensor,
+    applied_wrench,
+    phi: float = 0.0,
+    g: float = 9.81,
+    *,
+    incline: Incline | None = None,
+) -> Onset | None:
     """Direction and initial rate in which a body at rest starts to slip (MODEL §11).
 
     Parameters
@@ -689,8 +770,9 @@ def onset(body: Body, friction: FrictionTensor, applied_wrench, phi: float = 0.0
     lam_star, d = _load_factor_nat(sup, wn)
     if lam_star >= 1.0:  # the verdict of load_factor and can_stick, bit for bit
         return None
-    u, lam, resid = _onset_from_par(tw, friction, phi, _scaled_b(body, w, nf, g), nf,
-                                    sup, slipping=True, d0=d)
+    u, lam, resid = _onset_from_par(
+        tw, friction, phi, _scaled_b(body, w, nf, g), nf, sup, slipping=True, d0=d
+    )
     k = body.radius_of_gyration
     return Onset(u, np.array([u[0], u[1], u[2] / k]), lam * g, resid)
 
