@@ -15,8 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from slidespin.sweep import (SweepError, SweepResult, load_spec, read_sweep,
-                             split_unconverged, sweep)
+from slidespin.sweep import SweepError, SweepResult, load_spec, read_sweep, split_unconverged, sweep
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 G = 9.81
@@ -25,8 +24,14 @@ G = 9.81
 def spec_of(fixed, vary, compute="statics", chunk_size=6):
     base = {"a": 0.05, "e": 0.6, "mass": 2.0}
     base.update(fixed)
-    return {"name": "loads", "kind": "grid", "chunk_size": chunk_size, "compute": compute,
-            "fixed": base, "vary": vary}
+    return {
+        "name": "loads",
+        "kind": "grid",
+        "chunk_size": chunk_size,
+        "compute": compute,
+        "fixed": base,
+        "vary": vary,
+    }
 
 
 def run(spec, tmp_path, name="out", **kw):
@@ -43,21 +48,34 @@ def same(x, y) -> bool:
 
 # ------------------------------------------------------------------------------- statics
 def test_isotropic_threshold_is_atan_mu(tmp_path):
-    spec = spec_of({"mu": 0.0}, {"fx": [0.1, 0.3, 0.8], "law": ["uniform", "hertz", "linear"],
-                                  "incline_downhill": [0.0, 2.0], "phi0": [0.0, 0.7]})
+    spec = spec_of(
+        {"mu": 0.0},
+        {
+            "fx": [0.1, 0.3, 0.8],
+            "law": ["uniform", "hertz", "linear"],
+            "incline_downhill": [0.0, 2.0],
+            "phi0": [0.0, 0.7],
+        },
+    )
     spec["fixed"]["xi_c"] = 0.005
     res, t = run(spec, tmp_path)
     assert res.status_counts == {"ok": 36}
     assert np.allclose(t["critical_tilt"], np.arctan(t["fx"]), rtol=0, atol=1e-10)
-    assert np.allclose(t["critical_tilt_deg"], np.degrees(np.arctan(t["fx"])), rtol=0,
-                       atol=1e-8)
+    assert np.allclose(t["critical_tilt_deg"], np.degrees(np.arctan(t["fx"])), rtol=0, atol=1e-8)
 
 
 def test_orthotropic_threshold_along_a_principal_axis(tmp_path):
     """fx along X, fy along Y (plane frame): the slope down X holds to atan fx, down Y to
     atan fy; a body-frame tensor turned with the body by φ0 = π/2 swaps them."""
-    spec = spec_of({"fx": 0.3}, {"fy": [0.3, 0.45, 0.7], "incline_downhill": [0.0, math.pi / 2],
-                                  "frame": ["plane", "body"], "phi0": [0.0, math.pi / 2]})
+    spec = spec_of(
+        {"fx": 0.3},
+        {
+            "fy": [0.3, 0.45, 0.7],
+            "incline_downhill": [0.0, math.pi / 2],
+            "frame": ["plane", "body"],
+            "phi0": [0.0, math.pi / 2],
+        },
+    )
     _, t = run(spec, tmp_path)
     along_x = np.isclose(np.cos(t["incline_downhill"]), 1.0)
     turned = (t["frame"] == "body") & np.isclose(t["phi0"], math.pi / 2)
@@ -68,8 +86,9 @@ def test_orthotropic_threshold_along_a_principal_axis(tmp_path):
 def test_block_on_a_slope_sticks_iff_tan_alpha_below_mu(tmp_path):
     mu = 0.4
     deg = [5.0, 15.0, 21.0, 22.5, 25.0, 40.0, 60.0]  # atan 0.4 = 21.80°
-    spec = spec_of({"fx": mu, "mu": 0.0}, {"incline_angle_deg": deg, "law": ["uniform",
-                                                                            "boussinesq"]})
+    spec = spec_of(
+        {"fx": mu, "mu": 0.0}, {"incline_angle_deg": deg, "law": ["uniform", "boussinesq"]}
+    )
     res, t = run(spec, tmp_path)
     sticks = np.tan(np.radians(t["incline_angle_deg"])) <= mu
     assert np.array_equal(t["ending"] == "sticks", sticks)
@@ -80,16 +99,19 @@ def test_block_on_a_slope_sticks_iff_tan_alpha_below_mu(tmp_path):
 
 def test_push_and_torque_thresholds_of_a_disk(tmp_path):
     mu, m, R = 0.3, 2.0, 0.05
-    spec = spec_of({"e": 0.0, "fx": mu, "mu": 0.0, "mass": m},
-                   {"load_fx": [0.0, 2.0, 5.0, 8.0], "load_torque": [0.0, 0.05, 0.2]})
+    spec = spec_of(
+        {"e": 0.0, "fx": mu, "mu": 0.0, "mass": m},
+        {"load_fx": [0.0, 2.0, 5.0, 8.0], "load_torque": [0.0, 0.05, 0.2]},
+    )
     _, t = run(spec, tmp_path)
     P, T = t["load_fx"], t["load_torque"]
     push = np.where(P == 0, np.inf, mu * m * G / np.where(P == 0, 1.0, P))
     twist = np.where(T == 0, np.inf, 2 / 3 * mu * m * G * R / np.where(T == 0, 1.0, T))
     only_p, only_t = T == 0, P == 0
     assert np.allclose(t["load_factor"][only_p], push[only_p], rtol=1e-9, atol=0)
-    assert np.allclose(t["load_factor"][only_t & (T > 0)], twist[only_t & (T > 0)], rtol=1e-9,
-                       atol=0)
+    assert np.allclose(
+        t["load_factor"][only_t & (T > 0)], twist[only_t & (T > 0)], rtol=1e-9, atol=0
+    )
     assert np.isinf(t["load_factor"][(P == 0) & (T == 0)]).all()
     # a push and a torque together are held less than either alone
     both = (P > 0) & (T > 0)
@@ -109,9 +131,12 @@ def test_tilt_example(tmp_path):
 def test_loaded_slope_slides_with_the_closed_form_acceleration(tmp_path):
     mu, t_end = 0.3, 0.4
     deg = [10.0, 15.0, 20.0, 30.0]  # atan 0.3 = 16.70°
-    spec = spec_of({"fx": mu, "mu": 0.0, "t_end": t_end}, {"incline_angle_deg": deg,
-                                                           "incline_downhill": [0.0, 2.5]},
-                   compute="loaded", chunk_size=3)
+    spec = spec_of(
+        {"fx": mu, "mu": 0.0, "t_end": t_end},
+        {"incline_angle_deg": deg, "incline_downhill": [0.0, 2.5]},
+        compute="loaded",
+        chunk_size=3,
+    )
     res, t = run(spec, tmp_path)
     assert res.status_counts == {"ok": 8}
     a = np.radians(t["incline_angle_deg"])
@@ -131,8 +156,11 @@ def test_loaded_slope_slides_with_the_closed_form_acceleration(tmp_path):
 
 def test_loaded_orthotropic_slope_uses_the_coefficient_along_it(tmp_path):
     fx, fy, alpha, t_end = 0.2, 0.5, 0.4, 0.3  # tan 0.4 = 0.42: slides down X, holds down Y
-    spec = spec_of({"fx": fx, "fy": fy, "incline_angle": alpha, "t_end": t_end},
-                   {"incline_downhill": [0.0, math.pi / 2]}, compute="loaded")
+    spec = spec_of(
+        {"fx": fx, "fy": fy, "incline_angle": alpha, "t_end": t_end},
+        {"incline_downhill": [0.0, math.pi / 2]},
+        compute="loaded",
+    )
     _, t = run(spec, tmp_path)
     assert list(t["ending"]) == ["moving_at_t_end", "at_rest_throughout"]
     acc = G * (math.sin(alpha) - fx * math.cos(alpha))
@@ -141,9 +169,12 @@ def test_loaded_orthotropic_slope_uses_the_coefficient_along_it(tmp_path):
 
 
 def test_loaded_sweep_resumes_and_runs_on_an_executor(tmp_path):
-    spec = spec_of({"fx": 0.3, "mu": 0.1, "t_end": 0.3, "omega0": 3.0},
-                   {"incline_angle_deg": [5.0, 25.0], "load_fy": [0.0, 4.0, 9.0]},
-                   compute="loaded", chunk_size=2)
+    spec = spec_of(
+        {"fx": 0.3, "mu": 0.1, "t_end": 0.3, "omega0": 3.0},
+        {"incline_angle_deg": [5.0, 25.0], "load_fy": [0.0, 4.0, 9.0]},
+        compute="loaded",
+        chunk_size=2,
+    )
     _, first = run(spec, tmp_path)
     assert set(first["status"]) == {"ok"}
     (tmp_path / "out" / "chunks" / "chunk-000002.parquet").unlink()
@@ -158,8 +189,10 @@ def test_loaded_sweep_resumes_and_runs_on_an_executor(tmp_path):
 
 
 def test_loaded_unconverged_statuses_are_left_out():
-    table = {"case_id": np.arange(4), "status": np.array(["ok", "max_phases", "no_onset", "ok"],
-                                                          dtype=object)}
+    table = {
+        "case_id": np.arange(4),
+        "status": np.array(["ok", "max_phases", "no_onset", "ok"], dtype=object),
+    }
     kept, left = split_unconverged(table)
     assert list(kept["case_id"]) == [0, 3] and left == {"max_phases": 1, "no_onset": 1}
     res = SweepResult(Path("."), 4, 1, 1, 4, 1.0, {"ok": 2, "max_phases": 1, "no_onset": 1})
@@ -167,20 +200,31 @@ def test_loaded_unconverged_statuses_are_left_out():
 
 
 # ------------------------------------------------------------------------------- bad keys
-@pytest.mark.parametrize("compute, fixed, vary, words", [
-    ("statics", {}, {"incline_angle_deg": [10.0, 95.0]},
-     ["incline_angle_deg", "95.0", "[0, 90)"]),
-    ("statics", {}, {"incline_angle": [0.1, 2.0]}, ["incline_angle", "2.0", "[0, 1.57"]),
-    ("statics", {"incline_angle": 0.1, "incline_angle_deg": 5.0}, {},
-     ["at most one of", "incline_angle_deg"]),
-    ("statics", {"load_frame": "world"}, {}, ["load_frame", "world", "plane, body"]),
-    ("statics", {}, {"load_fx": [1.0, float("nan")]}, ["load_fx", "nan", "finite"]),
-    ("statics", {"t_end": 1.0}, {}, ["t_end", "loaded"]),
-    ("loaded", {}, {"incline_angle": [0.1]}, ["t_end", "compute = 'loaded'"]),
-    ("loaded", {"t_end": -1.0}, {}, ["t_end", "-1.0", "(0, 1e9]"]),
-    ("stop", {"load_torque": 1.0}, {}, ["load_torque", "compute", "statics", "loaded"]),
-    ("dynamic", {}, {}, ["compute", "dynamic", "stop, statics, loaded"]),
-])
+@pytest.mark.parametrize(
+    "compute, fixed, vary, words",
+    [
+        (
+            "statics",
+            {},
+            {"incline_angle_deg": [10.0, 95.0]},
+            ["incline_angle_deg", "95.0", "[0, 90)"],
+        ),
+        ("statics", {}, {"incline_angle": [0.1, 2.0]}, ["incline_angle", "2.0", "[0, 1.57"]),
+        (
+            "statics",
+            {"incline_angle": 0.1, "incline_angle_deg": 5.0},
+            {},
+            ["at most one of", "incline_angle_deg"],
+        ),
+        ("statics", {"load_frame": "world"}, {}, ["load_frame", "world", "plane, body"]),
+        ("statics", {}, {"load_fx": [1.0, float("nan")]}, ["load_fx", "nan", "finite"]),
+        ("statics", {"t_end": 1.0}, {}, ["t_end", "loaded"]),
+        ("loaded", {}, {"incline_angle": [0.1]}, ["t_end", "compute = 'loaded'"]),
+        ("loaded", {"t_end": -1.0}, {}, ["t_end", "-1.0", "(0, 1e9]"]),
+        ("stop", {"load_torque": 1.0}, {}, ["load_torque", "compute", "statics", "loaded"]),
+        ("dynamic", {}, {}, ["compute", "dynamic", "stop, statics, loaded"]),
+    ],
+)
 def test_bad_load_keys_are_named(compute, fixed, vary, words):
     spec = spec_of({"fx": 0.3, "mu": 0.0, **fixed}, vary, compute=compute)
     with pytest.raises(SweepError) as err:

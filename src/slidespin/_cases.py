@@ -14,15 +14,37 @@ import numpy as np
 from . import _validate as v
 from .pressure import LAW_NAMES
 
-__all__ = ["CASE_FIELDS", "SHAPE_KEYS", "validated_columns", "footprint_geometry", "footprint_patch"]
+__all__ = [
+    "CASE_FIELDS",
+    "SHAPE_KEYS",
+    "validated_columns",
+    "footprint_geometry",
+    "footprint_patch",
+]
 
 #: per-case inputs of :func:`slidespin.batch.simulate_cases` and their defaults (None: required)
 CASE_FIELDS = {
-    "a": None, "b": None, "law": "uniform", "xi_c": 0.0, "eta_c": 0.0,
-    "fx": None, "fy": None, "f": 0.0, "frame": "plane", "angle": 0.0,
-    "mass": 1.0, "moment_of_inertia": math.nan, "g": 9.81,
-    "x": 0.0, "y": 0.0, "phi": 0.0, "vx": 0.0, "vy": 0.0, "omega": 0.0,
+    "a": None,
+    "b": None,
+    "law": "uniform",
+    "xi_c": 0.0,
+    "eta_c": 0.0,
+    "fx": None,
+    "fy": None,
+    "f": 0.0,
+    "frame": "plane",
+    "angle": 0.0,
+    "mass": 1.0,
+    "moment_of_inertia": math.nan,
+    "g": 9.81,
+    "x": 0.0,
+    "y": 0.0,
+    "phi": 0.0,
+    "vx": 0.0,
+    "vy": 0.0,
+    "omega": 0.0,
 }
+
 
 def _column(name, value, n, kind="real"):
     arr = np.asarray(value)
@@ -91,13 +113,24 @@ def validated_columns(cases: dict):
             col[k] = _column(k, val, n)
     # the same ranges as the value objects (slidespin._validate; docs/errors.md says why):
     # this path skips Body and State, so it must refuse what they refuse
-    for k, (lo, hi) in (("a", v.LENGTH), ("b", v.LENGTH), ("fx", v.COEFFICIENT),
-                        ("fy", v.COEFFICIENT), ("mass", v.MASS), ("g", v.GRAVITY)):
+    for k, (lo, hi) in (
+        ("a", v.LENGTH),
+        ("b", v.LENGTH),
+        ("fx", v.COEFFICIENT),
+        ("fy", v.COEFFICIENT),
+        ("mass", v.MASS),
+        ("g", v.GRAVITY),
+    ):
         _in(k, col[k], lo, hi)
     _in("b/a", col["b"] / col["a"], *v.ASPECT)
     _in("f", col["f"], -v.SKEW, v.SKEW)
-    for k, lim in (("vx", v.SPEED), ("vy", v.SPEED), ("omega", v.SPIN), ("x", v.POSITION),
-                   ("y", v.POSITION)):
+    for k, lim in (
+        ("vx", v.SPEED),
+        ("vy", v.SPEED),
+        ("omega", v.SPIN),
+        ("x", v.POSITION),
+        ("y", v.POSITION),
+    ):
         _in(k, col[k], -lim, lim)
     for k in ("xi_c", "eta_c", "angle", "phi"):
         _check(k, col[k], np.isfinite(col[k]), "finite")
@@ -105,12 +138,19 @@ def validated_columns(cases: dict):
     plate = col["mass"] * (col["a"] ** 2 + col["b"] ** 2) / 4
     inertia = np.where(np.isnan(inertia), plate, inertia)
     _check("moment_of_inertia", inertia, np.isfinite(inertia) & (inertia > 0), "finite and > 0")
-    _in("I/(m a^2) (moment_of_inertia / (mass a^2))", inertia / (col["mass"] * col["a"] ** 2),
-        *v.INERTIA_RATIO)
+    _in(
+        "I/(m a^2) (moment_of_inertia / (mass a^2))",
+        inertia / (col["mass"] * col["a"] ** 2),
+        *v.INERTIA_RATIO,
+    )
     is_lin = col["law"] == 1
     core = (col["xi_c"] / col["a"]) ** 2 + (col["eta_c"] / col["b"]) ** 2
-    _check("xi_c, eta_c (core measure (xi_c/a)^2 + (eta_c/b)^2)", core,
-           ~is_lin | (core <= 1.0 / 16.0 * (1 + 1e-12)), "[0, 0.0625]")
+    _check(
+        "xi_c, eta_c (core measure (xi_c/a)^2 + (eta_c/b)^2)",
+        core,
+        ~is_lin | (core <= 1.0 / 16.0 * (1 + 1e-12)),
+        "[0, 0.0625]",
+    )
     return col, inertia
 
 
@@ -166,8 +206,12 @@ def footprint_geometry(shape: str, cols: dict, n: int) -> dict:
         else:
             small = _need(cols, shape, "inner_radius")
         with np.errstate(all="ignore"):
-            return {"outer_radius": big, "inner_radius": small, "ring_width": big - small,
-                    "radius_ratio": small / big}
+            return {
+                "outer_radius": big,
+                "inner_radius": small,
+                "ring_width": big - small,
+                "radius_ratio": small / big,
+            }
     if shape == "rectangle":
         length = _need(cols, shape, "length")
         if "aspect" in cols:
@@ -184,8 +228,12 @@ def footprint_geometry(shape: str, cols: dict, n: int) -> dict:
         return {"scale": np.broadcast_to(s, (n,)).copy()}
     if shape == "pads":
         k = np.asarray(cols.get("n_pads", np.full(n, 2.0)), dtype=float)
-        _ranged("n_pads", k, (k == np.round(k)) & (k >= 2) & (k <= MAX_PADS),
-                f"integer in [2, {MAX_PADS}]")
+        _ranged(
+            "n_pads",
+            k,
+            (k == np.round(k)) & (k >= 2) & (k <= MAX_PADS),
+            f"integer in [2, {MAX_PADS}]",
+        )
         sp = _need(cols, shape, "pad_spacing")
         _ranged("pad_spacing", sp, sp > 0, "> 0")
         out = {"n_pads": np.broadcast_to(k, (n,)).copy(), "pad_spacing": sp}
@@ -195,8 +243,9 @@ def footprint_geometry(shape: str, cols: dict, n: int) -> dict:
         else:
             out["pad_radius"] = _need(cols, shape, "pad_radius")
         return out
-    raise ValueError(f"shape = {shape!r} is invalid; valid values: ellipse, "
-                     + ", ".join(SHAPE_KEYS))
+    raise ValueError(
+        f"shape = {shape!r} is invalid; valid values: ellipse, " + ", ".join(SHAPE_KEYS)
+    )
 
 
 def footprint_patch(shape: str, geo: dict, vertices=None, pad_shape: str = "disk"):
@@ -217,15 +266,23 @@ def footprint_patch(shape: str, geo: dict, vertices=None, pad_shape: str = "disk
         return Rectangle(geo["length"], geo["width"])
     if shape == "polygon":
         s = geo["scale"]
-        return Polygon([(s * float(x), s * float(y)) for x, y in vertices])
+        return Polygon(tuple((s * float(x), s * float(y)) for x, y in vertices))
     k = int(geo["n_pads"])
     rho = geo["pad_spacing"] / (2.0 * math.sin(math.pi / k))
     # on the axes exactly (cos(pi/2) is 6e-17, not 0: a layout symmetric about an axis
     # stays symmetric to the last bit)
-    centres = [tuple(0.0 if abs(c) < 1e-12 * rho else c
-                     for c in (rho * math.cos(math.pi / 2 + 2 * math.pi * i / k),
-                               rho * math.sin(math.pi / 2 + 2 * math.pi * i / k)))
-               for i in range(k)]
+    centres = [
+        tuple(
+            0.0 if abs(c) < 1e-12 * rho else c
+            for c in (
+                rho * math.cos(math.pi / 2 + 2 * math.pi * i / k),
+                rho * math.sin(math.pi / 2 + 2 * math.pi * i / k),
+            )
+        )
+        for i in range(k)
+    ]
     if pad_shape == "rectangle":
-        return Pads([Rectangle(geo["pad_length"], geo["pad_width"], centre=c) for c in centres])
-    return Pads([Disk(geo["pad_radius"], centre=c) for c in centres])
+        return Pads(
+            tuple(Rectangle(geo["pad_length"], geo["pad_width"], centre=c) for c in centres)
+        )
+    return Pads(tuple(Disk(geo["pad_radius"], centre=c) for c in centres))

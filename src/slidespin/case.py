@@ -37,8 +37,16 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
-__all__ = ["Case", "load_case", "case_from_dict", "read_toml", "MAX_FILE_BYTES",
-           "MAX_NAME_CHARS", "MAX_DEPTH", "MAX_STEPS_LIMIT"]
+__all__ = [
+    "Case",
+    "load_case",
+    "case_from_dict",
+    "read_toml",
+    "MAX_FILE_BYTES",
+    "MAX_NAME_CHARS",
+    "MAX_DEPTH",
+    "MAX_STEPS_LIMIT",
+]
 
 #: largest case file or sweep specification read [bytes] (real ones are about 1 kB)
 MAX_FILE_BYTES = 1_000_000
@@ -61,13 +69,36 @@ _PLACEMENT = {"centre", "angle", "angle_deg"}
 _SHAPES = ("ellipse", "circle", *_FOOTPRINT_KEYS, "pads")
 
 _TABLES = {
-    "patch": {"shape", "a", "b", "eccentricity", "radius", "vertices", "length", "width",
-              "inner_radius", "outer_radius", "centre", "angle", "angle_deg", "pads"},
+    "patch": {
+        "shape",
+        "a",
+        "b",
+        "eccentricity",
+        "radius",
+        "vertices",
+        "length",
+        "width",
+        "inner_radius",
+        "outer_radius",
+        "centre",
+        "angle",
+        "angle_deg",
+        "pads",
+    },
     "pressure": {"law", "xi_c", "eta_c"},
     "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg"},
     "body": {"mass", "moment_of_inertia", "inertia_ratio"},
     "initial": {
-        "x", "y", "phi", "phi_deg", "vx", "vy", "omega", "speed", "theta", "theta_deg",
+        "x",
+        "y",
+        "phi",
+        "phi_deg",
+        "vx",
+        "vy",
+        "omega",
+        "speed",
+        "theta",
+        "theta_deg",
     },
     "solver": {"g", "rtol", "max_steps", "t_end"},
     "load": set(LOAD_KEYS),
@@ -151,15 +182,17 @@ def case_from_dict(data: dict) -> Case:
         extra = sorted(set(p) - {"shape", "radius"})
         if extra:
             raise ValueError(f"[patch] shape 'circle' takes only 'radius', not {extra[0]!r}")
-        patch = _in("patch", Circle,
-                    v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
+        patch = _in("patch", Circle, v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
     else:
         extra = sorted(set(p) - {"shape", "a", "b", "eccentricity", "radius"})
         if extra:
-            raise ValueError(f"[patch] shape 'ellipse' takes a and b or eccentricity, not "
-                             f"{extra[0]!r}")
+            raise ValueError(
+                f"[patch] shape 'ellipse' takes a and b or eccentricity, not {extra[0]!r}"
+            )
         if "radius" in p:
-            raise ValueError("[patch] 'radius' is for shape = 'circle'; an ellipse takes a and b or eccentricity")
+            raise ValueError(
+                "[patch] 'radius' is for shape = 'circle'; an ellipse takes a and b or eccentricity"
+            )
         a = v.positive("[patch] a", _need(p, "patch", "a"), "m")
         if ("b" in p) == ("eccentricity" in p):
             raise ValueError("[patch] give exactly one of 'b' and 'eccentricity' for an ellipse")
@@ -171,12 +204,17 @@ def case_from_dict(data: dict) -> Case:
 
     pr = dict(data["pressure"])
     law_name = _need(pr, "pressure", "law")
-    law = _in("pressure", pressure_law_from_name, law_name,
-              **{k: val for k, val in pr.items() if k != "law"})
+    law = _in(
+        "pressure",
+        pressure_law_from_name,
+        law_name,
+        **{k: val for k, val in pr.items() if k != "law"},
+    )
 
     fr = data["friction"]
     friction = _in(
-        "friction", FrictionTensor,
+        "friction",
+        FrictionTensor,
         fx=_need(fr, "friction", "fx"),
         fy=_need(fr, "friction", "fy"),
         f=fr.get("f", 0.0),
@@ -203,22 +241,26 @@ def case_from_dict(data: dict) -> Case:
     x0 = v.finite("[initial] x", ini.get("x", 0.0))
     y0 = v.finite("[initial] y", ini.get("y", 0.0))
     if has_speed:
-        speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf,
-                           hi_open=True)
-        state = _in("initial", State.from_speed, speed, omega,
-                    _angle(ini, "initial", "theta"), phi, x0, y0)
+        speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf, hi_open=True)
+        state = _in(
+            "initial", State.from_speed, speed, omega, _angle(ini, "initial", "theta"), phi, x0, y0
+        )
     else:
-        state = _in("initial", State, x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0),
-                    omega)
+        state = _in("initial", State, x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0), omega)
 
     so = data.get("solver", {})
     g = v.positive("[solver] g", so.get("g", 9.81), "m/s^2")
     rtol = v.in_range("[solver] rtol", so.get("rtol", 1e-10), 0.0, 1e-3, lo_open=True)
     max_steps = so.get("max_steps", 200_000)
-    if (isinstance(max_steps, bool) or not isinstance(max_steps, int)
-            or not 1 <= max_steps <= MAX_STEPS_LIMIT):
-        raise ValueError(f"[solver] max_steps = {max_steps!r} is invalid; valid range: "
-                         f"integer >= 1 and <= {MAX_STEPS_LIMIT}")
+    if (
+        isinstance(max_steps, bool)
+        or not isinstance(max_steps, int)
+        or not 1 <= max_steps <= MAX_STEPS_LIMIT
+    ):
+        raise ValueError(
+            f"[solver] max_steps = {max_steps!r} is invalid; valid range: "
+            f"integer >= 1 and <= {MAX_STEPS_LIMIT}"
+        )
     name = check_name(data.get("name", ""))
     load = load_from_table(data["load"]) if "load" in data else None
     incline = incline_from_table(data["incline"]) if "incline" in data else None
@@ -232,44 +274,63 @@ def _footprint(p: dict, where: str, nested: bool = False):
     """A footprint from a [patch] table (or one [[patch.pads]] entry, ``nested``)."""
     from .footprint import Annulus, Disk, Pads, Polygon, Rectangle
 
-    shape = v.choice(f"[{where}] shape", _need(p, where, "shape"),
-                     tuple(_FOOTPRINT_KEYS) if nested else (*_FOOTPRINT_KEYS, "pads"))
-    allowed = {"shape", "pads"} if shape == "pads" else (
-        {"shape"} | _FOOTPRINT_KEYS[shape] | _PLACEMENT)
+    shape = v.choice(
+        f"[{where}] shape",
+        _need(p, where, "shape"),
+        tuple(_FOOTPRINT_KEYS) if nested else (*_FOOTPRINT_KEYS, "pads"),
+    )
+    allowed = (
+        {"shape", "pads"} if shape == "pads" else ({"shape"} | _FOOTPRINT_KEYS[shape] | _PLACEMENT)
+    )
     for key in p:
         if key not in allowed:
-            raise ValueError(f"[{where}] shape {shape!r} does not take {key!r}; valid keys: "
-                             + ", ".join(sorted(allowed)))
+            raise ValueError(
+                f"[{where}] shape {shape!r} does not take {key!r}; valid keys: "
+                + ", ".join(sorted(allowed))
+            )
     if shape == "pads":
         pads = _need(p, where, "pads")
         if not isinstance(pads, list) or not pads or not all(isinstance(x, dict) for x in pads):
             raise ValueError(f"[{where}] pads must be one or more [[{where}.pads]] tables")
         items = [_footprint(x, f"{where}.pads[{i}]", nested=True) for i, x in enumerate(pads)]
         return _in(where, Pads, items)
-    place = {"centre": _pair(p.get("centre", (0.0, 0.0)), where, "centre"),
-             "angle": _angle(p, where, "angle")}
+    place = {
+        "centre": _pair(p.get("centre", (0.0, 0.0)), where, "centre"),
+        "angle": _angle(p, where, "angle"),
+    }
     if shape == "polygon":
         verts = _need(p, where, "vertices")
         if not isinstance(verts, list):
-            raise ValueError(f"[{where}] vertices = {_short(verts)} is invalid; valid values: "
-                             "an array of at least 3 pairs [xi, eta] in m")
+            raise ValueError(
+                f"[{where}] vertices = {_short(verts)} is invalid; valid values: "
+                "an array of at least 3 pairs [xi, eta] in m"
+            )
         pts = [_pair(x, where, f"vertices[{i}]") for i, x in enumerate(verts)]
         return _in(where, Polygon, pts, **place)
     if shape == "rectangle":
-        return _in(where, Rectangle, _need(p, where, "length"), _need(p, where, "width"),
-                   **place)
+        return _in(where, Rectangle, _need(p, where, "length"), _need(p, where, "width"), **place)
     if shape == "annulus":
-        return _in(where, Annulus, _need(p, where, "inner_radius"),
-                   _need(p, where, "outer_radius"), **place)
+        return _in(
+            where,
+            Annulus,
+            _need(p, where, "inner_radius"),
+            _need(p, where, "outer_radius"),
+            **place,
+        )
     return _in(where, Disk, _need(p, where, "radius"), **place)
 
 
 def _pair(value, where: str, key: str) -> tuple[float, float]:
     """[xi, eta] of real numbers [m]."""
-    if (not isinstance(value, (list, tuple)) or len(value) != 2
-            or not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value)):
-        raise ValueError(f"[{where}] {key} = {_short(value)} is invalid; valid values: a pair "
-                         "[xi, eta] of real numbers in m")
+    if (
+        not isinstance(value, (list, tuple))
+        or len(value) != 2
+        or not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value)
+    ):
+        raise ValueError(
+            f"[{where}] {key} = {_short(value)} is invalid; valid values: a pair "
+            "[xi, eta] of real numbers in m"
+        )
     return (v.finite(f"[{where}] {key}[0]", value[0]), v.finite(f"[{where}] {key}[1]", value[1]))
 
 
@@ -278,8 +339,10 @@ def check_name(name, key: str = "name") -> str:
     if not isinstance(name, str):
         raise ValueError(f"{key} = {_short(name)} must be a string")
     if len(name) > MAX_NAME_CHARS:
-        raise ValueError(f"{key} is {len(name)} characters long; valid: a string of at most "
-                         f"{MAX_NAME_CHARS} characters")
+        raise ValueError(
+            f"{key} is {len(name)} characters long; valid: a string of at most "
+            f"{MAX_NAME_CHARS} characters"
+        )
     return name
 
 
@@ -293,18 +356,24 @@ def check_document(data, where: tuple = (), depth: int = 0) -> None:
     """Refuse what no valid case file or sweep spec contains, naming the key: nesting deeper
     than :data:`MAX_DEPTH`, and integers outside the 64-bit range (e.g. ``2**64``)."""
     if depth > MAX_DEPTH:
-        raise ValueError(f"{_key(where)} is nested {depth} levels deep; valid: at most "
-                         f"{MAX_DEPTH} levels of tables and arrays")
+        raise ValueError(
+            f"{_key(where)} is nested {depth} levels deep; valid: at most "
+            f"{MAX_DEPTH} levels of tables and arrays"
+        )
     if isinstance(data, dict):
         items = ((where + (str(k),), val) for k, val in data.items())
     elif isinstance(data, list):
-        items = ((where[:-1] + (f"{where[-1] if where else ''}[{i}]",), val)
-                 for i, val in enumerate(data))
+        items = (
+            (where[:-1] + (f"{where[-1] if where else ''}[{i}]",), val)
+            for i, val in enumerate(data)
+        )
     else:
         if isinstance(data, int) and not isinstance(data, bool) and abs(data) > _INT64:
-            raise ValueError(f"{_key(where)} = {_short(data, 40)} does not fit a 64-bit "
-                             f"integer; valid range: [-{_INT64}, {_INT64}] (and the key's own "
-                             "range)")
+            raise ValueError(
+                f"{_key(where)} = {_short(data, 40)} does not fit a 64-bit "
+                f"integer; valid range: [-{_INT64}, {_INT64}] (and the key's own "
+                "range)"
+            )
         return
     for key, val in items:
         check_document(val, key, depth + 1)
@@ -333,15 +402,19 @@ def read_toml(path, what: str, max_bytes: int = MAX_FILE_BYTES) -> dict:
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise ValueError(f"{what} {name!r} is not UTF-8 text (byte {raw[exc.start]:#04x} at "
-                         f"offset {exc.start}); valid: a UTF-8 TOML file") from None
+        raise ValueError(
+            f"{what} {name!r} is not UTF-8 text (byte {raw[exc.start]:#04x} at "
+            f"offset {exc.start}); valid: a UTF-8 TOML file"
+        ) from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ValueError(f"{what} {name!r} is not valid TOML: {exc}") from None
     except RecursionError:
-        raise ValueError(f"{what} {name!r} is nested too deeply; valid: at most {MAX_DEPTH} "
-                         "levels of tables and arrays") from None
+        raise ValueError(
+            f"{what} {name!r} is nested too deeply; valid: at most {MAX_DEPTH} "
+            "levels of tables and arrays"
+        ) from None
     try:
         check_document(data)
     except ValueError as exc:

@@ -42,7 +42,26 @@ Parameters a spec may fix or vary (SI units, angles in radians):
 ``v0``, ``theta0``  initial speed of G [m/s] and its direction [rad]
 ``omega0``          initial spin [rad/s]
 ``phi0``, ``x0``, ``y0``  initial body angle [rad] and position [m]
+``shape``           ellipse (default) | disk | annulus | rectangle | polygon | pads (fixed)
 ==================  ==========================================================
+
+Footprints (``shape`` other than ellipse; issue #12) take the keys of the case file's
+``[patch]`` table instead of ``a``, ``b``, ``e``, ``aspect``: ``radius`` (disk);
+``outer_radius`` and one of ``inner_radius``, ``ring_width``, ``radius_ratio`` (annulus);
+``length`` and one of ``width``, ``aspect`` = width/length (rectangle); ``vertices``
+(fixed) and ``scale`` (polygon); ``pad_shape``, ``n_pads``, ``pad_spacing`` and
+``pad_radius`` or ``pad_length``, ``pad_width`` (pads: equal, unrotated, centred on a
+circle about the origin, the first on the η axis, neighbours ``pad_spacing`` apart). ``I_star`` is then I/(m ℓ²) with ℓ the footprint's extent
+(:attr:`slidespin.Body.length_unit`). Each distinct patch is built once per chunk and the
+cases go to :func:`slidespin.batch.simulate_bodies` together: every case equals a single
+:func:`slidespin.simulate` call on the same body, to the last bit.
+
+The top-level key ``compute`` chooses the result of each case: ``"stop"`` (default; the
+compiled batch engine), ``"statics"`` (critical tilt, load factor, sticks or slides) or
+``"loaded"`` (a run with applied loads and tilt to ``t_end``); the last two add the load and
+tilt keys ``load_fx``, ``load_fy``, ``load_torque``, ``load_frame``, ``incline_angle`` (or
+``incline_angle_deg``), ``incline_downhill`` and ``t_end`` (``slidespin.sweep_loads``).
+:func:`to_pandas` reads a sweep as a pandas table.
 """
 
 from __future__ import annotations
@@ -54,6 +73,7 @@ import math
 import os
 import sys
 import time
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -64,26 +84,84 @@ from ._cases import SHAPE_KEYS, footprint_geometry, footprint_patch, validated_c
 from .batch import simulate_bodies, simulate_cases
 from .case import check_document, check_name
 from .pressure import LAW_NAMES
-from .sweep_loads import (LOAD_COLUMNS, LOAD_PARAMETERS, LOADED_COLUMNS, LOADED_STATUSES,
-                          LOADED_UNCONVERGED, MODES, STATICS_COLUMNS, STATICS_ENDINGS,
-                          STATICS_STATUSES, compute_loaded, compute_statics, load_columns)
+from .sweep_loads import (
+    LOAD_COLUMNS,
+    LOAD_PARAMETERS,
+    LOADED_COLUMNS,
+    LOADED_STATUSES,
+    LOADED_UNCONVERGED,
+    MODES,
+    STATICS_COLUMNS,
+    STATICS_ENDINGS,
+    STATICS_STATUSES,
+    compute_loaded,
+    compute_statics,
+    load_columns,
+)
 
-__all__ = ["SweepSpec", "load_spec", "sweep", "read_sweep", "split_unconverged",
-           "count_outcomes", "compute_chunk", "compute_chunks", "connect_dask", "PARAMETERS",
-           "SweepError", "SweepResult", "MAX_CASES", "MAX_AXIS", "MAX_CHUNK", "SHAPES",
-           "chunk_columns", "to_pandas"]
+__all__ = [
+    "SweepSpec",
+    "load_spec",
+    "sweep",
+    "read_sweep",
+    "split_unconverged",
+    "count_outcomes",
+    "compute_chunk",
+    "compute_chunks",
+    "connect_dask",
+    "PARAMETERS",
+    "SweepError",
+    "SweepResult",
+    "MAX_CASES",
+    "MAX_AXIS",
+    "MAX_CHUNK",
+    "SHAPES",
+    "chunk_columns",
+    "to_pandas",
+]
 
 #: sweep parameters and their defaults (None: required, or derived from another one)
 PARAMETERS = {
-    "a": None, "b": None, "e": None, "aspect": None, "law": "uniform", "xi_c": 0.0,
-    "eta_c": 0.0, "fx": None, "fy": None, "mu": None, "f": 0.0, "frame": "plane",
-    "angle": 0.0, "mass": 1.0, "I_star": None, "moment_of_inertia": None, "g": 9.81,
-    "v0": 0.0, "theta0": 0.0, "omega0": 0.0, "phi0": 0.0, "x0": 0.0, "y0": 0.0,
+    "a": None,
+    "b": None,
+    "e": None,
+    "aspect": None,
+    "law": "uniform",
+    "xi_c": 0.0,
+    "eta_c": 0.0,
+    "fx": None,
+    "fy": None,
+    "mu": None,
+    "f": 0.0,
+    "frame": "plane",
+    "angle": 0.0,
+    "mass": 1.0,
+    "I_star": None,
+    "moment_of_inertia": None,
+    "g": 9.81,
+    "v0": 0.0,
+    "theta0": 0.0,
+    "omega0": 0.0,
+    "phi0": 0.0,
+    "x0": 0.0,
+    "y0": 0.0,
     # footprints (issue #12): the keys of the TOML [patch] table, see _cases.SHAPE_KEYS
-    "shape": "ellipse", "radius": None, "outer_radius": None, "inner_radius": None,
-    "ring_width": None, "radius_ratio": None, "length": None, "width": None,
-    "vertices": None, "scale": 1.0, "pad_shape": "disk", "n_pads": 2.0, "pad_spacing": None,
-    "pad_radius": None, "pad_length": None, "pad_width": None,
+    "shape": "ellipse",
+    "radius": None,
+    "outer_radius": None,
+    "inner_radius": None,
+    "ring_width": None,
+    "radius_ratio": None,
+    "length": None,
+    "width": None,
+    "vertices": None,
+    "scale": 1.0,
+    "pad_shape": "disk",
+    "n_pads": 2.0,
+    "pad_spacing": None,
+    "pad_radius": None,
+    "pad_length": None,
+    "pad_width": None,
     # loads and tilt (issue #13, compute = "statics" | "loaded"): see slidespin.sweep_loads
     **LOAD_PARAMETERS,
 }
@@ -91,17 +169,45 @@ PARAMETERS = {
 SHAPES = ("ellipse", *SHAPE_KEYS)
 _ELLIPSE_KEYS = ("a", "b", "e", "aspect")
 _GEOMETRY_KEYS = set(_ELLIPSE_KEYS).union(*SHAPE_KEYS.values())
-_STRING_PARAMS = {"law": LAW_NAMES, "frame": ("plane", "body"), "shape": SHAPES,
-                  "pad_shape": ("disk", "rectangle"), "load_frame": ("plane", "body")}
+_STRING_PARAMS = {
+    "law": LAW_NAMES,
+    "frame": ("plane", "body"),
+    "shape": SHAPES,
+    "pad_shape": ("disk", "rectangle"),
+    "load_frame": ("plane", "body"),
+}
 _FIXED_ONLY = ("shape", "pad_shape", "vertices")
-_EXCLUSIVE = (("b", "e", "aspect"), ("fy", "mu"), ("I_star", "moment_of_inertia"),
-              ("inner_radius", "ring_width", "radius_ratio"), ("width", "aspect"),
-              ("incline_angle", "incline_angle_deg"))
-_TOP_KEYS = {"name", "description", "kind", "chunk_size", "rtol", "fixed", "vary", "random",
-             "compute"}
+_EXCLUSIVE = (
+    ("b", "e", "aspect"),
+    ("fy", "mu"),
+    ("I_star", "moment_of_inertia"),
+    ("inner_radius", "ring_width", "radius_ratio"),
+    ("width", "aspect"),
+    ("incline_angle", "incline_angle_deg"),
+)
+_TOP_KEYS = {
+    "name",
+    "description",
+    "kind",
+    "chunk_size",
+    "rtol",
+    "fixed",
+    "vary",
+    "random",
+    "compute",
+}
 RESULT_COLUMNS = (
-    "t_stop", "beta_stop", "theta_stop", "phi_stop", "x_stop", "y_stop", "path_length",
-    "ending", "status", "saddle_energy", "n_steps",
+    "t_stop",
+    "beta_stop",
+    "theta_stop",
+    "phi_stop",
+    "x_stop",
+    "y_stop",
+    "path_length",
+    "ending",
+    "status",
+    "saddle_energy",
+    "n_steps",
 )
 MANIFEST = "manifest.json"
 #: smallest number of cases per task sent to an executor (Dask or concurrent.futures)
@@ -192,7 +298,7 @@ class SweepSpec:
                 if isinstance(spec, list):
                     cols[k] = _random_values(k, spec, rng, stop)[start:stop]
                 else:
-                    rng.bit_generator.advance(start)
+                    rng.bit_generator.advance(start)  # type: ignore[attr-defined]  # PCG64
                     cols[k] = _random_values(k, spec, rng, stop - start)
         for k, val in fixed.items():
             if k in ("vertices",):  # not a column: read from the spec by the footprint builder
@@ -228,24 +334,27 @@ def _grid_values(name, spec):
         _only(spec, {"start", "stop", "num", "log"}, where)
         num = spec.get("num")
         if isinstance(num, bool) or not isinstance(num, int) or not 1 <= num <= MAX_AXIS:
-            raise SweepError(f"{where}.num = {num!r} is invalid; valid range: integer >= 1 "
-                             f"and <= {MAX_AXIS}")
+            raise SweepError(
+                f"{where}.num = {num!r} is invalid; valid range: integer >= 1 and <= {MAX_AXIS}"
+            )
         lo = v.finite(f"{where}.start", spec.get("start"))
         hi = v.finite(f"{where}.stop", spec.get("stop"))
         if _flag(where, spec):
             if lo <= 0 or hi <= 0:
-                raise SweepError(f"{where}: log spacing needs start > 0 and stop > 0, got "
-                                 f"start = {lo!r}, stop = {hi!r}")
+                raise SweepError(
+                    f"{where}: log spacing needs start > 0 and stop > 0, got "
+                    f"start = {lo!r}, stop = {hi!r}"
+                )
             vals = np.geomspace(lo, hi, num)
         else:
             with np.errstate(over="ignore", invalid="ignore"):
                 vals = np.linspace(lo, hi, num)
             if not np.isfinite(vals).all():
-                raise SweepError(f"{where}: stop - start = {hi!r} - {lo!r} overflows; valid: "
-                                 "a finite difference")
+                raise SweepError(
+                    f"{where}: stop - start = {hi!r} - {lo!r} overflows; valid: a finite difference"
+                )
         return [_check_value(name, float(x)) for x in vals]
-    raise SweepError(f"{where} = {spec!r}: give a list of values or "
-                     "{start, stop, num[, log]}")
+    raise SweepError(f"{where} = {spec!r}: give a list of values or {{start, stop, num[, log]}}")
 
 
 def _random_values(name, spec, rng, n):
@@ -257,8 +366,9 @@ def _random_values(name, spec, rng, n):
         arr[:] = [vals[i] for i in pick]
         return arr
     if not isinstance(spec, dict):
-        raise SweepError(f"{where} = {spec!r}: give a list of values to pick from or "
-                         "{low, high[, log]}")
+        raise SweepError(
+            f"{where} = {spec!r}: give a list of values to pick from or {{low, high[, log]}}"
+        )
     _only(spec, {"low", "high", "log"}, where)
     lo = v.finite(f"{where}.low", spec.get("low"))
     hi = v.finite(f"{where}.high", spec.get("high"))
@@ -269,8 +379,9 @@ def _random_values(name, spec, rng, n):
             raise SweepError(f"{where}: log sampling needs low > 0, got low = {lo!r}")
         return np.exp(rng.uniform(math.log(lo), math.log(hi), size=n))
     if not math.isfinite(hi - lo):
-        raise SweepError(f"{where}: high - low = {hi!r} - {lo!r} overflows; valid: a finite "
-                         "difference")
+        raise SweepError(
+            f"{where}: high - low = {hi!r} - {lo!r} overflows; valid: a finite difference"
+        )
     return rng.uniform(lo, hi, size=n)
 
 
@@ -279,17 +390,24 @@ def _only(table, allowed, where):
         raise SweepError(f"{where} must be a table, got {table!r}")
     for k in table:
         if k not in allowed:
-            raise SweepError(f"unknown key {k!r} in {where}; valid keys: {', '.join(sorted(allowed))}")
+            raise SweepError(
+                f"unknown key {k!r} in {where}; valid keys: {', '.join(sorted(allowed))}"
+            )
 
 
 def _check_value(name, value, param=None):
     """``value`` checked as a value of parameter ``param`` (default ``name``), named ``name``."""
     param = name if param is None else param
     if param == "vertices":
-        if (not isinstance(value, list) or len(value) < 3
-                or not all(isinstance(p, list) and len(p) == 2 for p in value)):
-            raise SweepError(f"{name} = {value!r} is invalid; valid values: a list of at least "
-                             "3 pairs [xi, eta] in m")
+        if (
+            not isinstance(value, list)
+            or len(value) < 3
+            or not all(isinstance(p, list) and len(p) == 2 for p in value)
+        ):
+            raise SweepError(
+                f"{name} = {value!r} is invalid; valid values: a list of at least "
+                "3 pairs [xi, eta] in m"
+            )
         for i, p in enumerate(value):
             for j, x in enumerate(p):
                 v.finite(f"{name}[{i}][{j}]", x)
@@ -318,12 +436,15 @@ def _validate_spec(data: dict) -> SweepSpec:
     shape = _check_value("[fixed] shape", fixed.get("shape", "ellipse"), "shape")
     allowed = set(_ELLIPSE_KEYS) if shape == "ellipse" else set(SHAPE_KEYS[shape])
     for k in sorted(given & _GEOMETRY_KEYS - allowed):
-        raise SweepError(f"shape = {shape!r} does not take {k!r}; valid patch keys: "
-                         f"{', '.join(sorted(allowed))}")
+        raise SweepError(
+            f"shape = {shape!r} does not take {k!r}; valid patch keys: {', '.join(sorted(allowed))}"
+        )
     if mode == "stop":
         for k in sorted(given & set(LOAD_PARAMETERS)):
-            raise SweepError(f"{k!r} is a load, tilt or time bound: it needs compute = "
-                             "'statics' or 'loaded' (the default 'stop' coasts on a level plane)")
+            raise SweepError(
+                f"{k!r} is a load, tilt or time bound: it needs compute = "
+                "'statics' or 'loaded' (the default 'stop' coasts on a level plane)"
+            )
     elif mode == "statics" and "t_end" in given:
         raise SweepError("'t_end' is for compute = 'loaded'; compute = 'statics' has no time")
     for group in _EXCLUSIVE:
@@ -342,8 +463,9 @@ def _validate_spec(data: dict) -> SweepSpec:
     check_name(data.get("name", ""))
     chunk = data.get("chunk_size", 1000)
     if isinstance(chunk, bool) or not isinstance(chunk, int) or not 1 <= chunk <= MAX_CHUNK:
-        raise SweepError(f"chunk_size = {chunk!r} is invalid; valid range: integer >= 1 "
-                         f"and <= {MAX_CHUNK}")
+        raise SweepError(
+            f"chunk_size = {chunk!r} is invalid; valid range: integer >= 1 and <= {MAX_CHUNK}"
+        )
     if "rtol" in data:
         v.in_range("rtol", data["rtol"], 0.0, 1e-3, lo_open=True)
     if kind == "grid":
@@ -352,8 +474,10 @@ def _validate_spec(data: dict) -> SweepSpec:
         sizes = [len(_grid_values(k, spec)) for k, spec in vary.items()]
         n = math.prod(sizes)
         if n > MAX_CASES:
-            raise SweepError(f"the grid [vary] has {' x '.join(map(str, sizes))} = {n} cases; "
-                             f"valid: at most {MAX_CASES} cases in one sweep")
+            raise SweepError(
+                f"the grid [vary] has {' x '.join(map(str, sizes))} = {n} cases; "
+                f"valid: at most {MAX_CASES} cases in one sweep"
+            )
     else:
         rnd = data.get("random")
         if rnd is None:
@@ -361,12 +485,14 @@ def _validate_spec(data: dict) -> SweepSpec:
         _only(rnd, {"samples", "seed"}, "[random]")
         n = rnd.get("samples")
         if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_CASES:
-            raise SweepError(f"[random] samples = {n!r} is invalid; valid range: integer >= 1 "
-                             f"and <= {MAX_CASES}")
+            raise SweepError(
+                f"[random] samples = {n!r} is invalid; valid range: integer >= 1 and <= {MAX_CASES}"
+            )
         seed = rnd.get("seed", 0)
         if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**63:
-            raise SweepError(f"[random] seed = {seed!r} is invalid; valid range: integer in "
-                             "[0, 2^63 - 1]")
+            raise SweepError(
+                f"[random] seed = {seed!r} is invalid; valid range: integer in [0, 2^63 - 1]"
+            )
         for k, spec in vary.items():
             _random_values(k, spec, np.random.default_rng(0), 1)
     canonical = copy.deepcopy(data)
@@ -446,12 +572,25 @@ def _case_fields(cols: dict) -> dict:
         raise SweepError(f"v0 = {float(v0[i])!r} (case {i}) is invalid; valid range: >= 0")
     th = get("theta0").astype(float)
     fields = dict(
-        a=a, b=b, law=get("law"), xi_c=get("xi_c").astype(float),
-        eta_c=get("eta_c").astype(float), fx=fx, fy=fy, f=get("f").astype(float),
-        frame=get("frame"), angle=get("angle").astype(float), mass=mass,
-        moment_of_inertia=inertia, g=get("g").astype(float), x=get("x0").astype(float),
-        y=get("y0").astype(float), phi=get("phi0").astype(float), vx=v0 * np.cos(th),
-        vy=v0 * np.sin(th), omega=get("omega0").astype(float),
+        a=a,
+        b=b,
+        law=get("law"),
+        xi_c=get("xi_c").astype(float),
+        eta_c=get("eta_c").astype(float),
+        fx=fx,
+        fy=fy,
+        f=get("f").astype(float),
+        frame=get("frame"),
+        angle=get("angle").astype(float),
+        mass=mass,
+        moment_of_inertia=inertia,
+        g=get("g").astype(float),
+        x=get("x0").astype(float),
+        y=get("y0").astype(float),
+        phi=get("phi0").astype(float),
+        vx=v0 * np.cos(th),
+        vy=v0 * np.sin(th),
+        omega=get("omega0").astype(float),
     )
     try:
         validated_columns(fields)
@@ -516,8 +655,11 @@ def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
         i_star = cols["I_star"].astype(float) if "I_star" in cols else None
     vertices = spec.data.get("fixed", {}).get("vertices")
     pad_shape = spec.data.get("fixed", {}).get("pad_shape", "disk")
-    law, xi_c, eta_c = _col(cols, "law"), _col(cols, "xi_c").astype(float), \
-        _col(cols, "eta_c").astype(float)
+    law, xi_c, eta_c = (
+        _col(cols, "law"),
+        _col(cols, "xi_c").astype(float),
+        _col(cols, "eta_c").astype(float),
+    )
     mass = _col(cols, "mass").astype(float)
     fx = _col(cols, "fx").astype(float)
     fy = cols["fy"].astype(float) if "fy" in cols else fx + cols["mu"].astype(float)
@@ -526,46 +668,80 @@ def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
     bodies, frictions = [], []
     body_cache: dict = {}
     fr_cache: dict = {}
-    f, frame, angle = (_col(cols, "f").astype(float), _col(cols, "frame"),
-                       _col(cols, "angle").astype(float))
+    f, frame, angle = (
+        _col(cols, "f").astype(float),
+        _col(cols, "frame"),
+        _col(cols, "angle").astype(float),
+    )
     for i in range(n):
-        key = (tuple(geo[i]), str(law[i]), xi_c[i], eta_c[i], mass[i],
-               None if inertia is None else inertia[i], None if i_star is None else i_star[i])
+        key = (
+            tuple(geo[i]),
+            str(law[i]),
+            xi_c[i],
+            eta_c[i],
+            mass[i],
+            None if inertia is None else inertia[i],
+            None if i_star is None else i_star[i],
+        )
         body = body_cache.get(key)
         if body is None:
             row = dict(zip(names, geo[i].tolist()))
             try:
-                patch = (Ellipse(row["a"], row["b"]) if shape == "ellipse"
-                         else footprint_patch(shape, row, vertices, pad_shape))
-                pl = pressure_law_from_name(str(law[i]), **(
-                    {"xi_c": float(xi_c[i]), "eta_c": float(eta_c[i])}
-                    if str(law[i]).lower() == "linear" else {}))
+                patch = (
+                    Ellipse(row["a"], row["b"])
+                    if shape == "ellipse"
+                    else footprint_patch(shape, row, vertices, pad_shape)
+                )
+                pl = pressure_law_from_name(
+                    str(law[i]),
+                    **(
+                        {"xi_c": float(xi_c[i]), "eta_c": float(eta_c[i])}
+                        if str(law[i]).lower() == "linear"
+                        else {}
+                    ),
+                )
                 if i_star is not None:
                     body = Body.from_inertia_ratio(patch, pl, float(mass[i]), float(i_star[i]))
                 else:
-                    body = Body(patch, pl, float(mass[i]),
-                                None if inertia is None else float(inertia[i]))
+                    body = Body(
+                        patch, pl, float(mass[i]), None if inertia is None else float(inertia[i])
+                    )
             except ValueError as exc:
-                what = ", ".join([f"{k} = {x!r}" for k, x in row.items()]
-                                 + [f"law = {str(law[i])!r}"])
-                raise SweepError(f"case {int(cols['case_id'][i])} ({shape}: {what}): {exc}"
-                                 ) from None
+                what = ", ".join(
+                    [f"{k} = {x!r}" for k, x in row.items()] + [f"law = {str(law[i])!r}"]
+                )
+                raise SweepError(
+                    f"case {int(cols['case_id'][i])} ({shape}: {what}): {exc}"
+                ) from None
             body_cache[key] = body
         bodies.append(body)
         fkey = (fx[i], fy[i], f[i], str(frame[i]), angle[i])
         fr = fr_cache.get(fkey)
         if fr is None:
-            fr = fr_cache[fkey] = FrictionTensor(float(fx[i]), float(fy[i]), float(f[i]),
-                                                 str(frame[i]), float(angle[i]))
+            fr = fr_cache[fkey] = FrictionTensor(
+                float(fx[i]), float(fy[i]), float(f[i]), str(frame[i]), float(angle[i])
+            )
         frictions.append(fr)
     v0 = _col(cols, "v0").astype(float)
     th = _col(cols, "theta0").astype(float)
     fields = dict(
-        law=law, xi_c=xi_c, eta_c=eta_c, fx=fx, fy=fy, f=f, frame=frame, angle=angle,
-        mass=mass, moment_of_inertia=np.array([b.moment_of_inertia for b in bodies]),
-        g=_col(cols, "g").astype(float), x=_col(cols, "x0").astype(float),
-        y=_col(cols, "y0").astype(float), phi=_col(cols, "phi0").astype(float),
-        vx=v0 * np.cos(th), vy=v0 * np.sin(th), omega=_col(cols, "omega0").astype(float),
+        law=law,
+        xi_c=xi_c,
+        eta_c=eta_c,
+        fx=fx,
+        fy=fy,
+        f=f,
+        frame=frame,
+        angle=angle,
+        mass=mass,
+        moment_of_inertia=np.array([b.moment_of_inertia for b in bodies]),
+        g=_col(cols, "g").astype(float),
+        x=_col(cols, "x0").astype(float),
+        y=_col(cols, "y0").astype(float),
+        phi=_col(cols, "phi0").astype(float),
+        vx=v0 * np.cos(th),
+        vy=v0 * np.sin(th),
+        omega=_col(cols, "omega0").astype(float),
     )
     if shape != "ellipse":
         if (v0 < 0).any():
@@ -575,8 +751,9 @@ def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
         # the footprint's length unit in the place of a (its own pressure check is the
         # Body's: the ellipse's core condition of the linear law does not apply)
         unit = np.array([b.length_unit for b in bodies])
-        validated_columns({**{k: fields[k] for k in fields if k != "law"},
-                           "a": unit, "b": unit, "law": "uniform"})
+        validated_columns(
+            {**{k: fields[k] for k in fields if k != "law"}, "a": unit, "b": unit, "law": "uniform"}
+        )
         table.update(_common_table(fields, unit))
     states = np.column_stack([fields[k] for k in ("x", "y", "phi", "vx", "vy", "omega")])
     loads = None
@@ -590,11 +767,28 @@ def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
 def _common_table(fields: dict, unit: np.ndarray) -> dict:
     """The tensor, body and initial-state columns of a footprint chunk."""
     out = {"length_unit": unit}
-    for k in ("law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
-              "moment_of_inertia", "g", "x", "y", "phi", "vx", "vy", "omega"):
+    for k in (
+        "law",
+        "xi_c",
+        "eta_c",
+        "fx",
+        "fy",
+        "f",
+        "frame",
+        "angle",
+        "mass",
+        "moment_of_inertia",
+        "g",
+        "x",
+        "y",
+        "phi",
+        "vx",
+        "vy",
+        "omega",
+    ):
         val = np.asarray(fields[k])
         out[_RENAMED.get(k, k)] = val.astype(str) if val.dtype == object else val
-    out["I_star"] = out["moment_of_inertia"] / (out["mass"] * unit ** 2)
+    out["I_star"] = out["moment_of_inertia"] / (out["mass"] * unit**2)
     out["mu"] = out["fy"] - out["fx"]
     out["v0"] = np.hypot(out["vx0"], out["vy0"])
     out["theta0"] = np.arctan2(out["vy0"], out["vx0"])
@@ -604,7 +798,7 @@ def _common_table(fields: dict, unit: np.ndarray) -> dict:
 _RENAMED = {"x": "x0", "y": "y0", "phi": "phi0", "vx": "vx0", "vy": "vy0", "omega": "omega0"}
 
 
-def compute_chunk(spec_data: dict, index: int) -> dict:
+def compute_chunk(spec_data: dict | SweepSpec, index: int) -> dict:
     """Compute chunk ``index`` of a sweep (a pure function: usable as a Dask task).
 
     Returns a dict of equal-length columns (:func:`chunk_columns`): the case inputs and the
@@ -624,26 +818,36 @@ def compute_chunk(spec_data: dict, index: int) -> dict:
     out = dict(inp.table)
     given = set(spec.data.get("fixed", {})) | set(spec.data.get("vary", {}))
     if spec.mode == "statics":
-        out.update(compute_statics(inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {},
-                                   given))
+        out.update(
+            compute_statics(inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {}, given)
+        )
     elif spec.mode == "loaded":
-        out.update(compute_loaded(inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {},
-                                  given, rtol))
+        out.update(
+            compute_loaded(
+                inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {}, given, rtol
+            )
+        )
     else:
         # one batch per value of g (simulate_bodies shares g across its cases)
         parts = []
         for gv in np.unique(inp.g):
             sel = np.flatnonzero(inp.g == gv)
-            res = simulate_bodies([inp.bodies[i] for i in sel], [inp.frictions[i] for i in sel],
-                                  inp.states[sel], float(gv), rtol).as_dict()
+            res = simulate_bodies(
+                [inp.bodies[i] for i in sel],
+                [inp.frictions[i] for i in sel],
+                inp.states[sel],
+                float(gv),
+                rtol,
+            ).as_dict()
             parts.append((sel, res))
         for k in RESULT_COLUMNS:
             col = None
             for sel, res in parts:
                 val = np.asarray(res[k])
                 if col is None:
-                    col = np.empty(inp.g.size, dtype=object if val.dtype.kind in "OU"
-                                   else val.dtype)
+                    col = np.empty(
+                        inp.g.size, dtype=object if val.dtype.kind in "OU" else val.dtype
+                    )
                 col[sel] = val
             assert col is not None
             out[k] = col.astype(str) if col.dtype == object else col
@@ -660,11 +864,33 @@ def _add_results(out: dict, res) -> None:
 def _input_table(cols: dict, fields: dict) -> dict:
     """The input columns of an ellipse chunk (the layout of every earlier sweep)."""
     out = {"case_id": cols["case_id"].astype(np.int64)}
-    for k in ("a", "b", "law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
-              "moment_of_inertia", "g", "x", "y", "phi", "vx", "vy", "omega"):
+    for k in (
+        "a",
+        "b",
+        "law",
+        "xi_c",
+        "eta_c",
+        "fx",
+        "fy",
+        "f",
+        "frame",
+        "angle",
+        "mass",
+        "moment_of_inertia",
+        "g",
+        "x",
+        "y",
+        "phi",
+        "vx",
+        "vy",
+        "omega",
+    ):
         val = np.asarray(fields[k])
-        out[{"x": "x0", "y": "y0", "phi": "phi0", "vx": "vx0", "vy": "vy0",
-             "omega": "omega0"}.get(k, k)] = val.astype(str) if val.dtype == object else val
+        out[
+            {"x": "x0", "y": "y0", "phi": "phi0", "vx": "vx0", "vy": "vy0", "omega": "omega0"}.get(
+                k, k
+            )
+        ] = val.astype(str) if val.dtype == object else val
     out["I_star"] = out["moment_of_inertia"] / (out["mass"] * out["a"] ** 2)
     out["mu"] = out["fy"] - out["fx"]
     out["aspect"] = out["b"] / out["a"]
@@ -686,7 +912,8 @@ def _limit_threads_in_dask_worker() -> None:
         return
     from ._jit import set_threads
 
-    set_threads(getattr(worker.state, "nthreads", None) or getattr(worker, "nthreads", 1))
+    nthreads = getattr(worker.state, "nthreads", None) or getattr(worker, "nthreads", None)
+    set_threads(int(nthreads or 1))
 
 
 def compute_chunks(spec_data: dict, indices) -> list:
@@ -700,14 +927,38 @@ def _require_pyarrow():
         import pyarrow  # noqa: F401
         import pyarrow.parquet  # noqa: F401
     except ImportError:  # pragma: no cover - pyarrow is a dependency
-        raise SweepError("sweeps write Parquet files and need pyarrow: pip install pyarrow") from None
+        raise SweepError(
+            "sweeps write Parquet files and need pyarrow: pip install pyarrow"
+        ) from None
 
 
 #: the columns of every chunk file, in order (inputs, derived inputs, results)
 CHUNK_COLUMNS = (
-    "case_id", "a", "b", "law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
-    "moment_of_inertia", "g", "x0", "y0", "phi0", "vx0", "vy0", "omega0", "I_star", "mu",
-    "aspect", "v0", "theta0",
+    "case_id",
+    "a",
+    "b",
+    "law",
+    "xi_c",
+    "eta_c",
+    "fx",
+    "fy",
+    "f",
+    "frame",
+    "angle",
+    "mass",
+    "moment_of_inertia",
+    "g",
+    "x0",
+    "y0",
+    "phi0",
+    "vx0",
+    "vy0",
+    "omega0",
+    "I_star",
+    "mu",
+    "aspect",
+    "v0",
+    "theta0",
 ) + RESULT_COLUMNS
 #: the geometry columns of a footprint chunk, per shape (derived keys included)
 _SHAPE_COLUMNS = {
@@ -717,8 +968,27 @@ _SHAPE_COLUMNS = {
     "polygon": ("scale",),
 }
 _FOOTPRINT_COMMON = (
-    "length_unit", "law", "xi_c", "eta_c", "fx", "fy", "f", "frame", "angle", "mass",
-    "moment_of_inertia", "g", "x0", "y0", "phi0", "vx0", "vy0", "omega0", "I_star", "mu", "v0",
+    "length_unit",
+    "law",
+    "xi_c",
+    "eta_c",
+    "fx",
+    "fy",
+    "f",
+    "frame",
+    "angle",
+    "mass",
+    "moment_of_inertia",
+    "g",
+    "x0",
+    "y0",
+    "phi0",
+    "vx0",
+    "vy0",
+    "omega0",
+    "I_star",
+    "mu",
+    "v0",
     "theta0",
 )
 
@@ -733,15 +1003,18 @@ def chunk_columns(spec: SweepSpec) -> tuple:
     ``pads``: ``n_pads``, ``pad_spacing``, the pad's size and ``pad_shape``) and
     ``length_unit`` (ℓ of I* = I/(m ℓ²)) in the place of ``a``, ``b``, ``aspect``. Statics
     and loaded sweeps add the load and tilt columns and their own results
-    (:mod:`slidespin.sweep_loads`).
+    (``slidespin.sweep_loads``).
     """
     shape = spec.shape
     if shape == "ellipse":
         inputs = CHUNK_COLUMNS[: -len(RESULT_COLUMNS)]
     else:
         if shape == "pads":
-            size = (("pad_length", "pad_width") if spec.data["fixed"].get("pad_shape") ==
-                    "rectangle" else ("pad_radius",))
+            size = (
+                ("pad_length", "pad_width")
+                if spec.data["fixed"].get("pad_shape") == "rectangle"
+                else ("pad_radius",)
+            )
             geo: tuple = ("n_pads", "pad_spacing", *size, "pad_shape")
         else:
             geo = _SHAPE_COLUMNS[shape]
@@ -755,8 +1028,8 @@ def chunk_columns(spec: SweepSpec) -> tuple:
 
 def _vocabulary(spec: SweepSpec) -> tuple:
     """(statuses, endings) a chunk of ``spec`` may hold."""
-    from .outcomes import ENDINGS, STATUSES
     from .loaded import LOADED_ENDINGS
+    from .outcomes import ENDINGS, STATUSES
 
     if spec.mode == "statics":
         return STATICS_STATUSES, STATICS_ENDINGS
@@ -769,8 +1042,15 @@ LOCK = ".lock"
 #: largest manifest read (its chunk list has one number per chunk)
 MAX_MANIFEST_BYTES = 128_000_000
 #: statuses in the order of the summaries: converged, flagged, unconverged
-STATUS_ORDER = ("stopped", "at_rest", "marginal", "saddle", "max_steps", "step_too_small",
-                "non_finite")
+STATUS_ORDER = (
+    "stopped",
+    "at_rest",
+    "marginal",
+    "saddle",
+    "max_steps",
+    "step_too_small",
+    "non_finite",
+)
 
 
 def _os_error(exc: OSError, path, resumable: bool = True) -> SweepError:
@@ -778,8 +1058,14 @@ def _os_error(exc: OSError, path, resumable: bool = True) -> SweepError:
     from ._io import os_error_kind
 
     what = os_error_kind(exc)
-    tail = ("; the finished chunks are kept: free the problem and rerun with --resume "
-            "(resume=True) to finish the sweep") if resumable else ""
+    tail = (
+        (
+            "; the finished chunks are kept: free the problem and rerun with --resume "
+            "(resume=True) to finish the sweep"
+        )
+        if resumable
+        else ""
+    )
     return SweepError(f"{what} while writing {str(path)!r} ({exc.strerror}){tail}")
 
 
@@ -841,9 +1127,11 @@ def _read_chunk(path: Path):
     try:
         return pq.read_table(path)
     except Exception as exc:  # noqa: BLE001 - pyarrow raises several types for bad files
-        raise SweepError(f"{str(path)!r} is not a readable Parquet file ({type(exc).__name__}: "
-                         f"{str(exc).splitlines()[0] if str(exc) else ''}); rerun "
-                         "slidespin sweep SPEC --out DIR --resume to recompute it") from None
+        raise SweepError(
+            f"{str(path)!r} is not a readable Parquet file ({type(exc).__name__}: "
+            f"{str(exc).splitlines()[0] if str(exc) else ''}); rerun "
+            "slidespin sweep SPEC --out DIR --resume to recompute it"
+        ) from None
 
 
 def _verify_chunk(out: Path, spec: SweepSpec, index: int):
@@ -885,7 +1173,9 @@ def count_outcomes(status, ending=None) -> dict:
     out = {"status": tally(status, STATUS_ORDER)}
     if ending is not None:
         out["ending"] = tally(ending, ENDINGS)
-    out["unconverged"] = sum(c for k, c in out["status"].items() if k in UNCONVERGED or k in LOADED_UNCONVERGED)
+    out["unconverged"] = sum(
+        c for k, c in out["status"].items() if k in UNCONVERGED or k in LOADED_UNCONVERGED
+    )
     return out
 
 
@@ -896,8 +1186,7 @@ def _add_counts(total: dict, status, ending) -> None:
             total[key][k] = total[key].get(k, 0) + c
 
 
-def _write_manifest(out: Path, spec: SweepSpec, done: set[int], counts: dict | None = None
-                    ) -> None:
+def _write_manifest(out: Path, spec: SweepSpec, done: set[int], counts: dict | None = None) -> None:
     from . import __version__
     from .outcomes import UNCONVERGED
 
@@ -914,7 +1203,9 @@ def _write_manifest(out: Path, spec: SweepSpec, done: set[int], counts: dict | N
         # over the chunks done (all cases once complete)
         "status_counts": dict(counts["status"]),
         "ending_counts": dict(counts["ending"]),
-        "unconverged": sum(c for k, c in counts["status"].items() if k in UNCONVERGED or k in LOADED_UNCONVERGED),
+        "unconverged": sum(
+            c for k, c in counts["status"].items() if k in UNCONVERGED or k in LOADED_UNCONVERGED
+        ),
     }
     _atomic_write_bytes(out / MANIFEST, (json.dumps(doc, indent=1) + "\n").encode())
 
@@ -924,18 +1215,20 @@ def _read_manifest(out: Path) -> dict | None:
     if not p.exists():
         return None
     if not p.is_file():
-        raise SweepError(f"{str(p)!r} is not a regular file; it is not a slidespin sweep "
-                         "directory")
+        raise SweepError(f"{str(p)!r} is not a regular file; it is not a slidespin sweep directory")
     try:
         with open(p, "rb") as fh:
             raw = fh.read(MAX_MANIFEST_BYTES + 1)
         if len(raw) > MAX_MANIFEST_BYTES:
-            raise SweepError(f"{str(p)!r} is larger than {MAX_MANIFEST_BYTES} bytes; it is not "
-                             "a slidespin sweep manifest")
+            raise SweepError(
+                f"{str(p)!r} is larger than {MAX_MANIFEST_BYTES} bytes; it is not "
+                "a slidespin sweep manifest"
+            )
         doc = json.loads(raw.decode("utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
-        raise SweepError(f"{str(p)!r} is unreadable ({exc}); it is not a slidespin sweep "
-                         "directory") from None
+        raise SweepError(
+            f"{str(p)!r} is unreadable ({exc}); it is not a slidespin sweep directory"
+        ) from None
     if not isinstance(doc, dict):
         raise SweepError(f"{str(p)!r} is not a slidespin sweep manifest")
     return doc
@@ -947,8 +1240,10 @@ def _check_out(out: Path) -> dict | None:
         raise SweepError(f"out = {str(out)!r} exists and is not a directory")
     man = _read_manifest(out) if out.is_dir() else None
     if man is None and out.is_dir() and any(p.name != LOCK for p in out.iterdir()):
-        raise SweepError(f"out = {str(out)!r} is a non-empty directory without a sweep "
-                         "manifest; choose a new or empty directory")
+        raise SweepError(
+            f"out = {str(out)!r} is a non-empty directory without a sweep "
+            "manifest; choose a new or empty directory"
+        )
     return man
 
 
@@ -956,7 +1251,7 @@ def _prepare(out: Path, spec: SweepSpec, resume: bool):
     """Set up ``out`` (called holding the lock). Returns the sound chunks done, the number
     of damaged chunk files removed for recomputation, and the counts of the sound chunks."""
     man = _check_out(out)
-    counts = {"status": {}, "ending": {}}
+    counts: dict[str, dict[str, int]] = {"status": {}, "ending": {}}
     if man is None:
         try:
             (out / "chunks").mkdir(parents=True, exist_ok=True)
@@ -1081,8 +1376,9 @@ class _Progress:
         frac = self.done / self.total if self.total else 1.0
         bar = "#" * int(30 * frac)
         eta_s = f"{eta:5.0f}s" if math.isfinite(eta) else "    ?"
-        sys.stderr.write(f"\r[{bar:<30}] {self.done}/{self.total} cases  {rate:8.0f} cases/s  "
-                         f"ETA {eta_s}")
+        sys.stderr.write(
+            f"\r[{bar:<30}] {self.done}/{self.total} cases  {rate:8.0f} cases/s  ETA {eta_s}"
+        )
         sys.stderr.flush()
 
     def close(self) -> None:
@@ -1122,7 +1418,9 @@ class SweepResult:
         """Cases whose status is in :data:`slidespin.outcomes.UNCONVERGED`."""
         from .outcomes import UNCONVERGED
 
-        return sum(c for k, c in self.status_counts.items() if k in UNCONVERGED or k in LOADED_UNCONVERGED)
+        return sum(
+            c for k, c in self.status_counts.items() if k in UNCONVERGED or k in LOADED_UNCONVERGED
+        )
 
     @property
     def n_flagged(self) -> int:
@@ -1137,8 +1435,15 @@ class SweepResult:
         return to_pandas(self.out, include_unconverged=include_unconverged)
 
 
-def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | None = None,
-          task_cases: int | None = None) -> SweepResult:
+def sweep(
+    spec,
+    out,
+    executor=None,
+    *,
+    resume: bool = False,
+    progress: bool | None = None,
+    task_cases: int | None = None,
+) -> SweepResult:
     """Run (or resume) a parameter sweep and store its results in ``out``.
 
     Parameters
@@ -1175,8 +1480,9 @@ def sweep(spec, out, executor=None, *, resume: bool = False, progress: bool | No
         and ``resume=True`` completes the sweep.
     """
     _require_pyarrow()
-    if task_cases is not None and (isinstance(task_cases, bool) or not isinstance(task_cases, int)
-                                   or task_cases < 1):
+    if task_cases is not None and (
+        isinstance(task_cases, bool) or not isinstance(task_cases, int) or task_cases < 1
+    ):
         raise SweepError(f"task_cases = {task_cases!r} is invalid; valid range: integer >= 1")
     spec = load_spec(spec)
     if task_cases is None:
@@ -1219,13 +1525,14 @@ def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult
             # one task computes consecutive chunks totalling >= MIN_TASK_CASES cases, so that
             # scheduling overhead stays small; each chunk is still written on its own
             per_task = max(1, -(-task_cases // spec.chunk_size))
-            groups = [todo[i:i + per_task] for i in range(0, len(todo), per_task)]
+            groups = [todo[i : i + per_task] for i in range(0, len(todo), per_task)]
             if _is_dask_client(executor):
                 from distributed import as_completed
 
-                futs = {executor.submit(compute_chunks, spec.data, g, pure=False): g
-                        for g in groups}
-                done_iter = as_completed(list(futs))
+                futs = {
+                    executor.submit(compute_chunks, spec.data, g, pure=False): g for g in groups
+                }
+                done_iter: Iterable = as_completed(list(futs))
             else:
                 import concurrent.futures as cf
 
@@ -1241,11 +1548,17 @@ def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult
     def ordered(d, names):
         return {k: d[k] for k in list(names) + sorted(set(d) - set(names)) if d.get(k)}
 
-    return SweepResult(out, spec.n_cases, spec.n_chunks, len(todo),
-                       sum(_chunk_len(spec, i) for i in todo), time.perf_counter() - t0,
-                       ordered(counts["status"], STATUS_ORDER),
-                       ordered(counts["ending"], ENDINGS),
-                       repaired)
+    return SweepResult(
+        out,
+        spec.n_cases,
+        spec.n_chunks,
+        len(todo),
+        sum(_chunk_len(spec, i) for i in todo),
+        time.perf_counter() - t0,
+        ordered(counts["status"], STATUS_ORDER),
+        ordered(counts["ending"], ENDINGS),
+        repaired,
+    )
 
 
 def _chunk_len(spec, i):
@@ -1269,8 +1582,13 @@ def connect_dask(address: str | None = None, workers: int | None = None):
             return Client(address, timeout="10s")
         except (OSError, TimeoutError) as exc:
             raise SweepError(f"--scheduler {address!r}: cannot connect ({exc})") from None
-    cluster = LocalCluster(n_workers=workers or 2, threads_per_worker=1, host="127.0.0.1",
-                           dashboard_address=None, processes=True)
+    cluster = LocalCluster(
+        n_workers=workers or 2,
+        threads_per_worker=1,
+        host="127.0.0.1",
+        dashboard_address=None,
+        processes=True,
+    )
     return Client(cluster)
 
 
@@ -1304,8 +1622,10 @@ def read_sweep(out, *, include_unconverged: bool = False) -> dict:
     try:
         table = pa.concat_tables([_read_chunk(f) for f in files])
     except pa.ArrowInvalid as exc:
-        raise SweepError(f"the chunk files of {str(out)!r} do not fit together ({exc}); rerun "
-                         "slidespin sweep SPEC --out DIR --resume to check them") from None
+        raise SweepError(
+            f"the chunk files of {str(out)!r} do not fit together ({exc}); rerun "
+            "slidespin sweep SPEC --out DIR --resume to check them"
+        ) from None
     cols = {name: table.column(name).to_numpy(zero_copy_only=False) for name in table.column_names}
     order = np.argsort(cols["case_id"], kind="stable")
     cols = {k: val[order] for k, val in cols.items()}
@@ -1330,8 +1650,10 @@ def to_pandas(out, *, include_unconverged: bool = False):
     try:
         import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
     except ImportError:  # pragma: no cover - depends on the environment
-        raise ImportError("slidespin.sweep.to_pandas needs pandas: pip install pandas "
-                          "(or pip install 'slidespin[test]')") from None
+        raise ImportError(
+            "slidespin.sweep.to_pandas needs pandas: pip install pandas "
+            "(or pip install 'slidespin[test]')"
+        ) from None
     table = read_sweep(out, include_unconverged=True)
     kept, left = (table, {}) if include_unconverged else split_unconverged(table)
     df = pd.DataFrame({k: np.asarray(val) for k, val in kept.items()})
@@ -1356,8 +1678,13 @@ def split_unconverged(table: dict):
     return {k: np.asarray(val)[~bad] for k, val in table.items()}, left
 
 
-def benchmark(n_local: int = 1_000_000, n_dask: int = 100_000, workers: int = 2,
-              chunk_size: int = 10_000, out=None) -> dict:
+def benchmark(
+    n_local: int = 1_000_000,
+    n_dask: int = 100_000,
+    workers: int = 2,
+    chunk_size: int = 10_000,
+    out=None,
+) -> dict:
     """Measure sweep throughput on all local cores and through a local Dask cluster.
 
     Runs a random sweep (uniform/Hertz laws, random shapes, tensors and starts) of
@@ -1371,19 +1698,26 @@ def benchmark(n_local: int = 1_000_000, n_dask: int = 100_000, workers: int = 2,
 
     def spec(n):
         return {
-            "name": "benchmark", "kind": "random", "chunk_size": int(chunk_size),
+            "name": "benchmark",
+            "kind": "random",
+            "chunk_size": int(chunk_size),
             "random": {"samples": int(n), "seed": 7},
             "fixed": {"a": 0.05, "mass": 1.0},
-            "vary": {"aspect": {"low": 0.3, "high": 1.0}, "law": ["uniform", "hertz"],
-                     "fx": {"low": 0.2, "high": 0.5}, "mu": {"low": 0.0, "high": 0.3},
-                     "I_star": {"low": 0.2, "high": 1.0}, "v0": {"low": 0.2, "high": 2.0},
-                     "omega0": {"low": -30.0, "high": 30.0},
-                     "theta0": {"low": -3.14, "high": 3.14}},
+            "vary": {
+                "aspect": {"low": 0.3, "high": 1.0},
+                "law": ["uniform", "hertz"],
+                "fx": {"low": 0.2, "high": 0.5},
+                "mu": {"low": 0.0, "high": 0.3},
+                "I_star": {"low": 0.2, "high": 1.0},
+                "v0": {"low": 0.2, "high": 2.0},
+                "omega0": {"low": -30.0, "high": 30.0},
+                "theta0": {"low": -3.14, "high": 3.14},
+            },
         }
 
     base = Path(out) if out else Path(tempfile.mkdtemp(prefix="slidespin-bench-"))
     cores = os.cpu_count() or 1
-    result = {"cores": cores, "workers": workers}
+    result: dict[str, float] = {"cores": cores, "workers": workers}
     try:
         # warm-up (compilation) outside the timings
         compute_chunk(load_spec(dict(spec(2), chunk_size=2)), 0)
@@ -1391,8 +1725,12 @@ def benchmark(n_local: int = 1_000_000, n_dask: int = 100_000, workers: int = 2,
             t0 = time.perf_counter()
             sweep(spec(n_local), base / "local", progress=False)
             dt = time.perf_counter() - t0
-            result.update(local_cases=n_local, local_seconds=dt, local_cases_per_s=n_local / dt,
-                          local_cases_per_s_per_core=n_local / dt / cores)
+            result.update(
+                local_cases=n_local,
+                local_seconds=dt,
+                local_cases_per_s=n_local / dt,
+                local_cases_per_s_per_core=n_local / dt / cores,
+            )
         if n_dask:
             client = connect_dask(None, workers)
             try:
@@ -1405,11 +1743,16 @@ def benchmark(n_local: int = 1_000_000, n_dask: int = 100_000, workers: int = 2,
                 client.close()
                 if cluster is not None:
                     cluster.close()
-            result.update(dask_cases=n_dask, dask_seconds=dt, dask_cases_per_s=n_dask / dt,
-                          dask_cases_per_s_per_core=n_dask / dt / min(workers, cores))
+            result.update(
+                dask_cases=n_dask,
+                dask_seconds=dt,
+                dask_cases_per_s=n_dask / dt,
+                dask_cases_per_s_per_core=n_dask / dt / min(workers, cores),
+            )
             if n_local:
-                result["dask_over_local_per_core"] = (result["dask_cases_per_s_per_core"]
-                                                      / result["local_cases_per_s_per_core"])
+                result["dask_over_local_per_core"] = (
+                    result["dask_cases_per_s_per_core"] / result["local_cases_per_s_per_core"]
+                )
     finally:
         if out is None:
             shutil.rmtree(base, ignore_errors=True)

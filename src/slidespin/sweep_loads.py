@@ -35,29 +35,70 @@ import math
 
 import numpy as np
 
-__all__ = ["MODES", "LOAD_PARAMETERS", "LOAD_COLUMNS", "STATICS_COLUMNS", "LOADED_COLUMNS",
-           "STATICS_STATUSES", "STATICS_ENDINGS", "LOADED_STATUSES", "LOADED_UNCONVERGED",
-           "load_columns", "compute_statics", "compute_loaded"]
+__all__ = [
+    "MODES",
+    "LOAD_PARAMETERS",
+    "LOAD_COLUMNS",
+    "STATICS_COLUMNS",
+    "LOADED_COLUMNS",
+    "STATICS_STATUSES",
+    "STATICS_ENDINGS",
+    "LOADED_STATUSES",
+    "LOADED_UNCONVERGED",
+    "load_columns",
+    "compute_statics",
+    "compute_loaded",
+]
 
 #: what a sweep computes per case: the stop (compiled batch engine), the statics, a loaded run
 MODES = ("stop", "statics", "loaded")
 #: load and tilt keys of a sweep spec and their defaults (None: derived or required)
 LOAD_PARAMETERS = {
-    "load_fx": 0.0, "load_fy": 0.0, "load_torque": 0.0, "load_frame": "plane",
-    "incline_angle": None, "incline_angle_deg": None, "incline_downhill": 0.0, "t_end": None,
+    "load_fx": 0.0,
+    "load_fy": 0.0,
+    "load_torque": 0.0,
+    "load_frame": "plane",
+    "incline_angle": None,
+    "incline_angle_deg": None,
+    "incline_downhill": 0.0,
+    "t_end": None,
 }
 _LOAD_KEYS = ("load_fx", "load_fy", "load_torque", "load_frame")
 _INCLINE_KEYS = ("incline_angle", "incline_angle_deg", "incline_downhill")
 #: the load and tilt columns of every statics or loaded chunk
-LOAD_COLUMNS = ("load_fx", "load_fy", "load_torque", "load_frame", "incline_angle",
-                "incline_angle_deg", "incline_downhill")
+LOAD_COLUMNS = (
+    "load_fx",
+    "load_fy",
+    "load_torque",
+    "load_frame",
+    "incline_angle",
+    "incline_angle_deg",
+    "incline_downhill",
+)
 #: result columns of ``compute = "statics"``
 STATICS_COLUMNS = ("critical_tilt", "critical_tilt_deg", "load_factor", "ending", "status")
 #: result columns of ``compute = "loaded"``
-LOADED_COLUMNS = ("t_end", "t_final", "t_stop", "x_end", "y_end", "phi_end", "vx_end",
-                  "vy_end", "omega_end", "speed_end", "n_slip", "slip_time", "energy_error",
-                  "n_rhs", "ending", "status")
+LOADED_COLUMNS = (
+    "t_end",
+    "t_final",
+    "t_stop",
+    "x_end",
+    "y_end",
+    "phi_end",
+    "vx_end",
+    "vy_end",
+    "omega_end",
+    "speed_end",
+    "n_slip",
+    "slip_time",
+    "energy_error",
+    "n_rhs",
+    "ending",
+    "status",
+)
+#: the status of a statics case (a statics solve has no budget to run out of)
 STATICS_STATUSES = ("ok",)
+#: the ending of a statics case: the body at rest holds (λ* ≥ 1) or starts to slide
 STATICS_ENDINGS = ("sticks", "slides")
 #: statuses of :class:`slidespin.loaded.LoadedTrajectory`
 LOADED_STATUSES = ("ok", "max_steps", "max_phases", "no_onset", "step_too_small")
@@ -78,6 +119,7 @@ def load_columns(cols: dict, n: int, mode: str) -> dict:
 
     Raises ValueError naming the key, the first bad case, its value and the valid range.
     """
+
     def get(k, default):
         val = cols.get(k)
         if val is None:
@@ -100,8 +142,12 @@ def load_columns(cols: dict, n: int, mode: str) -> dict:
     else:
         rad = get("incline_angle", 0.0).astype(float)
         with np.errstate(all="ignore"):
-            _bad("incline_angle", rad, np.isfinite(rad) & (rad >= 0) & (rad < math.pi / 2),
-                 f"[0, {math.pi / 2!r}) rad")
+            _bad(
+                "incline_angle",
+                rad,
+                np.isfinite(rad) & (rad >= 0) & (rad < math.pi / 2),
+                f"[0, {math.pi / 2!r}) rad",
+            )
         deg = np.degrees(rad)
     out["incline_angle"] = rad
     out["incline_angle_deg"] = deg
@@ -121,16 +167,20 @@ def _load_objects(loads: dict, i: int, given: set):
 
     load = None
     if given & set(_LOAD_KEYS):
-        load = Load(force=(float(loads["load_fx"][i]), float(loads["load_fy"][i])),
-                    torque=float(loads["load_torque"][i]), frame=str(loads["load_frame"][i]))
+        load = Load(
+            force=(float(loads["load_fx"][i]), float(loads["load_fy"][i])),
+            torque=float(loads["load_torque"][i]),
+            frame=str(loads["load_frame"][i]),
+        )
     incline = None
     if given & set(_INCLINE_KEYS):
         incline = Incline(float(loads["incline_angle"][i]), float(loads["incline_downhill"][i]))
     return load, incline
 
 
-def compute_statics(bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict,
-                    given: set) -> dict:
+def compute_statics(
+    bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict, given: set
+) -> dict:
     """Statics of each case at rest (critical tilt, load factor, sticks or slides).
 
     Parameters
@@ -163,13 +213,18 @@ def compute_statics(bodies, frictions, states: np.ndarray, g: np.ndarray, loads:
         w = applied_wrench(body, 0.0, phi, load, incline, float(g[i]))
         lam[i] = load_factor(body, fr, w, phi, float(g[i]), incline=incline)
     sticks = lam >= 1.0
-    return {"critical_tilt": tilt, "critical_tilt_deg": np.degrees(tilt), "load_factor": lam,
-            "ending": np.where(sticks, "sticks", "slides").astype(object),
-            "status": np.full(n, "ok", dtype=object)}
+    return {
+        "critical_tilt": tilt,
+        "critical_tilt_deg": np.degrees(tilt),
+        "load_factor": lam,
+        "ending": np.where(sticks, "sticks", "slides").astype(object),
+        "status": np.full(n, "ok", dtype=object),
+    }
 
 
-def compute_loaded(bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict,
-                   given: set, rtol: float) -> dict:
+def compute_loaded(
+    bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict, given: set, rtol: float
+) -> dict:
     """One loaded run per case (:func:`slidespin.simulate` with ``load``, ``incline`` and
     ``t_end``); the columns of :data:`LOADED_COLUMNS` (final state at the end of the run,
     number and total time of the slip phases, energy-balance error, right-hand sides)."""
@@ -177,8 +232,9 @@ def compute_loaded(bodies, frictions, states: np.ndarray, g: np.ndarray, loads: 
     from .simulate import simulate
 
     n = len(bodies)
-    num = {k: np.empty(n) for k in LOADED_COLUMNS if k not in ("ending", "status", "n_slip",
-                                                               "n_rhs")}
+    num = {
+        k: np.empty(n) for k in LOADED_COLUMNS if k not in ("ending", "status", "n_slip", "n_rhs")
+    }
     n_slip = np.empty(n, dtype=np.int64)
     n_rhs = np.empty(n, dtype=np.int64)
     ending = np.empty(n, dtype=object)
@@ -186,14 +242,28 @@ def compute_loaded(bodies, frictions, states: np.ndarray, g: np.ndarray, loads: 
     for i in range(n):
         load, incline = _load_objects(loads, i, given)
         t_end = float(loads["t_end"][i])
-        tr = simulate(bodies[i], frictions[i], State(*(float(x) for x in states[i])),
-                      float(g[i]), rtol, load=load, incline=incline, t_end=t_end)
+        tr = simulate(
+            bodies[i],
+            frictions[i],
+            State(*(float(x) for x in states[i])),
+            float(g[i]),
+            rtol,
+            load=load,
+            incline=incline,
+            t_end=t_end,
+        )
         slips = tr.slip_intervals
         num["t_end"][i] = t_end
         num["t_final"][i] = tr.t[-1]
         num["t_stop"][i] = tr.t_stop
-        for k, arr in (("x", tr.x), ("y", tr.y), ("phi", tr.phi), ("vx", tr.vx), ("vy", tr.vy),
-                       ("omega", tr.omega)):
+        for k, arr in (
+            ("x", tr.x),
+            ("y", tr.y),
+            ("phi", tr.phi),
+            ("vx", tr.vx),
+            ("vy", tr.vy),
+            ("omega", tr.omega),
+        ):
             num[f"{k}_end"][i] = arr[-1]
         num["speed_end"][i] = math.hypot(tr.vx[-1], tr.vy[-1])
         num["slip_time"][i] = sum(b - a for a, b in slips)
@@ -203,4 +273,3 @@ def compute_loaded(bodies, frictions, states: np.ndarray, g: np.ndarray, loads: 
         ending[i] = tr.ending
         status[i] = tr.status
     return {**num, "n_slip": n_slip, "n_rhs": n_rhs, "ending": ending, "status": status}
-
