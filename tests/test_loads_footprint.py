@@ -447,3 +447,42 @@ def test_cli_limit_surface_footprint_on_incline(tmp_path, capsys):
     assert out["normal_load"] == pytest.approx(load, rel=1e-14)
     assert out["max_force"] <= MU * load * (1.0 + 1e-12)  # |F| ≤ μ P, the pure translation
     assert out["max_dissipation_gap"] < 1e-12 * load
+
+
+# ------------------------------------------------------------------------------------------
+# a sled on two runners with a body-fixed orthotropic tensor (low friction along the runners)
+# ------------------------------------------------------------------------------------------
+SLED = ss.Body(
+    Pads([Rectangle(1.0, 0.03, centre=(0.0, 0.2)), Rectangle(1.0, 0.03, centre=(0.0, -0.2))]),
+    ss.UniformPressure(),
+    mass=20.0,
+    moment_of_inertia=20.0 * (1.0 + 0.16) / 12.0,
+)
+RUNNERS = ss.FrictionTensor(0.05, 0.6, frame="body")
+
+
+@pytest.mark.parametrize("phi, mu", [(0.0, 0.05), (math.pi / 2, 0.6)])
+def test_sled_on_slope_along_and_across_its_runners(phi, mu):
+    # the slope runs along OX: along the runners for φ = 0, across them for φ = π/2
+    assert statics.critical_tilt(SLED, RUNNERS, 0.0, phi) == pytest.approx(math.atan(mu), abs=1e-12)
+    tr = simulate_loaded(
+        SLED, RUNNERS, ss.State(phi=phi), incline=Incline(math.atan(mu) - 1e-9), t_end=0.5
+    )
+    assert tr.ending == "at_rest_throughout"
+    alpha, t_end = math.atan(mu) + 0.05, 0.6
+    tr = simulate_loaded(SLED, RUNNERS, ss.State(phi=phi), incline=Incline(alpha), t_end=t_end)
+    dist = 0.5 * G * (math.sin(alpha) - mu * math.cos(alpha)) * t_end**2
+    assert tr.x[-1] == pytest.approx(dist, rel=1e-9)
+    assert abs(tr.y[-1]) < 1e-9 * dist and abs(tr.phi[-1] - phi) < 1e-9
+
+
+def test_sled_spinning_on_slope_energy_balance():
+    # thrown with a spin on a slope steeper than its runners' friction angle: friction, gravity
+    # and kinetic energy balance (the slope's work from the displacement alone)
+    alpha = math.atan(0.05) + 0.1
+    tr = simulate_loaded(
+        SLED, RUNNERS, ss.State(vx=1.0, omega=3.0), incline=Incline(alpha, 0.3), t_end=1.0
+    )
+    ke = tr.kinetic_energy
+    assert abs(ke[-1] - ke[0] - tr.gravity_work - tr.friction_work[-1]) < 1e-8 * ke[0]
+    assert tr.load_work[-1] == pytest.approx(tr.gravity_work, rel=1e-9)
