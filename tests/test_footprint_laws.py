@@ -1,5 +1,11 @@
 """Pressure laws where they are defined on footprints (issue #12 item 2) and the blade.
 
+The blade (a line contact, issue #12 item 1) is checked against ``quad`` along the segment
+(broken at the ICR's projection), the closed forms of pure translation (−P𝔽v̂) and pure spin
+(−sign(ω) P (L/4) ê⊥ᵀ𝔽ê⊥: μ P L/4 for isotropic friction) and the limit of a thin uniformly
+loaded rectangle, whose wrench must approach it like (w/L)² (times ln(L/w) with the ICR on
+the blade).
+
 Boussinesq and Hertz pressure are defined on ellipses and circles (MODEL §3, §10): a ``Disk``
 under them is the circle of its radius with G at its centre. Truth used here: the body on
 ``Circle(R)`` (the paper's patch, a different input path to the elliptic kernel), the
@@ -18,8 +24,9 @@ import pytest
 from scipy.integrate import quad
 
 import slidespin as ss
-from slidespin.footprint import Annulus, Disk, Pads, Polygon, Rectangle
-from slidespin.footprint_pressure import density, mass_centre
+from slidespin._blade_kernel import NEAR
+from slidespin.footprint import Annulus, Blade, Disk, Pads, Polygon, Rectangle
+from slidespin.footprint_pressure import PressureMap, density, mass_centre
 from slidespin.footprint_wrench import footprint_wrench
 
 ROUND_LAWS = {"hertz": ss.HertzPressure(), "boussinesq": ss.BoussinesqPressure()}
@@ -272,3 +279,180 @@ def test_uniform_disk_still_a_footprint():
     assert body.is_footprint
     with pytest.raises(ValueError, match="elliptic patches only"):
         body.kernel_params(ss.FrictionTensor(0.3, 0.3))
+
+
+# ---------------------------------------------------------------------------------------------
+# the blade: a line contact
+
+
+def _reference_blade(blade, tensor, frame, vx, vy, omega, phi, load=1.0):
+    """(Fx, Fy, M about the blade's centre = G) by ``quad`` along the segment, broken at the
+    ICR's projection onto it (where the slip direction turns fastest)."""
+    (x0, y0), (x1, y1) = blade.ends
+    gx, gy = 0.5 * (x0 + x1), 0.5 * (y0 + y1)
+    c_, s_ = math.cos(phi), math.sin(phi)
+    rot = np.array([[c_, -s_], [s_, c_]])
+    t = np.asarray(tensor, dtype=float)
+    tb = t if frame == "body" else rot.T @ t @ rot
+    vbx, vby = rot.T @ np.array([vx, vy])
+
+    def traction(u, k):
+        x, y = x0 + u * (x1 - x0), y0 + u * (y1 - y0)
+        wx, wy = vbx - omega * (y - gy), vby + omega * (x - gx)
+        n = math.hypot(wx, wy)
+        if n == 0.0:
+            return 0.0
+        tx = -(tb[0, 0] * wx + tb[0, 1] * wy) / n * load
+        ty = -(tb[1, 0] * wx + tb[1, 1] * wy) / n * load
+        return (tx, ty, (x - gx) * ty - (y - gy) * tx)[k]
+
+    brk = [0.0, 1.0]
+    if omega != 0.0:
+        cx, cy = gx - vby / omega, gy + vbx / omega
+        u = ((cx - x0) * (x1 - x0) + (cy - y0) * (y1 - y0)) / blade.length**2
+        if 0.0 < u < 1.0:
+            brk = [0.0, u, 1.0]
+    out = np.zeros(3)
+    for a, b in zip(brk[:-1], brk[1:]):
+        for k in range(3):
+            out[k] += quad(traction, a, b, args=(k,), epsabs=1e-13, epsrel=1e-12, limit=400)[0]
+    f = rot @ out[:2]
+    return f[0], f[1], out[2]
+
+
+def _blade_states():
+    """Motion states (vx, vy, ω, φ) of G for the blade of length 0.4 along ``BLADE``'s axis:
+    random ones, and the ICR on the blade, on its line beyond an end, just inside and outside
+    the switch of the closed form to Gauss–Legendre, nearly on the line, far, ω = 0."""
+    rng = np.random.default_rng(20261123)
+    out = [
+        tuple(rng.normal(size=3) * (1.0, 1.0, 10.0)) + (float(rng.uniform(-3, 3)),)
+        for _ in range(40)
+    ]
+    half, ang, phi = 0.2, BLADE.angle, 0.5
+    e_world = (math.cos(ang + phi), math.sin(ang + phi))
+    n_world = (-e_world[1], e_world[0])
+    for speed_across, speed_along in [
+        (0.05, 0.0),
+        (0.19, 0.0),
+        (0.3, 0.0),
+        (0.05, 1e-13),
+        (NEAR * half * (1 - 1e-9), 0.0),
+        (NEAR * half * (1 + 1e-9), 0.0),
+        (NEAR * half * (1 - 1e-9) * 0.6, NEAR * half * 0.8),
+        (NEAR * half * (1 + 1e-9) * 0.6, NEAR * half * 0.8),
+        (30.0, 2.0),
+    ]:
+        # ω = 1: the ICR lies at ẑ × v from G, i.e. along the blade for v across it
+        vx = speed_across * n_world[0] + speed_along * e_world[0]
+        vy = speed_across * n_world[1] + speed_along * e_world[1]
+        out.append((vx, vy, 1.0, phi))
+    out += [(0.3, -0.4, 0.0, 0.2), (0.0, 0.0, -4.0, 1.0), (1e-9, 0.0, 1e3, 0.0)]
+    return out
+
+
+BLADE = Blade(0.4, centre=(0.05, -0.02), angle=0.6)
+
+
+@pytest.mark.parametrize("friction", FRICTIONS, ids=["iso", "skew", "body"])
+def test_blade_against_quadrature(friction):
+    """Every motion state: the exact blade wrench against quad along the segment, to 1e-10
+    (units of P and P L/2)."""
+    load = 2.5
+    worst = 0.0
+    for vx, vy, om, ph in _blade_states():
+        w = footprint_wrench(BLADE, ss.UniformPressure(), friction, vx, vy, om, ph, load=load)
+        ref = _reference_blade(BLADE, friction.matrix, friction.frame, vx, vy, om, ph, load)
+        worst = max(
+            worst,
+            abs(w.force_x - ref[0]) / load,
+            abs(w.force_y - ref[1]) / load,
+            abs(w.moment - ref[2]) / (load * 0.2),
+        )
+    assert worst <= 1e-10
+
+
+def test_blade_closed_forms():
+    """Pure translation: F = −P 𝔽 v̂ (|F| = μ P isotropic), M = 0 about the centre; pure spin:
+    F = 0, M = −sign(ω) P (L/4) ê⊥ᵀ 𝔽 ê⊥ (μ P L/4 isotropic), ê⊥ the blade's normal."""
+    load, length = 3.0, 0.4
+    for friction in FRICTIONS:
+        for phi in (0.0, 0.8):
+            t = friction.world_matrix(phi)
+            w = footprint_wrench(
+                BLADE, ss.UniformPressure(), friction, 0.6, -0.8, 0.0, phi, load=load
+            )
+            want = -load * t @ np.array([0.6, -0.8])
+            assert abs(w.force_x - want[0]) <= 1e-14 * load
+            assert abs(w.force_y - want[1]) <= 1e-14 * load
+            assert abs(w.moment) <= 1e-15 * load * length
+            ang = BLADE.angle + phi
+            en = np.array([-math.sin(ang), math.cos(ang)])
+            for omega in (5.0, -0.3):
+                w = footprint_wrench(
+                    BLADE, ss.UniformPressure(), friction, 0.0, 0.0, omega, phi, load=load
+                )
+                want_m = -math.copysign(1.0, omega) * load * length / 4.0 * (en @ t @ en)
+                assert abs(w.moment - want_m) <= 1e-14 * load * length
+                assert math.hypot(w.force_x, w.force_y) <= 1e-14 * load
+    iso = footprint_wrench(
+        Blade(0.5), ss.UniformPressure(), ss.FrictionTensor(0.3, 0.3), 0.0, 0.0, 2.0, load=10.0
+    )
+    assert iso.moment == pytest.approx(-0.3 * 10.0 * 0.5 / 4.0, rel=1e-15)
+
+
+@pytest.mark.parametrize(
+    "state",
+    [(0.3, -0.2, 2.0, 0.3), (0.0, 0.0, 1.0, 0.0), (0.05, 0.1, 3.0, 1.0), (0.5, 0.5, -1.0, -0.4)],
+    ids=["generic", "spin-about-centre", "icr-near", "icr-outside"],
+)
+def test_blade_is_the_limit_of_thin_rectangles(state):
+    """Rectangle(L, w) under uniform pressure tends to the blade like (w/L)² (with a factor
+    ln(L/w) when the ICR lies on the blade): halving w divides the gap by 3.4–4.1."""
+    friction = ss.FrictionTensor(0.3, 0.5, 0.07)
+    length = BLADE.length
+    wb = footprint_wrench(BLADE, ss.UniformPressure(), friction, *state)
+    gaps = []
+    for k in (50, 100, 200, 400):
+        rect = Rectangle(length, length / k, centre=BLADE.centre, angle=BLADE.angle)
+        wr = footprint_wrench(rect, ss.UniformPressure(), friction, *state)
+        gaps.append(
+            max(
+                abs(wr.force_x - wb.force_x),
+                abs(wr.force_y - wb.force_y),
+                abs(wr.moment - wb.moment) / (0.5 * length),
+            )
+        )
+        assert gaps[-1] <= (1.0 / k) ** 2 * (1.0 + math.log(k))
+    ratios = np.array(gaps[:-1]) / np.array(gaps[1:])
+    assert np.all((ratios > 3.4) & (ratios < 4.1)), ratios
+
+
+def test_blade_body():
+    """A body on a blade: the thin rod's inertia m L²/12 (I* = 1/3 in units of ℓ = L/2), G
+    over its centre, friction_wrench through the footprint path; the integrator refuses it
+    with the reason; other laws and several blades are refused."""
+    body = ss.Body(BLADE, ss.UniformPressure(), mass=2.0)
+    assert body.is_footprint
+    assert body.moment_of_inertia == pytest.approx(2.0 * 0.4**2 / 12.0, rel=1e-15)
+    assert body.inertia_ratio == pytest.approx(1.0 / 3.0, rel=1e-15)
+    assert body.mass_centre == BLADE.centre
+    assert body.length_unit == 0.2
+    friction = ss.FrictionTensor(0.3, 0.45, 0.05)
+    w = ss.friction_wrench(body, friction, 0.2, 0.1, 3.0, 0.4, g=9.81)
+    ref = _reference_blade(BLADE, friction.matrix, "plane", 0.2, 0.1, 3.0, 0.4, 2.0 * 9.81)
+    assert abs(w.moment - ref[2]) <= 1e-10 * 2.0 * 9.81 * 0.2
+    with pytest.raises(ValueError, match="not yet with the compiled integrator"):
+        ss.simulate(body, friction, ss.State(omega=3.0))
+    for law in (ss.LinearPressure(0.05, 0.0), ss.HertzPressure(), ss.BoussinesqPressure()):
+        with pytest.raises(ValueError, match="pressure = .* is invalid"):
+            ss.Body(BLADE, law, mass=1.0)
+    with pytest.raises(ValueError, match="is invalid on a Blade"):
+        footprint_wrench(BLADE, PressureMap(lambda x, y: 1.0 + 0.0 * x), friction, 1.0, 0.0, 1.0)
+    with pytest.raises(ValueError, match="several blades is not supported"):
+        Pads([BLADE, Blade(0.4, centre=(0.0, 0.5))])
+    for bad in (0.0, -1.0, math.inf):
+        with pytest.raises(ValueError, match="length"):
+            Blade(bad)
+    with pytest.raises(ValueError, match="centre"):
+        Blade(1e-3, centre=(1e4, 0.0))

@@ -226,6 +226,16 @@ class Body:
         t = friction.matrix
         patch = self.patch
         if self.is_footprint and not isinstance(patch, Ellipse):  # the footprint kernel
+            if isinstance(patch, _fp.Blade):
+                raise ValueError(
+                    f"patch = {patch!r} works with friction_wrench and footprint_wrench, but not "
+                    "yet with the compiled integrator (simulate, simulate_many, "
+                    "terminal_states): a blade's mixed terminal motion has the ICR on the blade, "
+                    "where the wrench is not differentiable (the force along the blade goes like "
+                    "v ln(1/|v|)), which the integrator's ending analysis (MODEL §9) does not "
+                    "treat yet; valid values here: an area footprint (a thin Rectangle) or an "
+                    "ellipse"
+                )
             from .footprint_pressure import kernel_geometry, scaled_arrays, symmetry
 
             ell = self.length_unit
@@ -294,10 +304,15 @@ def _footprint_law_error(patch, pressure) -> str:
         else:
             name = type(patch).__name__
             why = f"it is not defined on {'an' if name[0] in 'AEIOU' else 'a'} {name}"
+        valid = (
+            "UniformPressure()"
+            if isinstance(patch, _fp.Blade)
+            else "UniformPressure(), LinearPressure(xi_c, eta_c)"
+        )
         return (
             f"pressure = {law}() is invalid on patch = {v._short(patch, 100)}: {why}; "
             f"{law} is defined on an Ellipse, a Circle or a single Disk (MODEL §3, §10); "
-            "valid values on this patch: UniformPressure(), LinearPressure(xi_c, eta_c)"
+            f"valid values on this patch: {valid}"
         )
     return (
         f"pressure = {pressure!r} is invalid on a footprint; valid values: "

@@ -12,12 +12,14 @@ class                                  region (in the patch's own frame)
 ``Disk(radius)``                       |r| ≤ radius
 ``Annulus(inner_radius, outer_radius)``  inner_radius ≤ |r| ≤ outer_radius
 ``Pads(patches)``                      the union of several disjoint patches
+``Blade(length)``                      the segment |ξ| ≤ length/2, η = 0: a line contact
 =====================================  ============================================
 
 Each has ``area`` [m²], ``centroid`` (area centroid, body frame) [m], ``second_moment``
 (J = ∫(r − r_c)(r − r_c)ᵀ dS about the area centroid, MODEL §10) [m⁴], ``outlines()``
 (closed curves for plotting) and ``to_arrays()``, the plain-array form that the compiled
-kernel (:mod:`slidespin._footprint_kernel`) reads:
+kernel (:mod:`slidespin._footprint_kernel`) reads (a ``Blade``, a line contact, has no area
+and no second moment: one edge and no circle, see its notes):
 
 * ``edges``, float64 (n_edges, 4): oriented straight edges (ξ₀, η₀, ξ₁, η₁) [m]. Each
   polygon's edges run counter-clockwise, so that the signed fan of triangles (c, P₀, P₁)
@@ -47,6 +49,7 @@ from . import _validate as v
 
 __all__ = [
     "Annulus",
+    "Blade",
     "Disk",
     "Footprint",
     "FootprintArrays",
@@ -801,6 +804,12 @@ class Pads(_Patch):
                 flat.extend(p.patches)
             elif isinstance(p, _SIMPLE):
                 flat.append(p)
+            elif isinstance(p, Blade):
+                raise ValueError(
+                    f"patches[{i}] = {p!r} is invalid: a body on several blades is not "
+                    "supported (their load shares); valid values: Polygon, Rectangle, Disk, "
+                    "Annulus or Pads (runners: thin Rectangles)"
+                )
             else:
                 raise ValueError(
                     f"patches[{i}] = {p!r} is invalid; valid values: Polygon, Rectangle, Disk, "
@@ -837,13 +846,101 @@ class Pads(_Patch):
         return out
 
 
+@dataclass(frozen=True, slots=True)
+class Blade:
+    """A blade: a straight line contact of ``length`` under a uniform line load.
+
+    The b → 0 limit of a uniformly loaded ``Rectangle(length, b)`` (a knife edge, a skate,
+    a runner), with the load P spread evenly along the segment |ξ| ≤ length/2, η = 0 of its
+    own frame. G lies over its centre (MODEL §10: the pressure centroid). Its wrench is exact
+    in closed form (:mod:`slidespin._blade_kernel`).
+
+    Parameters
+    ----------
+    length : float
+        Length L [m], in [1e-9, 1e6].
+    centre : (float, float), default (0, 0)
+        The blade's centre in the body frame [m], each coordinate within
+        min(1e6 m, 1e6 × L/2).
+    angle : float, default 0
+        Angle of the blade from the body axis ξ [rad], counter-clockwise.
+
+    Notes
+    -----
+    Uniform line pressure only (``UniformPressure()``); it has no area (``area`` is 0) and
+    ``extent`` = L/2; the default body inertia is the thin rod's, m L²/12
+    (:meth:`plate_inertia`). For the kernel (``to_arrays``) a blade is one edge
+    (ξ₀, η₀, ξ₁, η₁) and no circle: a polygon has at least three edges, so the single edge
+    marks a blade. A body on several blades (a sled) is not supported; use thin
+    ``Rectangle`` runners in ``Pads``.
+
+    Examples
+    --------
+    >>> Blade(0.3, centre=(0.0, 0.1)).plate_inertia(2.0)  # m L²/12
+    0.015
+    """
+
+    length: float
+    centre: tuple = (0.0, 0.0)
+    angle: float = 0.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "length", _length("length", self.length))
+        _placement(self)
+        _offset("centre", self.centre, 0.5 * self.length, "blade")
+
+    @property
+    def ends(self) -> np.ndarray:
+        """The two ends (2, 2) in the body frame [m], from −ξ to +ξ of the blade's frame."""
+        half = 0.5 * self.length
+        return _place(np.array([(-half, 0.0), (half, 0.0)]), self.centre, self.angle)
+
+    @property
+    def area(self) -> float:
+        """0: a line contact has no area [m²]."""
+        return 0.0
+
+    @property
+    def centroid(self) -> tuple[float, float]:
+        """The blade's centre in the body frame [m] (its load centroid)."""
+        return (float(self.centre[0]), float(self.centre[1]))
+
+    @property
+    def extent(self) -> float:
+        """L/2 [m]: the largest distance from the centre to a point of the blade."""
+        return 0.5 * self.length
+
+    def plate_inertia(self, mass: float) -> float:
+        """I of a thin uniform rod of this length and ``mass`` [kg] about its centre,
+        m L²/12 [kg m²]."""
+        m = v.positive("mass", mass, "kg")
+        return m * self.length * self.length / 12.0
+
+    def to_arrays(self) -> FootprintArrays:
+        """Plain arrays for the kernel: one edge (the blade), no circle, frame (centre, L/2)."""
+        (x0, y0), (x1, y1) = self.ends
+        return FootprintArrays(
+            np.array([[x0, y0, x1, y1]]),
+            np.zeros((0, 4)),
+            np.array([float(self.centre[0]), float(self.centre[1]), 0.5 * self.length]),
+        )
+
+    def outline(self, n: int = 2) -> np.ndarray:
+        """The segment (2, 2) in the body frame [m] (``n`` is unused)."""
+        return self.ends
+
+    def outlines(self, n: int = 2) -> list[np.ndarray]:
+        """The segment, as one open curve (2, 2), in the body frame [m]."""
+        return [self.ends]
+
+
 #: any footprint patch (the type of :attr:`slidespin.Body.patch` beside ellipses)
-Footprint = Polygon | Rectangle | Disk | Annulus | Pads
+Footprint = Polygon | Rectangle | Disk | Annulus | Pads | Blade
 
 
 def is_footprint(obj) -> bool:
     """True for the footprint types of this module."""
-    return isinstance(obj, (Polygon, Rectangle, Annulus, Pads))
+    return isinstance(obj, (Polygon, Rectangle, Annulus, Pads, Blade))
 
 
 def as_patches(fp) -> tuple:

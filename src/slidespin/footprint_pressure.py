@@ -31,7 +31,16 @@ import numpy as np
 
 from . import _validate as v
 from ._footprint_kernel import NGEO
-from .footprint import Annulus, Disk, FootprintArrays, Pads, Polygon, Rectangle, as_patches
+from .footprint import (
+    Annulus,
+    Blade,
+    Disk,
+    FootprintArrays,
+    Pads,
+    Polygon,
+    Rectangle,
+    as_patches,
+)
 from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
 
 __all__ = [
@@ -51,12 +60,34 @@ __all__ = [
 AREA_RULE_NODES = 24
 
 
-def _check_footprint(fp) -> None:
+def _check_footprint(fp, blade: bool = False) -> None:
+    """Raise unless ``fp`` is an area footprint (or, with ``blade``, also a Blade)."""
+    if blade and isinstance(fp, Blade):
+        return
+    if isinstance(fp, Blade):
+        raise ValueError(
+            f"footprint = {fp!r} is invalid here: a Blade is a line contact with no area "
+            "(no areal pressure, quadrature or inside); valid values: Polygon, Rectangle, "
+            "Disk, Annulus or Pads"
+        )
     if not isinstance(fp, (Polygon, Rectangle, Annulus, Pads)):
         raise ValueError(
-            f"footprint = {fp!r} is invalid; valid values: Polygon, Rectangle, Disk, Annulus "
-            "or Pads"
+            f"footprint = {fp!r} is invalid; valid values: Polygon, Rectangle, Disk, Annulus, "
+            "Pads or Blade"
         )
+
+
+def _blade_law(footprint, pressure) -> bool:
+    """True for a Blade under uniform (line) pressure; a ``ValueError`` for a Blade under any
+    other law; False for every area footprint."""
+    if not isinstance(footprint, Blade):
+        return False
+    if not isinstance(pressure, UniformPressure):
+        raise ValueError(
+            f"pressure = {pressure!r} is invalid on a Blade; valid values: UniformPressure() "
+            "(a uniform line load; G over the blade's centre)"
+        )
+    return True
 
 
 class _GridMap:
@@ -253,7 +284,8 @@ def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float
 
     Parameters
     ----------
-    footprint : Polygon, Rectangle, Disk, Annulus or Pads
+    footprint : Polygon, Rectangle, Disk, Annulus, Pads or Blade
+        For a Blade, (P/L, 0, 0): the uniform line load [N/m] (its only law).
     pressure : UniformPressure or LinearPressure
     load : float
         Normal load P [N], finite and > 0.
@@ -268,8 +300,11 @@ def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float
     Linear law (MODEL §10): p = (P/A)(1 + gᵀ(r − r_c)) with J g = A (r_G − r_c); its
     centroid is r_G since ∫(r − r_c)(r − r_c)ᵀ dS g = J g.
     """
-    _check_footprint(footprint)
+    _check_footprint(footprint, blade=True)
     load = v.positive("load", load, "N")
+    if _blade_law(footprint, pressure):
+        assert isinstance(footprint, Blade)
+        return load / footprint.length, 0.0, 0.0
     a, rc, jm = footprint._central()
     if isinstance(pressure, UniformPressure):
         return load / a, 0.0, 0.0
@@ -331,9 +366,9 @@ def _round_disk(footprint, pressure) -> bool:
 
 def mass_centre(footprint, pressure) -> tuple[float, float]:
     """The mass centre G = the pressure centroid [m] in the body frame (the centre of a Disk
-    under Boussinesq or Hertz pressure)."""
-    _check_footprint(footprint)
-    if _round_disk(footprint, pressure):
+    under Boussinesq or Hertz pressure, of a Blade)."""
+    _check_footprint(footprint, blade=True)
+    if _round_disk(footprint, pressure) or _blade_law(footprint, pressure):
         return (float(footprint.centre[0]), float(footprint.centre[1]))
     if isinstance(pressure, UniformPressure):
         return footprint.centroid
@@ -391,6 +426,8 @@ def kernel_geometry(
     length = v.positive("length", length, "m")
     arrays = footprint.to_arrays() if arrays is None else arrays
     p0, p1, p2 = pressure_coefficients(footprint, pressure, 1.0)
+    if isinstance(footprint, Blade):  # a line load: p₀ per unit length, not area
+        p0 /= length
     xg, yg = mass_centre(footprint, pressure)
     geo = np.empty(NGEO)
     geo[0:3] = arrays.frame / length
@@ -424,7 +461,9 @@ def symmetry(footprint, pressure, rtol: float = 1e-12) -> tuple[bool, bool]:
     symmetry pure spin about G is an invariant set of the motion; under axial symmetry (and
     an isotropic tensor) every rotation of a terminal motion is one too (MODEL §9).
     """
-    _check_footprint(footprint)
+    _check_footprint(footprint, blade=True)
+    if _blade_law(footprint, pressure):  # a segment under a uniform load, G at its centre
+        return True, False
     if isinstance(pressure, PressureMap):
         return False, False
     _, p1, p2 = pressure_coefficients(footprint, pressure, 1.0)

@@ -10,6 +10,8 @@ laws of :mod:`slidespin.footprint_pressure`. It returns the same :class:`~slides
 * A ``Disk`` under Boussinesq or Hertz pressure (defined on circles, MODEL §3): the circle of
   its radius with G at its centre, on the elliptic kernel of :func:`slidespin.friction_wrench`
   (the same numbers as a ``Body`` on ``Circle(radius)``, to round-off).
+* A ``Blade`` (a line contact under a uniform line load): the closed form of
+  :mod:`slidespin._blade_kernel`, exact for every motion state.
 * A user pressure map (:class:`~slidespin.footprint_pressure.PressureMap`): a quadrature in
   polar coordinates about the instantaneous centre of rotation c, which removes its
   singularity: on each ray c + ρ ê the slip direction is constant, the footprint cuts exact
@@ -38,10 +40,12 @@ import warnings
 import numpy as np
 
 from . import _validate as v
+from ._blade_kernel import blade_wrench_array
 from ._footprint_kernel import FAR_RATIO, wrench_array
-from .footprint import Annulus, Disk, Pads, Polygon, Rectangle, as_patches
+from .footprint import Annulus, Blade, Disk, Pads, Polygon, Rectangle, as_patches
 from .footprint_pressure import (
     PressureMap,
+    _blade_law,
     area_rule,
     kernel_geometry,
     map_scale,
@@ -78,8 +82,8 @@ def footprint_wrench(
 
     Parameters
     ----------
-    footprint : Polygon, Rectangle, Disk, Annulus or Pads
-        The contact footprint in the body frame [m].
+    footprint : Polygon, Rectangle, Disk, Annulus, Pads or Blade
+        The contact footprint in the body frame [m] (a Blade: uniform pressure only).
     pressure : UniformPressure, LinearPressure, PressureMap, BoussinesqPressure or HertzPressure
         Normal pressure on the footprint (normalised to ``load``); the mass centre G is its
         centroid (:func:`slidespin.footprint_pressure.mass_centre`). Boussinesq and Hertz on a
@@ -118,11 +122,15 @@ def footprint_wrench(
     >>> round(w.moment, 12)  # −(2/3) μ P (R³ − r³)/(R² − r²)
     -0.233333333333
     """
-    if not isinstance(footprint, (Polygon, Rectangle, Annulus, Pads)):
+    if not isinstance(footprint, (Polygon, Rectangle, Annulus, Pads, Blade)):
         raise ValueError(
             f"footprint = {footprint!r} is invalid; valid values: Polygon, Rectangle, Disk, "
-            "Annulus or Pads"
+            "Annulus, Pads or Blade"
         )
+    if isinstance(footprint, Blade) and not isinstance(
+        pressure, (BoussinesqPressure, HertzPressure)
+    ):
+        _blade_law(footprint, pressure)  # a Blade takes the uniform line load only
     if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
         if not isinstance(footprint, Disk):
             from .body import _footprint_law_error
@@ -159,6 +167,21 @@ def footprint_wrench(
             fx[i], fy[i], mm[i] = _map_wrench_world(
                 prep, t, body_frame, pha[i], vxa[i], vya[i], oma[i], map_tol
             )
+    elif isinstance(footprint, Blade):  # the exact line-contact kernel
+        fx, fy, mm = blade_wrench_array(
+            *arrays.edges[0],
+            *footprint.centroid,
+            1.0,
+            t[0, 0],
+            t[0, 1],
+            t[1, 0],
+            t[1, 1],
+            body_frame,
+            pha,
+            vxa,
+            vya,
+            oma,
+        )
     else:
         geo = kernel_geometry(footprint, pressure, arrays)
         fx, fy, mm = wrench_array(
