@@ -114,10 +114,10 @@ fig.tight_layout()
 
 distance = tr.distance
 turns = (tr.stop_state.phi - tr.initial_state.phi) / (2.0 * math.pi)
-print(
-    f"distance = {distance:.9f} m (closed form {v0**2 / (2 * mu * g) + inertia * w0**2 / (4 * mu * m * g):.6f})"
-)
-print(f"turns = {turns:.9f} (closed form {w0 * v0 / (mu * g * (1 + k / 2)) / (2 * math.pi):.4f})")
+d_closed = v0**2 / (2 * mu * g) + inertia * w0**2 / (4 * mu * m * g)
+turns_closed = w0 * v0 / (mu * g * (1 + k / 2)) / (2 * math.pi)
+print(f"distance = {distance:.9f} m (closed form {d_closed:.6f} m)")
+print(f"turns = {turns:.9f} (closed form {turns_closed:.4f})")
 print(f"ending: {tr.ending} (the slide ends first; the stone stops turning in place)")
 
 # %%
