@@ -516,6 +516,13 @@ def load_factor(
     >>> disk = Body(Circle(0.1), UniformPressure(), mass=1.0)
     >>> round(load_factor(disk, FrictionTensor(0.3, 0.3), (1.5, 0.0, 0.0), g=10.0), 12)
     2.0
+
+    Any footprint (MODEL §10): a 5 kg box pushed by 10 N holds up to μ m g = 17.5 N.
+
+    >>> from slidespin.footprint import Rectangle
+    >>> box = Body(Rectangle(0.4, 0.3), UniformPressure(), mass=5.0)
+    >>> round(load_factor(box, FrictionTensor(0.35, 0.35), (10.0, 0.0, 0.0), g=10.0), 12)
+    1.75
     """
     _check(body, friction)
     w = _wrench3("applied_wrench", applied_wrench)
