@@ -232,3 +232,57 @@ def test_bad_load_keys_are_named(compute, fixed, vary, words):
     msg = str(err.value)
     for w in words:
         assert w in msg, (w, msg)
+
+
+def test_loaded_footprint_sweep_on_a_dask_cluster_equals_local(tmp_path):
+    """The loaded runs go through Dask (one chunk per task) and give the local numbers; the
+    ring on a slope holds below atan μ (the footprint's statics) and slides above it."""
+    distributed = pytest.importorskip("distributed")
+    spec = spec_of(
+        {
+            "shape": "annulus",
+            "outer_radius": 0.05,
+            "ring_width": 0.01,
+            "fx": 0.3,
+            "mu": 0.0,
+            "t_end": 0.3,
+        },
+        {"incline_angle_deg": [10.0, 30.0], "load_torque": [0.0, 0.05]},
+        compute="loaded",
+        chunk_size=2,
+    )
+    for k in ("a", "e"):
+        spec["fixed"].pop(k)
+    _, local = run(spec, tmp_path, "local")
+    with distributed.LocalCluster(
+        n_workers=1, threads_per_worker=1, host="127.0.0.1", dashboard_address=None, processes=True
+    ) as cluster:
+        with distributed.Client(cluster) as client:
+            _, remote = run(spec, tmp_path, "dask", executor=client)
+    assert list(local) == list(remote) and all(same(local[k], remote[k]) for k in local)
+    flat = local["load_torque"] == 0.0
+    a = np.radians(local["incline_angle_deg"])
+    assert list(local["ending"][flat]) == ["at_rest_throughout", "moving_at_t_end"]
+    acc = G * (np.sin(a) - 0.3 * np.cos(a))
+    assert local["speed_end"][flat][1] == pytest.approx(acc[flat][1] * 0.3, rel=1e-8)
+
+
+@pytest.mark.parametrize(
+    "patch",
+    [
+        {"shape": "annulus", "outer_radius": 0.05, "radius_ratio": 0.8},
+        {"shape": "rectangle", "length": 0.1, "aspect": 0.2},
+        {"shape": "pads", "pad_radius": 0.01, "pad_spacing": 0.1, "n_pads": 3},
+    ],
+)
+def test_footprint_threshold_along_a_principal_axis(tmp_path, patch):
+    """α_c = atan of the coefficient along the slope, whatever the footprint."""
+    spec = spec_of(
+        {**patch, "fx": 0.25}, {"fy": [0.25, 0.6], "incline_downhill": [0.0, math.pi / 2]}
+    )
+    for k in ("a", "e"):
+        spec["fixed"].pop(k)
+    _, t = run(spec, tmp_path)
+    along_x = np.isclose(np.cos(t["incline_downhill"]), 1.0)
+    coef = np.where(along_x, t["fx"], t["fy"])
+    assert np.allclose(t["critical_tilt"], np.arctan(coef), rtol=0, atol=1e-9)
