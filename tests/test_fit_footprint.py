@@ -169,3 +169,44 @@ def test_linear_law_centroid_on_a_rectangle_from_a_nearby_guess():
     # the fitted law is valid on the rectangle (p >= 0: G inside the middle-third rhombus)
     xi, eta = res.body.pressure.centroid
     assert abs(xi) / (L / 6.0) + abs(eta) / (W / 6.0) <= 1.0
+
+
+def test_command_line_fit_on_a_rectangle_case(tmp_path, capsys, monkeypatch):
+    """`slidespin fit DATA.csv --case BOX.toml --json` with a [patch] rectangle."""
+    import json
+
+    from slidespin import cli
+
+    if not any(name == "fit" for name, *_ in cli._PLUGINS):  # as tests/test_fit_cli.py
+        monkeypatch.setattr(
+            cli,
+            "_PLUGINS",
+            cli._PLUGINS
+            + (("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion"),),
+        )
+    body = box()
+    rng = np.random.default_rng(4)
+    runs = [noisy(*clean_track(body, TRUE, st, 80), rng) for st in STATES]
+    data = tmp_path / "box.csv"
+    with open(data, "w", encoding="utf-8") as fh:
+        fh.write("run,t,x,y,phi\n")
+        for k, run in enumerate(runs):
+            for i in range(run["t"].size):
+                fh.write(
+                    f"{k},"
+                    + ",".join(repr(float(run[c][i])) for c in ("t", "x", "y", "phi"))
+                    + "\n"
+                )
+    case = tmp_path / "box.toml"
+    case.write_text(
+        f'[patch]\nshape = "rectangle"\nlength = {L}\nwidth = {W}\n'
+        '[pressure]\nlaw = "uniform"\n[friction]\nfx = 0.3\nfy = 0.3\n'
+        "[body]\nmass = 1.0\n"
+    )
+    code = cli.main(["fit", str(data), "--case", str(case), "--free", "fx,fy", "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert code == 0
+    assert out["n_runs"] == 2 and out["n_points"] == 480
+    for name, truth in (("fx", 0.42), ("fy", 0.54)):
+        assert abs(out["estimates"][name] - truth) < 3.0 * out["std_errors"][name], name
+        assert out["std_errors"][name] < 0.01
