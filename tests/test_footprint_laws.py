@@ -185,6 +185,21 @@ def test_disk_round_law_simulate_equals_circle(law):
     assert np.array_equal(a.t, b.t)
 
 
+def test_disk_round_law_batch_and_terminal_equal_circle():
+    """simulate_many, simulate_bodies and the terminal analysis: the Circle body's numbers."""
+    from slidespin.batch import simulate_bodies, simulate_many
+
+    pressure = ss.HertzPressure()
+    friction = ss.FrictionTensor(0.3, 0.4, 0.02)
+    circle = ss.Body(ss.Circle(0.05), pressure, 0.4, 4e-4)
+    disk = ss.Body(Disk(0.05, centre=(0.02, 0.01), angle=0.4), pressure, 0.4, 4e-4)
+    states = np.array([[0, 0, 0, 1.0, 0.2, 20.0], [0.1, 0, 0.3, 0.3, 0.1, -5.0]])
+    a = simulate_many(circle, friction, states)
+    assert np.array_equal(a.t_stop, simulate_many(disk, friction, states).t_stop)
+    assert np.array_equal(a.t_stop, simulate_bodies([disk, disk], friction, states).t_stop)
+    assert ss.terminal_ratio(disk, friction, 0.3) == ss.terminal_ratio(circle, friction, 0.3)
+
+
 @pytest.mark.parametrize("law", sorted(ROUND_LAWS))
 @pytest.mark.parametrize("centre", [(0.0, 0.0), (0.07, -0.03)])
 def test_disk_round_law_pure_spin_closed_form(law, centre):
