@@ -367,6 +367,11 @@ def test_ellipse_sweeps_keep_their_layout(tmp_path):
             ["overlap", "pad_spacing = 0.015"],
         ),
         (
+            {"shape": "pads", "pad_shape": "rectangle", "pad_radius": 0.01, "pad_spacing": 0.1},
+            {},
+            ["pad_shape", "rectangle", "'pad_radius'", "pad_length, pad_width"],
+        ),
+        (
             {"shape": "pads", "pad_radius": 0.01, "pad_spacing": 0.1},
             {"n_pads": [2, 2.5]},
             ["n_pads", "2.5", "integer in [2, 64]"],

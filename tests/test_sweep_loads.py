@@ -223,6 +223,12 @@ def test_loaded_unconverged_statuses_are_left_out():
         ("loaded", {"t_end": -1.0}, {}, ["t_end", "-1.0", "(0, 1e9]"]),
         ("stop", {"load_torque": 1.0}, {}, ["load_torque", "compute", "statics", "loaded"]),
         ("dynamic", {}, {}, ["compute", "dynamic", "stop, statics, loaded"]),
+        (
+            "loaded",
+            {"fx": 0.001, "mu": 0.999, "e": 0.9987, "t_end": 1.0},
+            {},
+            ["case 0", "anisotropy", "elongation", "valid range: [1, 10000]"],
+        ),
     ],
 )
 def test_bad_load_keys_are_named(compute, fixed, vary, words):
@@ -286,3 +292,22 @@ def test_footprint_threshold_along_a_principal_axis(tmp_path, patch):
     along_x = np.isclose(np.cos(t["incline_downhill"]), 1.0)
     coef = np.where(along_x, t["fx"], t["fy"])
     assert np.allclose(t["critical_tilt"], np.arctan(coef), rtol=0, atol=1e-9)
+
+
+def test_a_case_failing_mid_sweep_is_named_and_the_sweep_resumes(tmp_path, monkeypatch):
+    import slidespin.statics as statics
+
+    real = statics.critical_tilt
+
+    def flaky(body, friction, downhill=0.0, phi=0.0):
+        if friction.fx > 0.5:
+            raise RuntimeError("statics: the wrench quadrature missed its error target")
+        return real(body, friction, downhill, phi)
+
+    spec = spec_of({"mu": 0.0}, {"fx": [0.2, 0.3, 0.4, 0.6]}, chunk_size=2)
+    monkeypatch.setattr(statics, "critical_tilt", flaky)
+    with pytest.raises(SweepError, match=r"case 3: RuntimeError: statics: the wrench"):
+        sweep(spec, tmp_path / "out", progress=False)
+    monkeypatch.setattr(statics, "critical_tilt", real)
+    res = sweep(spec, tmp_path / "out", resume=True, progress=False)
+    assert res.chunks_computed == 1 and res.status_counts == {"ok": 4}

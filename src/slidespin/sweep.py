@@ -94,6 +94,7 @@ from .sweep_loads import (
     STATICS_COLUMNS,
     STATICS_ENDINGS,
     STATICS_STATUSES,
+    CaseError,
     compute_loaded,
     compute_statics,
     load_columns,
@@ -439,6 +440,14 @@ def _validate_spec(data: dict) -> SweepSpec:
         raise SweepError(
             f"shape = {shape!r} does not take {k!r}; valid patch keys: {', '.join(sorted(allowed))}"
         )
+    if shape == "pads":
+        pad_shape = _check_value("[fixed] pad_shape", fixed.get("pad_shape", "disk"), "pad_shape")
+        own = {"disk": {"pad_radius"}, "rectangle": {"pad_length", "pad_width"}}
+        for k in sorted(given & (own["disk"] | own["rectangle"]) - own[pad_shape]):
+            raise SweepError(
+                f"pad_shape = {pad_shape!r} does not take {k!r}; valid size keys: "
+                f"{', '.join(sorted(own[pad_shape]))}"
+            )
     if mode == "stop":
         for k in sorted(given & set(LOAD_PARAMETERS)):
             raise SweepError(
@@ -758,6 +767,18 @@ def _build_inputs(spec: SweepSpec, cols: dict) -> _Inputs:
     states = np.column_stack([fields[k] for k in ("x", "y", "phi", "vx", "vy", "omega")])
     loads = None
     if spec.mode != "stop":
+        from .statics import check_anisotropy
+
+        # static friction is solved only where the anisotropy x elongation allows it: refuse
+        # the others here, before any work, rather than mid-sweep
+        seen = set()
+        for i, (body, fr) in enumerate(zip(bodies, frictions)):
+            if (id(body), id(fr)) not in seen:
+                seen.add((id(body), id(fr)))
+                try:
+                    check_anisotropy(body, fr)
+                except ValueError as exc:
+                    raise SweepError(f"case {int(cols['case_id'][i])}: {exc}") from None
         loads = load_columns(cols, n, spec.mode)
         for k in LOAD_COLUMNS:
             table[k] = loads[k].astype(str) if loads[k].dtype == object else loads[k]
@@ -817,16 +838,16 @@ def compute_chunk(spec_data: dict | SweepSpec, index: int) -> dict:
     inp = _case_inputs(spec, cols)
     out = dict(inp.table)
     given = set(spec.data.get("fixed", {})) | set(spec.data.get("vary", {}))
-    if spec.mode == "statics":
-        out.update(
-            compute_statics(inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {}, given)
-        )
-    elif spec.mode == "loaded":
-        out.update(
-            compute_loaded(
-                inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {}, given, rtol
-            )
-        )
+    if spec.mode != "stop":
+        args = (inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {}, given)
+        try:
+            if spec.mode == "statics":
+                out.update(compute_statics(*args))
+            else:
+                out.update(compute_loaded(*args, rtol))
+        except CaseError as exc:
+            # a per-case failure the checks before the run did not foresee: name the case
+            raise SweepError(f"case {int(cols['case_id'][exc.index])}: {exc}") from exc
     else:
         # one batch per value of g (simulate_bodies shares g across its cases)
         parts = []

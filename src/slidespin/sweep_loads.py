@@ -36,6 +36,7 @@ import math
 import numpy as np
 
 __all__ = [
+    "CaseError",
     "MODES",
     "LOAD_PARAMETERS",
     "LOAD_COLUMNS",
@@ -104,6 +105,14 @@ STATICS_ENDINGS = ("sticks", "slides")
 LOADED_STATUSES = ("ok", "max_steps", "max_phases", "no_onset", "step_too_small")
 #: loaded statuses whose values are as reached, not a finished run (left out of tables)
 LOADED_UNCONVERGED = frozenset({"max_steps", "max_phases", "no_onset", "step_too_small"})
+
+
+class CaseError(RuntimeError):
+    """A statics or loaded case failed; ``index`` is its row in the block of cases."""
+
+    def __init__(self, index: int, exc: Exception) -> None:
+        super().__init__(f"{type(exc).__name__}: {exc}")
+        self.index = index
 
 
 def _bad(name, arr, ok, valid):
@@ -208,10 +217,13 @@ def compute_statics(
     lam = np.empty(n)
     for i in range(n):
         body, fr, phi = bodies[i], frictions[i], float(states[i, 2])
-        load, incline = _load_objects(loads, i, given)
-        tilt[i] = critical_tilt(body, fr, float(loads["incline_downhill"][i]), phi)
-        w = applied_wrench(body, 0.0, phi, load, incline, float(g[i]))
-        lam[i] = load_factor(body, fr, w, phi, float(g[i]), incline=incline)
+        try:
+            load, incline = _load_objects(loads, i, given)
+            tilt[i] = critical_tilt(body, fr, float(loads["incline_downhill"][i]), phi)
+            w = applied_wrench(body, 0.0, phi, load, incline, float(g[i]))
+            lam[i] = load_factor(body, fr, w, phi, float(g[i]), incline=incline)
+        except (ValueError, RuntimeError) as exc:
+            raise CaseError(i, exc) from exc
     sticks = lam >= 1.0
     return {
         "critical_tilt": tilt,
@@ -242,16 +254,19 @@ def compute_loaded(
     for i in range(n):
         load, incline = _load_objects(loads, i, given)
         t_end = float(loads["t_end"][i])
-        tr = simulate(
-            bodies[i],
-            frictions[i],
-            State(*(float(x) for x in states[i])),
-            float(g[i]),
-            rtol,
-            load=load,
-            incline=incline,
-            t_end=t_end,
-        )
+        try:
+            tr = simulate(
+                bodies[i],
+                frictions[i],
+                State(*(float(x) for x in states[i])),
+                float(g[i]),
+                rtol,
+                load=load,
+                incline=incline,
+                t_end=t_end,
+            )
+        except (ValueError, RuntimeError) as exc:
+            raise CaseError(i, exc) from exc
         slips = tr.slip_intervals
         num["t_end"][i] = t_end
         num["t_final"][i] = tr.t[-1]
