@@ -6,11 +6,13 @@ vertical axis through the mass centre G), I* = I/(m a²) → ``inertia_ratio``; 
 
 Beyond the paper (MODEL §10) the patch may be any footprint of :mod:`slidespin.footprint`
 (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``, ``Pads``) under uniform or linear
-pressure. A ``Disk`` (placed anywhere) also takes the Boussinesq and Hertz laws, which are
-defined on circles (MODEL §3, §10): it is then the circle of its radius with G at its centre,
-and runs on the elliptic engine exactly like ``Circle(radius)``. Its length unit ℓ (:attr:`Body.length_unit`, the footprint's ``extent``: the radius
-of a disk or ring, the half-diagonal of a centred rectangle) plays the role of the ellipse's
-semi-axis a in I* = I/(m ℓ²), β*/ℓ and the natural units of the integrator.
+pressure, or a ``Blade`` (a line contact) under a uniform line load. A ``Disk`` (placed
+anywhere) also takes the Boussinesq and Hertz laws, which are defined on circles (MODEL §3,
+§10): it is then the circle of its radius with G at its centre, and runs on the elliptic
+engine exactly like ``Circle(radius)``. The length unit ℓ (:attr:`Body.length_unit`, the
+footprint's ``extent``: the radius of a disk or ring, the half-diagonal of a centred
+rectangle, half a blade) plays the role of the ellipse's semi-axis a in I* = I/(m ℓ²), β*/ℓ
+and the natural units of the integrator.
 """
 
 from __future__ import annotations
@@ -46,7 +48,8 @@ class Body:
     patch : Ellipse, Circle or a footprint
         The contact patch: an ellipse or circle (the paper's), or a footprint of
         :mod:`slidespin.footprint` (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``,
-        ``Pads``; MODEL §10).
+        ``Pads``, ``Blade``; MODEL §10). A ``Blade`` works with :func:`slidespin.friction_wrench`
+        only: the integrating functions refuse it (``docs/guide/patches.md``).
     pressure : UniformPressure, LinearPressure, BoussinesqPressure or HertzPressure
         Normal-pressure law on the patch. The mass centre G lies above the pressure
         centroid: the patch centre (the area centroid of a footprint), or (ξc, ηc) for the
@@ -63,7 +66,7 @@ class Body:
         (docs/errors.md, "Valid ranges"; ℓ = :attr:`length_unit`). ``None`` means the
         inertia of a uniform plate of the patch's shape about its centre: I = m (a² + b²)/4
         for an ellipse (and m R²/2 for a disk under Boussinesq or Hertz pressure), the paper's
-        I* = (1 + κ²)/4 (eq. 7); ``patch.plate_inertia(mass)``
+        I* = (1 + κ²)/4 (eq. 7); ``patch.plate_inertia(mass)`` (m L²/12 for a blade)
         for a footprint, about its area centroid (for ``Pads`` a plate covering the pads
         only, with no mass between them: give I explicitly for a sled or a chair). For the
         linear law, whose G is off-centre, give I explicitly if the body is not such a plate.
@@ -90,7 +93,7 @@ class Body:
         if not (_fp.is_footprint(patch) or isinstance(patch, Ellipse)):
             raise ValueError(
                 f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
-                "footprint (Polygon, Rectangle, Disk, Annulus, Pads)"
+                "footprint (Polygon, Rectangle, Disk, Annulus, Pads, Blade)"
             )
         footprint = _fp.is_footprint(patch) and not _round_law(patch, self.pressure)
         if footprint:
@@ -151,7 +154,7 @@ class Body:
         if not (isinstance(patch, Ellipse) or _fp.is_footprint(patch)):
             raise ValueError(
                 f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
-                "footprint (Polygon, Rectangle, Disk, Annulus, Pads)"
+                "footprint (Polygon, Rectangle, Disk, Annulus, Pads, Blade)"
             )
         return cls(patch, pressure, m, i_star * m * _length_unit(patch) ** 2)
 
@@ -170,7 +173,7 @@ class Body:
         return _length_unit(self.patch)
 
     @property
-    def inertia(self) -> float:
+    def _inertia(self) -> float:
         """I [kg m²]: :attr:`moment_of_inertia`, which ``__post_init__`` always sets (the
         default plate inertia for ``None``), typed as a float."""
         inertia = self.moment_of_inertia
@@ -180,12 +183,12 @@ class Body:
     @property
     def inertia_ratio(self) -> float:
         """I* = I/(m ℓ²) (paper §3, appendix; ℓ = a for an ellipse)."""
-        return self.inertia / (self.mass * self.length_unit**2)
+        return self._inertia / (self.mass * self.length_unit**2)
 
     @property
     def radius_of_gyration(self) -> float:
         """k = √(I/m) [m]."""
-        return math.sqrt(self.inertia / self.mass)
+        return math.sqrt(self._inertia / self.mass)
 
     @property
     def mass_centre(self) -> tuple[float, float]:
