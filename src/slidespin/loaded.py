@@ -68,6 +68,7 @@ from ._validate import _short
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline, Load
+from .outcomes import LOADED_ENDINGS, status_message
 from .statics import (
     WRENCH_MAX,
     OnsetNotFound,
@@ -80,8 +81,6 @@ from .statics import (
 
 __all__ = ["GAUGE_TOL", "LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
 
-#: how a loaded motion ends (:attr:`LoadedTrajectory.ending`)
-LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
 _TOL = 1e-13
 _STOP_DROP = 1e-13  # the stop is declared when s has fallen below this fraction of its scale
 STEADY_TOL = 1e-6  # relative change of the speed that would take the elapsed time: steady
@@ -186,6 +185,11 @@ class LoadedTrajectory:
         """|v_G| [m/s]."""
         return np.hypot(self.vx, self.vy)
 
+    @property
+    def status_message(self) -> str:
+        """One line saying what :attr:`status` means (:mod:`slidespin.outcomes`)."""
+        return status_message(self.status, loaded=True)
+
     def animate(self, path, fps: int = 20, frames: int = 60, **kwargs) -> str:
         """Write an animated GIF of the motion (:func:`slidespin.animate.animate`)."""
         from .animate import animate
@@ -206,6 +210,7 @@ class LoadedTrajectory:
             "omega_final": f.omega,
             "ending": self.ending,
             "status": self.status,
+            "status_message": self.status_message,
             "message": self.message,
             "phases": [[k, a, b] for k, a, b in self.phases],
             "energy_error": self.energy_error,
