@@ -468,3 +468,34 @@ def test_cli_ring_example(tmp_path):
     ratio = t["beta_stop"][iso][np.argsort(t["radius_ratio"][iso])] / 0.05
     assert abs(ratio[0] - 0.653) < 1e-3 and abs(ratio[-1] - 1.0) < 0.01
     assert np.all(np.diff(ratio) > 0)
+
+
+def test_random_footprint_sweep_is_independent_of_chunking(tmp_path):
+    def spec(chunk):
+        return {
+            "name": "rnd",
+            "kind": "random",
+            "chunk_size": chunk,
+            "random": {"samples": 9, "seed": 3},
+            "fixed": {"shape": "annulus", "outer_radius": 0.05, "fx": 0.3, "v0": 1.0},
+            "vary": {
+                "radius_ratio": {"low": 0.0, "high": 0.95},
+                "mu": {"low": 0.0, "high": 0.2},
+                "omega0": {"low": -20.0, "high": 20.0},
+            },
+        }
+
+    _, a = run(spec(2), tmp_path, "a")
+    _, b = run(spec(9), tmp_path, "b")
+    assert all(same(a[k], b[k]) for k in a)
+    assert np.unique(a["radius_ratio"]).size == 9
+    check_against_simulate(a, lambda i: Annulus(float(a["inner_radius"][i]), 0.05))
+
+
+def test_sweep_patch_keys_are_those_of_the_case_file():
+    """The footprint keys of a TOML [patch] table are sweep keys of the same shape."""
+    from slidespin._cases import SHAPE_KEYS
+    from slidespin.case import _FOOTPRINT_KEYS
+
+    for shape, keys in _FOOTPRINT_KEYS.items():
+        assert set(keys) <= set(SHAPE_KEYS[shape]), shape
