@@ -51,7 +51,8 @@ Footprints (``shape`` other than ellipse; issue #12) take the keys of the case f
 ``length`` and one of ``width``, ``aspect`` = width/length (rectangle); ``vertices``
 (fixed) and ``scale`` (polygon); ``pad_shape``, ``n_pads``, ``pad_spacing`` and
 ``pad_radius`` or ``pad_length``, ``pad_width`` (pads: equal, unrotated, centred on a
-circle about the origin, the first on the η axis, neighbours ``pad_spacing`` apart). ``I_star`` is then I/(m ℓ²) with ℓ the footprint's extent
+circle about the origin, the first on the η axis, neighbours ``pad_spacing`` apart).
+``I_star`` is then I/(m ℓ²) with ℓ the footprint's extent
 (:attr:`slidespin.Body.length_unit`). Each distinct patch is built once per chunk and the
 cases go to :func:`slidespin.batch.simulate_bodies` together: every case equals a single
 :func:`slidespin.simulate` call on the same body, to the last bit.
