@@ -26,24 +26,24 @@ of at least 1000 cases per task; the results are identical to the local ones, bi
 
 Parameters a spec may fix or vary (SI units, angles in radians):
 
-==================  ==========================================================
-``a``               semi-axis along ξ [m] (required)
-``b`` | ``e`` | ``aspect``   semi-axis along η [m], or eccentricity, or b/a (default: circle)
-``law``             uniform | linear | boussinesq | hertz
-``xi_c``, ``eta_c`` linear-law centroid = mass centre [m]
-``fx``              friction coefficient along the tensor's first axis (required)
-``fy`` | ``mu``     second coefficient, or μ = fy − fx (one required)
-``f``               skew coefficient
-``frame``           plane | body
-``angle``           principal axes of the tensor [rad]
-``mass``            [kg]
-``I_star`` | ``moment_of_inertia``   I/(m a²), or I [kg m²] (default: uniform plate)
-``g``               [m/s²]
-``v0``, ``theta0``  initial speed of G [m/s] and its direction [rad]
-``omega0``          initial spin [rad/s]
-``phi0``, ``x0``, ``y0``  initial body angle [rad] and position [m]
-``shape``           ellipse (default) | disk | annulus | rectangle | polygon | pads (fixed)
-==================  ==========================================================
+==================================  =============================================================
+``a``                               semi-axis along ξ [m] (required)
+``b`` | ``e`` | ``aspect``          semi-axis along η [m], eccentricity, or b/a (default: circle)
+``law``                             uniform | linear | boussinesq | hertz
+``xi_c``, ``eta_c``                 linear-law centroid = mass centre [m]
+``fx``                              friction coefficient along the tensor's first axis (required)
+``fy`` | ``mu``                     second coefficient, or μ = fy − fx (one required)
+``f``                               skew coefficient
+``frame``                           plane | body
+``angle``                           principal axes of the tensor [rad]
+``mass``                            [kg]
+``I_star`` | ``moment_of_inertia``  I/(m a²), or I [kg m²] (default: uniform plate)
+``g``                               [m/s²]
+``v0``, ``theta0``                  initial speed of G [m/s] and its direction [rad]
+``omega0``                          initial spin [rad/s]
+``phi0``, ``x0``, ``y0``            initial body angle [rad] and position [m]
+``shape``                           patch shape, fixed (default ellipse; footprints below)
+==================================  =============================================================
 
 Footprints (``shape`` other than ellipse; issue #12) take the keys of the case file's
 ``[patch]`` table instead of ``a``, ``b``, ``e``, ``aspect``: ``radius`` (disk);

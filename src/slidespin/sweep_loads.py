@@ -4,21 +4,22 @@ A sweep spec with ``compute = "statics"`` or ``compute = "loaded"`` (:mod:`slide
 adds the keys of the case file's ``[load]`` and ``[incline]`` tables, prefixed by the table's
 name (``load_fx``, ``incline_angle``, ...), and ``t_end`` of ``[solver]``:
 
-=======================  ==================================================================
-``load_fx``, ``load_fy``  applied force [N] at G, in ``load_frame`` (default 0)
-``load_torque``           applied torque about the vertical [N m] (default 0)
-``load_frame``            plane | body (default plane)
-``incline_angle``         tilt α of the plane [rad], in [0, π/2) (or ``incline_angle_deg``)
-``incline_downhill``      direction of steepest descent δ in the plane frame [rad] (default 0)
-``t_end``                 end of a loaded run [s], in (0, 1e9] (``compute = "loaded"``: required)
-=======================  ==================================================================
+==========================  ================================================================
+``load_fx``, ``load_fy``    applied force [N] at G, in ``load_frame`` (default 0)
+``load_torque``             applied torque about the vertical [N m] (default 0)
+``load_frame``              plane | body (default plane)
+``incline_angle``           tilt α of the plane [rad], in [0, π/2) (or ``incline_angle_deg``)
+``incline_downhill``        direction of steepest descent δ in the plane frame [rad] (default 0)
+``t_end``                   end of a loaded run [s], in (0, 1e9] (required when loaded)
+==========================  ================================================================
 
 ``compute = "statics"`` (MODEL §11; :mod:`slidespin.statics`): per case, the critical tilt
 α_c along ``incline_downhill`` at the body angle ``phi0``
-(:func:`~slidespin.statics.critical_tilt`; the load keys do not enter it), the load factor λ* of the whole applied wrench (load plus
-the downhill pull of the tilt; :func:`~slidespin.statics.load_factor`, ``inf`` for none) and
-whether the body at rest holds (``ending`` = ``sticks`` iff λ* ≥ 1, else ``slides``; status
-``ok``). The initial velocities are not used.
+(:func:`~slidespin.statics.critical_tilt`; the load keys do not enter it), the load factor
+λ* of the whole applied wrench (load plus the downhill pull of the tilt;
+:func:`~slidespin.statics.load_factor`, ``inf`` for none) and whether the body at rest holds
+(``ending`` = ``sticks`` iff λ* ≥ 1, else ``slides``; status ``ok``). The initial velocities
+are not used.
 
 ``compute = "loaded"`` (:func:`slidespin.simulate` with ``load=``, ``incline=``, ``t_end=``,
 i.e. :func:`~slidespin.loaded.simulate_loaded`): the ending and status of the run
