@@ -457,8 +457,9 @@ def test_blade_body():
     w = ss.friction_wrench(body, friction, 0.2, 0.1, 3.0, 0.4, g=9.81)
     ref = _reference_blade(BLADE, friction.matrix, "plane", 0.2, 0.1, 3.0, 0.4, 2.0 * 9.81)
     assert abs(w.moment - ref[2]) <= 1e-10 * 2.0 * 9.81 * 0.2
-    with pytest.raises(ValueError, match="not yet with the compiled integrator"):
-        ss.simulate(body, friction, ss.State(omega=3.0))
+    if not ss.body._BLADE_INTEGRATION:
+        with pytest.raises(ValueError, match="not yet with the compiled integrator"):
+            ss.simulate(body, friction, ss.State(omega=3.0))
     for law in (ss.LinearPressure(0.05, 0.0), ss.HertzPressure(), ss.BoussinesqPressure()):
         with pytest.raises(ValueError, match="pressure = .* is invalid"):
             ss.Body(BLADE, law, mass=1.0)
@@ -471,3 +472,54 @@ def test_blade_body():
             Blade(bad)
     with pytest.raises(ValueError, match="centre"):
         Blade(1e-3, centre=(1e4, 0.0))
+
+
+BLADE_INTEGRATION = pytest.mark.skipif(
+    not ss.body._BLADE_INTEGRATION,
+    reason="the compiled integrator does not take blades yet (slidespin.body._BLADE_INTEGRATION)",
+)
+
+
+@BLADE_INTEGRATION
+def test_blade_simulate_closed_forms():
+    """Pure spin about the centre: I ω̇ = −μ m g L/4 with I = m L²/12, so t = L ω₀/(3 μ g);
+    pure sliding: t = v₀/(μ g) (isotropic friction)."""
+    mu, g, length = 0.3, 9.81, 0.4
+    body = ss.Body(Blade(length), ss.UniformPressure(), mass=2.0)
+    friction = ss.FrictionTensor(mu, mu)
+    spin = ss.simulate(body, friction, ss.State(omega=20.0), g=g)
+    assert spin.ending == "pure_spinning" and spin.status == "stopped"
+    assert spin.t_stop == pytest.approx(length * 20.0 / (3.0 * mu * g), rel=1e-9)
+    slide = ss.simulate(body, friction, ss.State(vx=1.0, vy=0.5, phi=0.3), g=g)
+    assert slide.ending == "pure_sliding" and slide.status == "stopped"
+    assert slide.t_stop == pytest.approx(math.hypot(1.0, 0.5) / (mu * g), rel=1e-9)
+
+
+@BLADE_INTEGRATION
+@pytest.mark.parametrize("inertia", [None, 2.0 * 0.13**2])
+def test_blade_terminal_ratio_closed_form(inertia):
+    """The mixed ending (isotropic friction): the velocity of G across the blade and the ICR on
+    it at β* with β*² = ℓ² − 2k² (ℓ = L/2, k the radius of gyration), from v̇/v = ω̇/ω with
+    F = 2 μ P s*/L and M = μ P (ℓ² − s*²)/L: β* = k = L/√12 for the thin rod."""
+    length = 0.4
+    body = ss.Body(Blade(length), ss.UniformPressure(), mass=2.0, moment_of_inertia=inertia)
+    k2 = body.radius_of_gyration**2
+    r = ss.simulate(body, ss.FrictionTensor(0.3, 0.3), ss.State(vx=1.0, omega=20.0))
+    assert r.status == "stopped" and r.ending == "mixed"
+    assert abs(r.beta_stop) == pytest.approx(math.sqrt(length**2 / 4.0 - 2.0 * k2), rel=1e-8)
+
+
+@BLADE_INTEGRATION
+def test_blade_stop_time_is_the_limit_of_thin_rectangles():
+    """The stop time of a sliding, spinning blade: thin rectangles approach it like (w/L)²."""
+    body = ss.Body(Blade(0.4), ss.UniformPressure(), mass=2.0)
+    friction = ss.FrictionTensor(0.3, 0.3)
+    s0 = ss.State(vx=1.0, omega=20.0)
+    t_blade = ss.simulate(body, friction, s0).t_stop
+    gaps = []
+    for w in (0.02, 0.01, 0.005):
+        rect = ss.Body(Rectangle(0.4, w), ss.UniformPressure(), 2.0, body.moment_of_inertia)
+        gaps.append(abs(ss.simulate(rect, friction, s0).t_stop - t_blade))
+    ratios = np.array(gaps[:-1]) / np.array(gaps[1:])
+    assert np.all((ratios > 3.5) & (ratios < 4.5)), ratios
+    assert gaps[-1] < 2e-4 * t_blade

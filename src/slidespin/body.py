@@ -38,6 +38,12 @@ __all__ = ["Body", "State", "check_body_friction"]
 
 _LAWS = (UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure)
 
+#: whether the compiled integrator takes a ``Blade``: it needs the footprint kernel to hand a
+#: one-edge footprint to :mod:`slidespin._blade_kernel` and an ending for the blade's
+#: non-smooth terminal motion (the ICR on the blade); until both are in, the integrating
+#: functions refuse blades (friction_wrench and footprint_wrench take them)
+_BLADE_INTEGRATION = False
+
 
 @dataclass(frozen=True, slots=True)
 class Body:
@@ -229,7 +235,7 @@ class Body:
         t = friction.matrix
         patch = self.patch
         if self.is_footprint and not isinstance(patch, Ellipse):  # the footprint kernel
-            if isinstance(patch, _fp.Blade):
+            if isinstance(patch, _fp.Blade) and not _BLADE_INTEGRATION:
                 raise ValueError(
                     f"patch = {patch!r} works with friction_wrench and footprint_wrench, but not "
                     "yet with the compiled integrator (simulate, simulate_many, "
