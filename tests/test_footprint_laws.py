@@ -523,3 +523,20 @@ def test_blade_stop_time_is_the_limit_of_thin_rectangles():
     ratios = np.array(gaps[:-1]) / np.array(gaps[1:])
     assert np.all((ratios > 3.5) & (ratios < 4.5)), ratios
     assert gaps[-1] < 2e-4 * t_blade
+
+
+@pytest.mark.parametrize("law", ["boussinesq", "hertz"])
+def test_disk_under_elliptic_laws_has_table2_inertia_intervals(law):
+    """A Disk (any radius and centre) under Boussinesq or Hertz pressure has the printed Table
+    2 boundaries (MODEL §6–7; isotropic and orthotropic with μ = fy − fx)."""
+    printed = {
+        "boussinesq": lambda fx, mu: ((fx + mu) / (3 * fx), (4 * fx + 3 * mu) / (8 * fx),
+                                      (2 * fx + mu) / (2 * fx)),
+        "hertz": lambda fx, mu: ((fx + mu) / (5 * fx), (6 * fx + 5 * mu) / (24 * fx),
+                                 (2 * fx + mu) / (4 * fx)),
+    }[law]
+    pressure = ss.HertzPressure() if law == "hertz" else ss.BoussinesqPressure()
+    for fx, fy in ((0.3, 0.3), (0.25, 0.4)):
+        got = ss.inertia_intervals(pressure, ss.FrictionTensor(fx, fy),
+                                   patch=Disk(0.07, centre=(0.02, -0.01)))
+        np.testing.assert_allclose(tuple(got), printed(fx, fy - fx), rtol=1e-8)

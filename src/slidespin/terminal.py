@@ -749,9 +749,12 @@ def _circle_params(pressure, friction, patch=None):
     if patch is None or isinstance(patch, Circle):
         body = Body(Circle(1.0), pressure, 1.0)
         return _params(body, friction)
-    from .footprint import Annulus, is_footprint
+    from .footprint import Annulus, Disk, is_footprint
     from .footprint_pressure import symmetry
 
+    if isinstance(patch, Disk) and not Body(patch, pressure, 1.0).is_footprint:
+        # a Disk under Boussinesq or Hertz pressure is a circle for the engine (G at its centre)
+        return _params(Body(Circle(1.0), pressure, 1.0), friction)
     ok = isinstance(patch, Annulus) and is_footprint(patch)
     if ok:
         ring = Annulus(patch.inner_radius / patch.outer_radius, 1.0)
@@ -760,7 +763,8 @@ def _circle_params(pressure, friction, patch=None):
     if not ok:
         raise ValueError(
             f"patch = {patch!r} is invalid for Table 2; valid values: None or a Circle, or a "
-            "centred Disk or Annulus under uniform pressure (an axisymmetric footprint)"
+            "centred Disk or Annulus under uniform pressure (an axisymmetric footprint), or a "
+            "Disk under Boussinesq or Hertz pressure"
         )
     return _params(body, friction)
 
