@@ -68,7 +68,8 @@ from ._validate import _short
 from .body import Body, State, check_body_friction
 from .friction import FrictionTensor
 from .loads import Incline, Load
-from .outcomes import LOADED_ENDINGS, status_message
+from .outcomes import LOADED_ENDINGS as LOADED_ENDINGS  # re-exported (older imports)
+from .outcomes import status_message
 from .statics import (
     WRENCH_MAX,
     OnsetNotFound,
@@ -79,7 +80,7 @@ from .statics import (
     static_support,
 )
 
-__all__ = ["GAUGE_TOL", "LOADED_ENDINGS", "LoadedTrajectory", "simulate_loaded"]
+__all__ = ["GAUGE_TOL", "LoadedTrajectory", "simulate_loaded"]
 
 _TOL = 1e-13
 _STOP_DROP = 1e-13  # the stop is declared when s has fallen below this fraction of its scale
