@@ -196,8 +196,8 @@ def _process_docstring(app, what, name, obj, options, lines) -> None:
 #   re-exported at the top level) cannot be declared under that name a second time: its page
 #   shows the module docstring and lists its members one by one.
 API_MODULES = (
-    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.terminal",
-    "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
+    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.sweep_loads",
+    "slidespin.terminal", "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
     "slidespin.loaded", "slidespin.limit_surface", "slidespin.footprint",
     "slidespin.footprint_pressure", "slidespin.footprint_wrench", "slidespin.pressure",
     "slidespin.friction", "slidespin.geometry", "slidespin.animate", "slidespin.plotting",

@@ -24,8 +24,8 @@ pytestmark = pytest.mark.docs
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 PUBLIC_MODULES = (
-    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.terminal",
-    "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
+    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.sweep_loads",
+    "slidespin.terminal", "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
     "slidespin.loaded", "slidespin.limit_surface", "slidespin.footprint",
     "slidespin.footprint_pressure", "slidespin.footprint_wrench", "slidespin.animate",
 )

@@ -84,13 +84,12 @@ from . import _validate as v
 from ._cases import SHAPE_KEYS, footprint_geometry, footprint_patch, validated_columns
 from .batch import simulate_bodies, simulate_cases
 from .case import check_document, check_name
+from .outcomes import LOADED_ENDINGS, LOADED_STATUSES, LOADED_UNCONVERGED
 from .pressure import LAW_NAMES
 from .sweep_loads import (
     LOAD_COLUMNS,
     LOAD_PARAMETERS,
     LOADED_COLUMNS,
-    LOADED_STATUSES,
-    LOADED_UNCONVERGED,
     MODES,
     STATICS_COLUMNS,
     STATICS_ENDINGS,
@@ -1050,7 +1049,6 @@ def chunk_columns(spec: SweepSpec) -> tuple:
 
 def _vocabulary(spec: SweepSpec) -> tuple:
     """(statuses, endings) a chunk of ``spec`` may hold."""
-    from .loaded import LOADED_ENDINGS
     from .outcomes import ENDINGS, STATUSES
 
     if spec.mode == "statics":

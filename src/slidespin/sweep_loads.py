@@ -45,8 +45,6 @@ __all__ = [
     "LOADED_COLUMNS",
     "STATICS_STATUSES",
     "STATICS_ENDINGS",
-    "LOADED_STATUSES",
-    "LOADED_UNCONVERGED",
     "load_columns",
     "compute_statics",
     "compute_loaded",
@@ -102,10 +100,6 @@ LOADED_COLUMNS = (
 STATICS_STATUSES = ("ok",)
 #: the ending of a statics case: the body at rest holds (λ* ≥ 1) or starts to slide
 STATICS_ENDINGS = ("sticks", "slides")
-#: statuses of :class:`slidespin.loaded.LoadedTrajectory`
-LOADED_STATUSES = ("ok", "max_steps", "max_phases", "no_onset", "step_too_small")
-#: loaded statuses whose values are as reached, not a finished run (left out of tables)
-LOADED_UNCONVERGED = frozenset({"max_steps", "max_phases", "no_onset", "step_too_small"})
 
 
 class CaseError(RuntimeError):
