@@ -585,7 +585,8 @@ def plot_sweep(
         drawn as categories, one colour per name (the most frequent name per heat-map cell).
         Non-finite values (β* = ∞ of pure sliding, undefined ϑ*) are left blank.
     include_unconverged : bool, default False
-        Keep the cases whose status is in :data:`slidespin.outcomes.UNCONVERGED`; by default
+        Keep the cases whose status is in :data:`slidespin.outcomes.UNCONVERGED` or
+        :data:`~slidespin.outcomes.LOADED_UNCONVERGED`; by default
         they are left out and their cells (or positions on the x axis) are marked ✕.
         Cells or points with a flagged status (marginal, saddle) are marked ○.
     varied : list of str, optional
@@ -604,7 +605,7 @@ def plot_sweep(
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
-    from .outcomes import FLAGGED, UNCONVERGED
+    from .outcomes import FLAGGED, LOADED_UNCONVERGED, UNCONVERGED
 
     plt = _plt()
     for name in (x, value) + ((y,) if y else ()):
@@ -631,7 +632,7 @@ def plot_sweep(
     bad = (
         np.zeros(n_all, bool)
         if status is None or include_unconverged
-        else np.isin(status, sorted(UNCONVERGED))
+        else np.isin(status, sorted(UNCONVERGED | LOADED_UNCONVERGED))
     )
     flagged = np.zeros(n_all, bool) if status is None else np.isin(status, sorted(FLAGGED))
     keep = ~bad
