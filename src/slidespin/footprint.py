@@ -53,6 +53,8 @@ __all__ = [
     "Disk",
     "Footprint",
     "FootprintArrays",
+    "MAX_ASPECT",
+    "MAX_OFFSET",
     "Pads",
     "Polygon",
     "Rectangle",

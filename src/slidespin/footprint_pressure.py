@@ -12,7 +12,8 @@ law                                 p(ξ, η) on the footprint Ω
 ``PressureMap.from_grid(...)``      the same with f the bicubic spline through sampled values
 ==================================  ==============================================================
 
-with A = |Ω|, r_c the area centroid and J = ∫(r − r_c)(r − r_c)ᵀ dS (:attr:`second_moment`).
+with A = |Ω|, r_c the area centroid and J = ∫(r − r_c)(r − r_c)ᵀ dS (each footprint's
+``second_moment``).
 For an ellipse the linear law is the paper's eq. 10 (corrected, MODEL §7 erratum 5); for three
 small pads it gives their statically determined loads. ``UniformPressure`` and
 ``LinearPressure`` are the value objects of :mod:`slidespin.pressure`; here they are applied to

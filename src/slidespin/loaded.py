@@ -40,10 +40,11 @@ direction u relaxes in O(1) τ while the motion evolves over O(1/λ) τ), so the
 integrator is ``Radau`` (implicit, order 5) of :func:`scipy.integrate.solve_ivp`, which
 calls the compiled wrench kernel once per right-hand side.
 
-Every patch: the ellipses and circles of the paper and the footprints of MODEL §10; the
+Every area patch: the ellipses and circles of the paper and the footprints of MODEL §10 (a
+``Blade``, a line contact, is refused with a ``ValueError``); the
 friction wrench comes from :class:`slidespin._twist_wrench.TwistWrench` (the elliptic or the
 exact footprint kernel) and the static-friction set C from
-:func:`slidespin.statics.static_support`. Natural units use the body's length unit
+``slidespin.statics.static_support``. Natural units use the body's length unit
 (:attr:`slidespin.Body.length_unit`).
 
 Energy: ΔKE = W_f + W_Q, reported as ``energy_error`` (an integration-accuracy check); on a

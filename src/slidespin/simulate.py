@@ -389,7 +389,8 @@ def simulate(
     Parameters
     ----------
     body : Body
-        Patch (an ellipse, or any footprint of :mod:`slidespin.footprint`), pressure law,
+        Patch (an ellipse, or any area footprint of :mod:`slidespin.footprint`; a ``Blade`` is
+        refused with a ``ValueError``), pressure law,
         mass and moment of inertia.
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).

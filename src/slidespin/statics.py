@@ -24,7 +24,7 @@ own quadratic form; the linear law stays linear with its centroid at the image o
 h(d) = −W_iso·(S d_F, d_M), the dissipation of that twist under *isotropic unit* friction on
 the image patch, and the support point is ∇h(d) = (−𝔽 F_iso, −M_iso). One kernel call, 1e-12.
 
-On a footprint (MODEL §10; :class:`FootprintSupport`) the same change of variables holds,
+On a footprint (MODEL §10; ``FootprintSupport``) the same change of variables holds,
 y = L r′ with the pressure p/det L: a polygon's image is a polygon (the exact footprint
 kernel), a disk's or a ring hole's is an ellipse (the elliptic kernel, one call per disk,
 with its own load and pressure centroid), and a linear pressure stays linear. For isotropic

@@ -20,7 +20,7 @@ Limits (checked before any work, with the key and the valid range in the message
 cases per chunk; specs are read like case files (:func:`slidespin.case.read_toml`: a regular
 UTF-8 file of at most 1 MB, nesting and integers bounded).
 
-Executors: by default all local cores (the compiled batch engine, :func:`simulate_cases`);
+Executors: by default all local cores (the compiled batch engine, :func:`~slidespin.batch.simulate_cases`);
 a ``dask.distributed.Client`` (or any ``concurrent.futures.Executor``) runs consecutive chunks
 of at least 1000 cases per task; the results are identical to the local ones, bit for bit.
 
@@ -119,6 +119,8 @@ __all__ = [
     "SHAPES",
     "chunk_columns",
     "to_pandas",
+    "MIN_TASK_CASES",
+    "CHUNK_COLUMNS",
 ]
 
 #: sweep parameters and their defaults (None: required, or derived from another one)
@@ -544,7 +546,7 @@ def load_spec(spec) -> SweepSpec:
 
 # --------------------------------------------------------------------------- computing
 def _case_fields(cols: dict) -> dict:
-    """Map sweep parameters to :func:`simulate_cases` fields (validated there)."""
+    """Map sweep parameters to :func:`~slidespin.batch.simulate_cases` fields (validated there)."""
     n = cols["case_id"].size
 
     def get(k):

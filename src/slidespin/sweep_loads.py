@@ -15,7 +15,7 @@ name (``load_fx``, ``incline_angle``, ...), and ``t_end`` of ``[solver]``:
 
 ``compute = "statics"`` (MODEL §11; :mod:`slidespin.statics`): per case, the critical tilt
 α_c along ``incline_downhill`` at the body angle ``phi0``
-(:func:`~slidespin.statics.critical_tilt`; the load keys do not enter it), the load factor
+(:func:`~slidespin.critical_tilt`; the load keys do not enter it), the load factor
 λ* of the whole applied wrench (load plus the downhill pull of the tilt;
 :func:`~slidespin.statics.load_factor`, ``inf`` for none) and whether the body at rest holds
 (``ending`` = ``sticks`` iff λ* ≥ 1, else ``slides``; status ``ok``). The initial velocities
