@@ -72,6 +72,8 @@ nitpicky = True
 nitpick_ignore_regex = [
     ("py:.*", r"(numpy|np|pandas|pd|scipy|matplotlib|dask|distributed|pyarrow|numba)(\..*)?"),
     ("py:.*", r"slidespin\._.*"),
+    # the per-table modules of slidespin.paper are listed on its page, not documented one by one
+    ("py:mod", r"slidespin\.paper\..*"),
     # batch.py's StopResults docstring writes :data:`ENDINGS` (slidespin.outcomes.ENDINGS);
     # remove this entry once it is qualified there
     ("py:data", r"ENDINGS"),
@@ -210,7 +212,8 @@ API_MODULES = (
     "slidespin.loaded", "slidespin.limit_surface", "slidespin.footprint",
     "slidespin.footprint_pressure", "slidespin.footprint_wrench", "slidespin.pressure",
     "slidespin.friction", "slidespin.geometry", "slidespin.animate", "slidespin.plotting",
-    "slidespin.case", "slidespin.cli", "slidespin.paper",
+    "slidespin.case", "slidespin.cli", "slidespin.paper", "slidespin.simulate", "slidespin.body",
+    "slidespin.bench",
 )
 
 
@@ -236,6 +239,29 @@ def shadowed(module: str) -> bool:
     return getattr(importlib.import_module(parent), short, mod) is not mod
 
 
+def _documented_home(module: str, obj) -> str | None:
+    """``other.NAME`` if ``obj`` is a constant that another API module documents (``#:``)."""
+    import importlib
+
+    from sphinx.pycode import ModuleAnalyzer
+
+    if isinstance(obj, (int, float, str)):  # small values are not unique objects
+        return None
+    for other in API_MODULES:
+        if other == module:
+            continue
+        mod = importlib.import_module(other)
+        for name in _public_names(mod):
+            if getattr(mod, name, None) is obj:
+                try:
+                    docs = ModuleAnalyzer.for_module(other).find_attr_docs()
+                except Exception:
+                    continue
+                if ("", name) in docs:
+                    return f"{other}.{name}"
+    return None
+
+
 def _api_page(module: str) -> str:
     import importlib
     import inspect
@@ -250,22 +276,28 @@ def _api_page(module: str) -> str:
     hidden = shadowed(module)
     if hidden:
         short = module.rpartition(".")[2]
-        lines = [f".. note:: ``slidespin.{short}`` is the function of the same name; import "
-                 f"this module with ``import {module}``.", "",
+        lines = [f".. note:: ``slidespin.{short}`` is the function of the same name, which hides "
+                 f"this module: take its names with ``from {module} import NAME`` (``import "
+                 f"{module} as m`` gives the function).", "",
                  f".. automodule:: {module}", "   :no-index:", "",
                  f".. currentmodule:: {module}", ""]
     else:
-        lines = [f".. automodule:: {module}", "   :members:", "   :undoc-members:", ""]
+        # no :undoc-members:, which would list every dataclass field a second time, empty,
+        # below the numpydoc Attributes section that documents it (constants: autodata below)
+        lines = [f".. automodule:: {module}", "   :members:", ""]
     for name in _public_names(mod):
         obj = getattr(mod, name, None)
         if inspect.ismodule(obj):
             continue
         if inspect.isclass(obj):
             if hidden:
-                lines += [f".. autoclass:: {name}", "   :members:", "   :undoc-members:", ""]
+                lines += [f".. autoclass:: {name}", "   :members:", ""]
         elif inspect.isroutine(obj):
             if hidden:
                 lines += [f".. autofunction:: {name}", ""]
+        elif ("", name) not in attr_docs and (home := _documented_home(module, obj)):
+            # a constant re-exported from the module that documents it (``#:``)
+            lines += [f".. py:data:: {name}", "", f"   The same object as :data:`{home}`.", ""]
         elif hidden or ("", name) not in attr_docs:
             lines += [f".. autodata:: {name}", ""]
     return "\n".join(lines) + "\n"

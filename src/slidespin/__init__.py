@@ -34,6 +34,7 @@ from .terminal import (
 )
 from .wrench import Wrench, friction_wrench
 
+#: the package version (``slidespin --version`` prints it)
 __version__ = "0.1.0"
 
 __all__ = [

@@ -920,7 +920,7 @@ class FitResult:
 
     def to_pandas(self, level: float = 0.95):
         """Every fitted parameter as a :class:`pandas.DataFrame` (one row each, indexed by
-        :attr:`parameter_names`): ``estimate``, ``std_error`` and the normal-approximation
+        ``parameter_names``): ``estimate``, ``std_error`` and the normal-approximation
         interval at ``level`` (``ci_low``, ``ci_high``; ±inf where not identifiable), and
         ``identifiable``. The free physical parameters come first, then each run's start
         components ``run{k}.{x|y|phi|vx|vy|omega}``; the goodness of fit (:meth:`summary`)

@@ -936,7 +936,7 @@ class Blade:
         return [self.ends]
 
 
-#: any footprint patch (the type of :attr:`slidespin.Body.patch` beside ellipses)
+#: any footprint patch (the type of ``Body.patch`` beside ellipses)
 Footprint = Polygon | Rectangle | Disk | Annulus | Pads | Blade
 
 

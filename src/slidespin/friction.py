@@ -25,6 +25,7 @@ from . import _validate as v
 
 __all__ = ["FrictionTensor", "FRAMES"]
 
+#: the frames a :class:`FrictionTensor` may be fixed to: the plane (the paper) or the body
 FRAMES = ("plane", "body")
 
 

@@ -189,7 +189,7 @@ class LoadedTrajectory:
 
     @property
     def status_message(self) -> str:
-        """One line saying what :attr:`status` means (:mod:`slidespin.outcomes`)."""
+        """One line saying what ``status`` means (:mod:`slidespin.outcomes`)."""
         return status_message(self.status, loaded=True)
 
     def animate(self, path, fps: int = 20, frames: int = 60, **kwargs) -> str:

@@ -36,7 +36,14 @@ if TYPE_CHECKING:
 
 _T = TypeVar("_T")
 
-__all__ = ["LOAD_FRAMES", "Incline", "Load", "applied_wrench"]
+__all__ = [
+    "LOAD_FRAMES",
+    "Incline",
+    "Load",
+    "applied_wrench",
+    "load_from_table",
+    "incline_from_table",
+]
 
 #: frames a :class:`Load`'s force may be given in
 LOAD_FRAMES = ("plane", "body")

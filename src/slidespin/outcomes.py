@@ -122,10 +122,10 @@ ENDING_MESSAGES = {
     "spiral": "stops while the direction of motion keeps turning: no theta*",
 }
 
-#: status names of a loaded run (:attr:`slidespin.loaded.LoadedTrajectory.status`)
+#: status names of a loaded run (``LoadedTrajectory.status``)
 LOADED_STATUSES = ("ok", "max_steps", "max_phases", "step_too_small", "no_onset")
 
-#: ending names of a loaded run (:attr:`slidespin.loaded.LoadedTrajectory.ending`)
+#: ending names of a loaded run (``LoadedTrajectory.ending``)
 LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
 
 #: one-line explanation of each loaded status

@@ -45,6 +45,7 @@ __all__ = [
 
 # integer codes understood by the compiled kernel
 LAW_UNIFORM, LAW_LINEAR, LAW_BOUSSINESQ, LAW_HERTZ = 0, 1, 2, 3
+#: the names of the pressure laws, in the order of their integer codes ``LAW_*``
 LAW_NAMES = ("uniform", "linear", "boussinesq", "hertz")
 
 

@@ -191,7 +191,7 @@ class Trajectory:
 
     @property
     def status_message(self) -> str:
-        """One-line explanation of :attr:`status`."""
+        """One-line explanation of ``status``."""
         return status_message(self.status)
 
     @property

@@ -83,6 +83,7 @@ __all__ = [
     "OnsetNotFound",
     "StaticSupport",
     "can_stick",
+    "critical_tilt",
     "load_factor",
     "onset",
     "support_function",

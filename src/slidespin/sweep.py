@@ -1453,7 +1453,7 @@ class SweepResult:
 
     def to_pandas(self, *, include_unconverged: bool = False):
         """The sweep's results as a :class:`pandas.DataFrame` (:func:`to_pandas` of
-        :attr:`out`)."""
+        ``out``)."""
         return to_pandas(self.out, include_unconverged=include_unconverged)
 
 

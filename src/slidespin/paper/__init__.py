@@ -22,6 +22,7 @@ module         reproduces
 ``errata`` and as a benchmark baseline. ``cli`` is the ``slidespin reproduce`` command.
 """
 
+#: the names ``slidespin reproduce`` takes (besides ``all``): one per table, figure or check
 REPRODUCTIONS = ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase")
 
 __all__ = ["REPRODUCTIONS"]
