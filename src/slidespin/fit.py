@@ -12,17 +12,17 @@ not given), the correlation matrix, and an honest verdict on identifiability.
 
 Parameters that may be fitted (``free``), with their code names:
 
-=====================  ==============================================  =========================
-name                   meaning                                         bounds
-=====================  ==============================================  =========================
-``fx``, ``fy``         principal coefficients of 𝔽 (paper eq. 2)       > 0 (dissipative), within
-                                                                       FrictionTensor's range
-``f``                  skew coefficient of 𝔽                           FrictionTensor's range
-``angle``              angle of 𝔽's principal axes [rad]               any
-``xi_c``, ``eta_c``    linear law's pressure centroid = G [m] (eq. 10)  |ξc| ≤ a/4, |ηc| ≤ b/4;
-                                                                       a footprint: its core
-``moment_of_inertia``  I about G [kg m²]                               [1e-4, 1e4] × the guess
-=====================  ==============================================  =========================
+=====================  ================================================  =========================
+name                   meaning                                           bounds
+=====================  ================================================  =========================
+``fx``, ``fy``         principal coefficients of 𝔽 (paper eq. 2)         > 0 (dissipative), within
+                                                                         FrictionTensor's range
+``f``                  skew coefficient of 𝔽                             FrictionTensor's range
+``angle``              angle of 𝔽's principal axes [rad]                 any
+``xi_c``, ``eta_c``    linear law's pressure centroid = G [m] (eq. 10)   |ξc| ≤ a/4, |ηc| ≤ b/4;
+                                                                         a footprint: its core
+``moment_of_inertia``  I about G [kg m²]                                 [1e-4, 1e4] × the guess
+=====================  ================================================  =========================
 
 The body may rest on an ellipse or on any footprint of :mod:`slidespin.footprint` (uniform or
 linear pressure, MODEL §10). G of the linear law is kept in the core of the patch, where the

@@ -4,16 +4,16 @@ A footprint Ω is a finite union of disjoint regions in the body frame C ξ η (
 patch is a frozen value object, placed in the body frame by ``centre=(ξ, η)`` [m] and
 ``angle=`` [rad] (counter-clockwise, about the patch's own origin):
 
-=====================================  ============================================
-class                                  region (in the patch's own frame)
-=====================================  ============================================
-``Polygon(vertices)``                  simple polygon, convex or not, either orientation
-``Rectangle(length, width)``           |ξ| ≤ length/2, |η| ≤ width/2 (length along ξ)
-``Disk(radius)``                       |r| ≤ radius
+=======================================  ============================================
+class                                    region (in the patch's own frame)
+=======================================  ============================================
+``Polygon(vertices)``                    simple polygon, convex or not, either orientation
+``Rectangle(length, width)``             |ξ| ≤ length/2, |η| ≤ width/2 (length along ξ)
+``Disk(radius)``                         |r| ≤ radius
 ``Annulus(inner_radius, outer_radius)``  inner_radius ≤ |r| ≤ outer_radius
-``Pads(patches)``                      the union of several disjoint patches
-``Blade(length)``                      the segment |ξ| ≤ length/2, η = 0: a line contact
-=====================================  ============================================
+``Pads(patches)``                        the union of several disjoint patches
+``Blade(length)``                        the segment |ξ| ≤ length/2, η = 0: a line contact
+=======================================  ============================================
 
 Each has ``area`` [m²], ``centroid`` (area centroid, body frame) [m], ``second_moment``
 (J = ∫(r − r_c)(r − r_c)ᵀ dS about the area centroid, MODEL §10) [m⁴], ``outlines()``
