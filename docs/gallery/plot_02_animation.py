@@ -5,8 +5,12 @@ Watching it slide and spin: an animation
 :func:`slidespin.animate.animate` turns a trajectory into an animated GIF (Pillow, no ffmpeg):
 the outline of the patch at each instant, the velocity of the mass centre G as an arrow and
 the instantaneous centre of rotation (ICR) as a cross. ``slidespin animate CASE.toml --out
-run.gif`` does the same from a case file. Here we write the GIF of the demo and draw a film
-strip of the same frames.
+run.gif`` does the same from a case file. Here we write the GIF of the demo (into a temporary
+folder) and draw a film strip of the same frames. The GIF, made the same way when the site is
+built, plays on the :doc:`front page </index>` and here:
+
+.. image:: /_generated/demo.gif
+   :alt: The demo plate sliding and turning to its stop, with the velocity of G and the ICR
 """
 
 import math

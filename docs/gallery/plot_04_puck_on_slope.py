@@ -26,7 +26,8 @@ friction = ss.FrictionTensor.isotropic(mu)
 slope = Incline(alpha, downhill=0.0)          # downhill along +x
 tr = simulate_loaded(puck, friction, ss.State(omega=30.0), incline=slope, t_end=1.0,
                      max_step=0.2)
-print(tr.phases)
+for kind, start, end in tr.phases:  # (kind, start [s], end [s]) of each stick or slip phase
+    print(f"{kind}: {start:.4f} s to {end:.4f} s")
 
 # %%
 # Speed and spin over time, against the two closed forms that bound the motion: the block

@@ -1592,7 +1592,7 @@ def _is_dask_client(obj) -> bool:
 
 
 def connect_dask(address: str | None = None, workers: int | None = None):
-    """A ``dask.distributed.Client``: to ``address`` (tcp://HOST:PORT) or a new LocalCluster."""
+    """A ``dask.distributed.Client``: to ``address`` (``tcp://HOST:PORT``) or a new LocalCluster."""
     try:
         from distributed import Client, LocalCluster
     except ImportError:
