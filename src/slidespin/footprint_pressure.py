@@ -481,7 +481,16 @@ def symmetry(footprint, pressure, rtol: float = 1e-12) -> tuple[bool, bool]:
     refl_c = np.column_stack((2 * gx - c[:, 0], 2 * gy - c[:, 1], c[:, 2], c[:, 3]))
 
     def matched(refl, orig):
-        return all(orig.shape[0] and np.min(np.max(np.abs(orig - r), axis=1)) <= tol for r in refl)
+        # every reflected row within tol (max-norm) of an original row: a k-d tree query,
+        # O(n log n) for a polygon of many vertices
+        if refl.shape[0] == 0:
+            return True
+        if orig.shape[0] == 0:
+            return False
+        from scipy.spatial import cKDTree
+
+        dist, _ = cKDTree(orig).query(refl, p=np.inf)
+        return bool(np.all(dist <= tol))
 
     central = matched(refl_e, e) and matched(refl_c, c)
     return bool(central), bool(axial)
