@@ -74,9 +74,6 @@ nitpick_ignore_regex = [
     ("py:.*", r"slidespin\._.*"),
     # the per-table modules of slidespin.paper are listed on its page, not documented one by one
     ("py:mod", r"slidespin\.paper\..*"),
-    # batch.py's StopResults docstring writes :data:`ENDINGS` (slidespin.outcomes.ENDINGS);
-    # remove this entry once it is qualified there
-    ("py:data", r"ENDINGS"),
 ]
 
 # -- Gallery ------------------------------------------------------------------------------
@@ -194,8 +191,65 @@ def _fix_docstring(lines: list[str]) -> list[str]:
     return out
 
 
+# A docstring is written in its own module, where ``:data:`MAX_VERTICES``` or
+# ``:meth:`Load.piecewise_linear``` name that module's globals; but a function or class
+# re-exported by the package is also documented on the ``slidespin`` page, where such a short
+# name does not resolve. A short target that is a global of the object's own module is
+# therefore pointed at the page that documents it (its defining module), keeping its text;
+# a target that does not exist there is left alone, so it still fails the build.
+_ROLE = re.compile(r":(func|meth|class|data|attr|exc|obj):`(~?)([A-Za-z_][\w.]*)`")
+
+
+def _home_module(what: str, name: str, obj) -> str | None:
+    if what == "module":
+        return name
+    for o in (obj, getattr(obj, "fget", None), getattr(obj, "__func__", None)):
+        mod = getattr(o, "__module__", None)
+        if isinstance(mod, str) and mod.startswith("slidespin"):
+            return mod
+    return None
+
+
+def _qualify(match: re.Match, module) -> str:
+    import inspect
+
+    role, tilde, target = match.groups()
+    if target.startswith("slidespin"):
+        return match.group(0)
+    first, *rest = target.split(".")
+    if not hasattr(module, first):
+        return match.group(0)
+    head = getattr(module, first)
+    if inspect.ismodule(head):
+        return match.group(0)
+    found = head
+    for part in rest:  # the whole target must exist
+        if not hasattr(found, part):
+            return match.group(0)
+        found = getattr(found, part)
+    if inspect.isclass(head) or inspect.isroutine(head):
+        home_mod = getattr(head, "__module__", "") or ""
+        full = f"{home_mod}.{head.__qualname__}"
+    else:  # a constant: the module whose ``#:`` comment documents it, else this one
+        home_mod = module.__name__
+        full = _documented_home(module.__name__, head) or f"{home_mod}.{first}"
+    if not home_mod.startswith("slidespin") or any(
+        p.startswith("_") for p in home_mod.split(".")
+    ):
+        return match.group(0)
+    full = ".".join([full, *rest])
+    title = target.rpartition(".")[2] if tilde else target
+    return f":{role}:`{title} <{full}>`"
+
+
 def _process_docstring(app, what, name, obj, options, lines) -> None:
+    import sys
+
     lines[:] = _fix_docstring(lines)
+    modname = _home_module(what, name, obj)
+    module = sys.modules.get(modname) if modname else None
+    if module is not None:
+        lines[:] = [_ROLE.sub(lambda m: _qualify(m, module), line) for line in lines]
 
 
 # -- API pages -----------------------------------------------------------------------------
