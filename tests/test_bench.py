@@ -19,10 +19,22 @@ def test_bench_smoke(tmp_path, capsys):
     assert code == 0
     text = capsys.readouterr().out
     for row in ("wrench, uniform, ICR inside", "trajectory to the converged stop",
-                "speed-up vs naive", "speed-up vs semi-analytic", "sweep, all local cores"):
+                "speed-up vs naive", "speed-up vs semi-analytic", "sweep, all local cores",
+                "footprint wrench, octagon (8 vertices), ICR within 1 extent",
+                "footprint wrench, ring, ICR 1.1-10 extents",
+                "footprint trajectory to the converged stop, octagon",
+                "footprint trajectory to the converged stop, ring",
+                "footprint batch, octagon: ellipse / footprint throughput",
+                "footprint batch, ring: ellipse / footprint throughput"):
         assert row in text
     data = json.loads((tmp_path / "b" / "bench.json").read_text())
     assert data["accuracy"]["wrench"]["max_abs_error"] < 1e-10
+    for name in ("octagon", "ring"):
+        fp = data["footprint"][name]
+        # the exact footprint kernel against the independent slow reference (units of P)
+        assert fp["wrench_max_abs_error"] < 1e-10
+        assert fp["status"] == 0 and fp["trajectory_steps"] > 0  # stopped, converged
+        assert fp["batch_per_s"] > 0 and fp["ellipse_over_footprint"] > 0
     assert data["naive"]["s_per_rhs"] > 0 and data["sweep"]["local_cases"] == 40
 
 

@@ -228,8 +228,10 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
         init[:, 4] = st["y"][lo:hi] / ac
         init[:, 5] = st["phi"][lo:hi]
         fps = _no_footprints(hi - lo) if footprints_of is None else footprints_of(lo, hi)
+        edges, circles, eidx, cidx, geos = fps
         yend, status, steps, _, nf, term = _ode.integrate_many(
-            pars, *fps, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
+            pars, edges, circles, eidx, cidx, geos, init, rtol, rtol, rtol, min(rtol, 1e-8),
+            max_steps
         )
         fails += int((nf > 0).sum())
         _stop_values(res, lo, hi, yend, status, steps, term, pars[:, _ode.P_K], ac, t_unit,

@@ -7,6 +7,10 @@ Everything is measured in one run on this machine and printed as a table (or as 
 * the friction wrench from compiled code, per pressure law, ICR inside and outside the patch
   (the engine's inner call: constants and workspace reused), with its node counts;
 * one trajectory to the converged stop (the demo case; and the mean over a batch, one thread);
+* footprints (:mod:`slidespin.footprint`): the exact footprint wrench from compiled code on an
+  octagon and on a ring, its error against the slow reference (``tests/footprint_reference.py``
+  of a source checkout), a trajectory to the converged stop on each, and the batch throughput
+  on each as a ratio to the ellipse's measured in the same run;
 * trajectories per second on all cores (:func:`slidespin.batch.simulate_many`), and the peak
   memory of a batch (measured in a subprocess);
 * the Python-call overhead of :func:`slidespin.simulate` beyond its compiled part;
@@ -58,6 +62,9 @@ GOALS = {
     "first_call_cached_s": 1.5,
     "speedup_semianalytic": 1e3,
     "speedup_naive": 1e5,
+    "footprint_wrench_us": 1.0,
+    "footprint_trajectory_ms": 0.5,
+    "footprint_batch_ratio": 2.0,
 }
 
 _LAWS = ("uniform", "linear", "boussinesq", "hertz")
@@ -277,12 +284,13 @@ def _batch_states(n, rng):
     return s
 
 
-def bench_batch(n, rng):
-    """Trajectories per second of simulate_many, on all cores and on one."""
+def bench_batch(s):
+    """Trajectories per second of simulate_many from the starts ``s``, on all cores and on
+    one."""
     from .batch import simulate_many
 
+    n = len(s)
     body, fr, _, g = _demo()
-    s = _batch_states(n, rng)
     simulate_many(body, fr, s[:8], g=g)
     threads = numba.get_num_threads()
     t = time.perf_counter()
@@ -307,6 +315,119 @@ def bench_batch(n, rng):
         "endings": counts,
         "all_stopped": bool(np.all(res.status == "stopped")),
     }
+
+
+# ---------------------------------------------------------------------------------------------
+# footprints
+
+#: the benchmark's footprints [m]: an irregular convex octagon (8 vertices, radii 0.08-0.1 m)
+#: and a ring (a curling stone's running band, scaled: 0.05-0.065 m)
+_OCTAGON = tuple((r * math.cos(t), r * math.sin(t)) for r, t in zip(
+    (0.100, 0.090, 0.095, 0.080, 0.100, 0.085, 0.092, 0.088),
+    (0.0, 0.8, 1.55, 2.4, 3.2, 3.9, 4.75, 5.5)))
+_RING = (0.05, 0.065)
+
+
+def _footprints():
+    """{name: (footprint, Body)} of the footprint rows (uniform pressure, 1 kg)."""
+    import slidespin as ss
+
+    from .footprint import Annulus, Polygon
+
+    out = {}
+    for name, fp in (("octagon", Polygon(_OCTAGON)), ("ring", Annulus(*_RING))):
+        out[name] = (fp, ss.Body(fp, ss.UniformPressure(), mass=1.0))
+    return out
+
+
+def _footprint_icr(where, n, rng):
+    """Body-frame velocities of G (ω = 1) for ICRs uniform in the disk of radius 1 about G
+    ("near") or in the annulus 1.1-10 ("far"), natural units (lengths in the extent)."""
+    r = np.sqrt(rng.uniform(0.0, 1.0, n)) if where == "near" else rng.uniform(1.1, 10.0, n)
+    t = rng.uniform(0.0, 2.0 * math.pi, n)
+    cx, cy = r * np.cos(t), r * np.sin(t)  # ICR relative to G
+    return np.ascontiguousarray(cy), np.ascontiguousarray(-cx), np.ones(n)
+
+
+def _footprint_accuracy(fp, body, fr, n, rng):
+    """Largest error of the compiled footprint wrench (public footprint_wrench) against the
+    slow independent reference, in units of the load and load x extent, over n motion states
+    (ICR near, on the outline's scale and far; None if the reference is not available)."""
+    from .footprint_wrench import footprint_wrench
+
+    ref = _reference_module("footprint_reference.py")
+    if ref is None:
+        return None
+    ext = body.length_unit
+    xg, yg = body.mass_centre
+    worst = 0.0
+    for i in range(n):
+        r = (0.3, 0.9, 2.0, 40.0)[i % 4] * ext * math.sqrt(rng.uniform(0.05, 1.0))
+        t = rng.uniform(0.0, 2.0 * math.pi)
+        om, phi = rng.choice([-1.0, 1.0]) * rng.uniform(0.5, 3.0), rng.uniform(-3.0, 3.0)
+        cbx, cby = xg + r * math.cos(t), yg + r * math.sin(t)
+        vbx, vby = (cby - yg) * om, -(cbx - xg) * om
+        c, sn = math.cos(phi), math.sin(phi)
+        vx, vy = c * vbx - sn * vby, sn * vbx + c * vby
+        w = footprint_wrench(fp, body.pressure, fr, vx, vy, om, phi)
+        want = ref.reference_wrench(fp, ("uniform",), fr.matrix, vx, vy, om, phi=phi,
+                                    frame=fr.frame)
+        worst = max(worst, abs(w.force_x - want[0]), abs(w.force_y - want[1]),
+                    abs(w.moment - want[2]) / ext)
+    return worst
+
+
+def bench_footprint(quick, rng, states, ellipse_per_s):
+    """The footprint rows: the compiled exact wrench per call (ICR near and far), its error
+    against the slow reference, a trajectory to the converged stop (rtol 1e-10, the demo's
+    friction and start), and simulate_many throughput from ``states`` (the ellipse batch's
+    starts) as a ratio to ``ellipse_per_s``, for an octagon and a ring."""
+    from . import _ode
+    from ._footprint_kernel import time_wrenches
+    from .batch import simulate_many
+
+    _, fr, st, g = _demo()
+    n = 200 if quick else 1000
+    reps = 5 if quick else 20
+    out = {}
+    for name, (fp, body) in _footprints().items():
+        d: dict = {"vertices": len(getattr(fp, "vertices", ())), "extent_m": body.length_unit}
+        par, fe, fc, geo = body.engine_params(fr)
+        t = par[_ode.P_T00], par[_ode.P_T01], par[_ode.P_T10], par[_ode.P_T11]
+        for where in ("near", "far"):
+            vx, vy, om = (np.tile(x, reps) for x in _footprint_icr(where, n, rng))
+            time_wrenches(fe, fc, geo, *t, vx[:2], vy[:2], om[:2])
+            dt = _best(lambda: time_wrenches(fe, fc, geo, *t, vx, vy, om), repeat=3)
+            d[f"wrench_us_icr_{where}"] = dt / vx.size * 1e6
+        err = _footprint_accuracy(fp, body, fr, 8 if quick else 24, rng)
+        if err is not None:
+            d["wrench_max_abs_error"] = err
+            d["wrench_error_states"] = 8 if quick else 24
+        # trajectory: the compiled integrator's footprint specialisation, no records
+        a = body.length_unit
+        v_unit, t_unit = math.sqrt(a * g), math.sqrt(a / g)
+        y0 = _ode.initial_state(par, st.vx / v_unit, st.vy / v_unit, st.omega * t_unit,
+                                st.x / a, st.y / a, st.phi)
+        fpa = _ode.footprint_argument(par, fe, fc, geo)
+
+        def traj():
+            return _ode.integrate_fp(par, fpa, y0, 1e-10, 1e-10, 1e-10, 1e-10, 200_000, np.inf,
+                                     False)
+
+        r = traj()
+        d["trajectory_ms"] = _best(traj, 5, 20 if quick else 100) * 1e3
+        d["trajectory_steps"] = int(r[2])
+        d["trajectory_rhs"] = int(r[3])
+        d["status"] = int(r[1])
+        # batch: the same starts as the ellipse's batch, all threads
+        simulate_many(body, fr, states[:8], g=g)
+        t0 = time.perf_counter()
+        res = simulate_many(body, fr, states, g=g)
+        d["batch_per_s"] = len(states) / (time.perf_counter() - t0)
+        d["batch_mean_steps"] = float(res.n_steps.mean())
+        d["ellipse_over_footprint"] = ellipse_per_s / d["batch_per_s"]
+        out[name] = d
+    return out
 
 
 _MEMORY_SCRIPT = r"""
@@ -394,6 +515,11 @@ out["simulate_many_s"] = time.perf_counter() - t
 t = time.perf_counter()
 ss.friction_wrench(case.body, case.friction, 0.3, 0.1, 4.0)
 out["friction_wrench_s"] = time.perf_counter() - t
+from slidespin.footprint import Rectangle
+t = time.perf_counter()
+ss.simulate(ss.Body(Rectangle(0.3, 0.1), ss.UniformPressure(), mass=1.0), case.friction,
+            case.initial_state, g=case.g)
+out["footprint_simulate_s"] = time.perf_counter() - t
 print(json.dumps(out))
 """
 
@@ -419,13 +545,14 @@ def bench_compile():
 # accuracy
 
 
-def _reference_module():
-    path = Path(__file__).resolve().parents[2] / "tests" / "reference.py"
+def _reference_module(name="reference.py"):
+    """``tests/<name>`` of a source checkout as a module, or None (an installed package)."""
+    path = Path(__file__).resolve().parents[2] / "tests" / name
     if not path.is_file():
         return None
     import importlib.util
 
-    spec = importlib.util.spec_from_file_location("_slidespin_reference", path)
+    spec = importlib.util.spec_from_file_location("_slidespin_" + path.stem, path)
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
@@ -712,6 +839,27 @@ def _rows(r):
     rows.append((f"batch, {b['threads']} threads ({b['cases']} cases)",
                  f"{b['per_s']:,.0f} /s", f"≥ {GOALS['batch_per_s']:,.0f} /s",
                  _verdict(b["per_s"], GOALS["batch_per_s"], False)))
+    for name, d in r.get("footprint", {}).items():
+        shape = f"{name} ({d['vertices']} vertices)" if d["vertices"] else name
+        goal = GOALS["footprint_wrench_us"]
+        for where, label in (("near", "ICR within 1 extent"), ("far", "ICR 1.1-10 extents")):
+            us = d[f"wrench_us_icr_{where}"]
+            rows.append((f"footprint wrench, {shape}, {label}", f"{us * 1e3:.0f} ns",
+                         f"≤ {goal * 1e3:g} ns", _verdict(us, goal)))
+        if "wrench_max_abs_error" in d:
+            rows.append((f"footprint wrench, {name}: error vs slow reference "
+                         f"({d['wrench_error_states']} states)",
+                         f"{d['wrench_max_abs_error']:.1e}", "≤ 1e-10",
+                         _verdict(d["wrench_max_abs_error"], 1e-10)))
+        goal = GOALS["footprint_trajectory_ms"]
+        rows.append((f"footprint trajectory to the converged stop, {name}, rtol 1e-10 "
+                     f"({d['trajectory_steps']} steps, {d['trajectory_rhs']} RHS)",
+                     f"{d['trajectory_ms']:.3f} ms", f"≤ {goal:g} ms",
+                     _verdict(d["trajectory_ms"], goal)))
+        goal = GOALS["footprint_batch_ratio"]
+        rows.append((f"footprint batch, {name}: ellipse / footprint throughput "
+                     f"({d['batch_per_s']:,.0f} /s)", f"{d['ellipse_over_footprint']:.2f} x",
+                     f"≤ {goal:g} x", _verdict(d["ellipse_over_footprint"], goal)))
     mem = r.get("memory", {})
     if "bytes_per_case" in mem:
         rows.append((f"batch memory: peak growth, {mem['cases']:,} cases (inputs "
@@ -731,6 +879,9 @@ def _rows(r):
                          f"≤ {goal:g} s", _verdict(first, goal)))
             rows.append((f"  then first simulate_many(), {label}", f"{d['simulate_many_s']:.2f} s",
                          "", ""))
+            if "footprint_simulate_s" in d:
+                rows.append((f"  then first simulate() of a footprint (Rectangle), {label}",
+                             f"{d['footprint_simulate_s']:.2f} s", "", ""))
     acc = r["accuracy"]
     if "max_abs_error" in acc.get("wrench", {}):
         rows.append((f"accuracy: wrench vs slow reference ({acc['wrench']['states']} states)",
@@ -826,7 +977,10 @@ def run(args) -> int:
     _log("trajectory")
     r["trajectory"] = bench_trajectory(quick)
     _log(f"batch of {n_batch} trajectories")
-    r["batch"] = bench_batch(n_batch, rng)
+    states = _batch_states(n_batch, rng)
+    r["batch"] = bench_batch(states)
+    _log("footprints: octagon and ring (wrench, reference, trajectory, batch)")
+    r["footprint"] = bench_footprint(quick, rng, states, r["batch"]["per_s"])
     _log(f"peak memory of a batch of {n_mem} (subprocess)")
     r["memory"] = bench_memory(n_mem)
     _log("accuracy")
