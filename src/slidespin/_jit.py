@@ -59,8 +59,9 @@ def _note(text: str) -> None:
     if not _fallback["noted"]:
         _fallback["noted"] = True
         # warn_explicit without a source line: one line on stderr, still filterable
-        warnings.warn_explicit(text, CacheWarning, filename="slidespin", lineno=0,
-                               module="slidespin._jit")
+        warnings.warn_explicit(
+            text, CacheWarning, filename="slidespin", lineno=0, module="slidespin._jit"
+        )
 
 
 def _njit_cached(fn, options):

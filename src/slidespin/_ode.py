@@ -86,8 +86,16 @@ SHAPE_ELLIPSE, SHAPE_FOOTPRINT = 0, 1
 
 # integration status codes (indices into slidespin.outcomes.STATUSES; ST_SPIRAL is reported
 # as "stopped" with the ending "spiral")
-(ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_MARGINAL, ST_SADDLE,
- ST_NON_FINITE, ST_SPIRAL) = range(8)
+(
+    ST_STOPPED,
+    ST_MAX_STEPS,
+    ST_STEP_TOO_SMALL,
+    ST_AT_REST,
+    ST_MARGINAL,
+    ST_SADDLE,
+    ST_NON_FINITE,
+    ST_SPIRAL,
+) = range(8)
 #: |u₃| or |u₁₂| at or below which a terminal direction is pure sliding or pure spinning
 ENDING_TOL = 1e-6
 #: |λ|/|u·A| below which a fixed point is marginal: the direction approaches it like
@@ -111,9 +119,14 @@ SPIRAL_ARC = 3.0 * math.pi
 def kernel_constants(par):
     """The wrench kernel's per-body constants for the parameter vector ``par``."""
     t00, t01, t10, t11 = par[P_T00], par[P_T01], par[P_T10], par[P_T11]
-    return wrench_constants(par[P_BN], int(par[P_LAW]), par[P_XG], par[P_YG],
-                            math.sqrt(t00 * t00 + t01 * t01 + t10 * t10 + t11 * t11),
-                            par[P_WTOL])
+    return wrench_constants(
+        par[P_BN],
+        int(par[P_LAW]),
+        par[P_XG],
+        par[P_YG],
+        math.sqrt(t00 * t00 + t01 * t01 + t10 * t10 + t11 * t11),
+        par[P_WTOL],
+    )
 
 
 def accelerations(par, kc, W, fp, u1, u2, u3, phi):
@@ -134,8 +147,19 @@ def accelerations(par, kc, W, fp, u1, u2, u3, phi):
 def _ellipse_accelerations(par, kc, W, fp, u1, u2, u3, phi):
     k = par[P_K]
     fx, fy, m, st = wrench_world_fast(
-        int(par[P_LAW]), kc, par[P_T00], par[P_T01], par[P_T10], par[P_T11],
-        par[P_BODY] != 0.0, phi, u1, u2, u3 / k, par[P_WTOL], W,
+        int(par[P_LAW]),
+        kc,
+        par[P_T00],
+        par[P_T01],
+        par[P_T10],
+        par[P_T11],
+        par[P_BODY] != 0.0,
+        phi,
+        u1,
+        u2,
+        u3 / k,
+        par[P_WTOL],
+        W,
     )
     return fx, fy, m / k, st
 
@@ -143,8 +167,20 @@ def _ellipse_accelerations(par, kc, W, fp, u1, u2, u3, phi):
 def _footprint_accelerations(par, kc, W, fp, u1, u2, u3, phi):
     k = par[P_K]
     fe, fc, geo = fp
-    fx, fy, m = fp_wrench_world(fe, fc, geo, par[P_T00], par[P_T01], par[P_T10], par[P_T11],
-                                par[P_BODY] != 0.0, phi, u1, u2, u3 / k)
+    fx, fy, m = fp_wrench_world(
+        fe,
+        fc,
+        geo,
+        par[P_T00],
+        par[P_T01],
+        par[P_T10],
+        par[P_T11],
+        par[P_BODY] != 0.0,
+        phi,
+        u1,
+        u2,
+        u3 / k,
+    )
     return fx, fy, m / k, 0
 
 
@@ -192,9 +228,11 @@ def footprint_argument(par, fe, fc, geo):
     float arrays (the types every caller passes: one compiled specialisation)."""
     if par[P_SHAPE] != SHAPE_FOOTPRINT:
         return None
-    return (np.ascontiguousarray(fe, dtype=np.float64),
-            np.ascontiguousarray(fc, dtype=np.float64),
-            np.ascontiguousarray(geo, dtype=np.float64))
+    return (
+        np.ascontiguousarray(fe, dtype=np.float64),
+        np.ascontiguousarray(fc, dtype=np.float64),
+        np.ascontiguousarray(geo, dtype=np.float64),
+    )
 
 
 def rhs(par, fe, fc, geo, y, out):
@@ -221,8 +259,11 @@ def tangent_jacobian(par, kc, W, fp, uu, phi, t1, t2, jac, g):
     one call site keeps the compiled code small (scalar loops: array expressions compile
     slowly).
     """
-    ax = 0 if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2]) else (
-        1 if abs(uu[1]) <= abs(uu[2]) else 2)
+    ax = (
+        0
+        if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2])
+        else (1 if abs(uu[1]) <= abs(uu[2]) else 2)
+    )
     d = uu[ax]
     for i in range(3):
         t1[i] = (1.0 if i == ax else 0.0) - d * uu[i]
@@ -293,8 +334,9 @@ def polish_fixed_point(par, kc, W, fp, u, phi, max_iter, max_dist):
     # the circle of pure-sliding fixed points of an isotropic tensor)
     fp_floor = -1.0
     if par[P_SHAPE] == SHAPE_FOOTPRINT:
-        fp_floor = 1e-15 * math.sqrt(par[P_T00] ** 2 + par[P_T01] ** 2 + par[P_T10] ** 2
-                                     + par[P_T11] ** 2)
+        fp_floor = 1e-15 * math.sqrt(
+            par[P_T00] ** 2 + par[P_T01] ** 2 + par[P_T10] ** 2 + par[P_T11] ** 2
+        )
     for it in range(max_iter):
         tangent_jacobian(par, kc, W, fp, uu, phi, t1, t2, jac, g)
         r0 = g[0] * t1[0] + g[1] * t1[1] + g[2] * t1[2]
@@ -446,7 +488,7 @@ def _rel_lam(par, kc, W, fp, us, phi):
     jac = np.empty((2, 2))
     g = np.empty(3)
     tangent_jacobian(par, kc, W, fp, us, phi, t1, t2, jac, g)
-    if rotationally_symmetric(par) and us[0] ** 2 + us[1] ** 2 > ENDING_TOL ** 2:
+    if rotationally_symmetric(par) and us[0] ** 2 + us[1] ** 2 > ENDING_TOL**2:
         lam = jac[0, 0] + jac[1, 1]
     else:
         lam = _lam_max(jac)
@@ -476,8 +518,7 @@ def terminal_point(par, kc, W, fp, u, phi, symmetric, max_iter, max_dist):
         us, ok = _meridian_point(par, kc, W, fp, u, phi, max_dist)
         calls = 120 + 6
     else:
-        us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, u, phi, max_iter,
-                                              max_dist)
+        us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, u, phi, max_iter, max_dist)
         calls = 5 * nit + 6
     if ok:
         return us, True, _rel_lam(par, kc, W, fp, us, phi), calls
@@ -598,8 +639,18 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     ``fc``, ``geo`` of :meth:`slidespin.Body.kernel_params` (edges (n, 4), circles (m, 4)
     and kernel constants (``NGEO``,) in natural units; ignored for an ellipse): the compiled
     specialisation of the patch's kind runs, compiled on its first use."""
-    return integrate_fp(par, footprint_argument(par, fe, fc, geo), y0, rtol, atol, utol,
-                        s_drop, max_steps, h_max, record)
+    return integrate_fp(
+        par,
+        footprint_argument(par, fe, fc, geo),
+        y0,
+        rtol,
+        atol,
+        utol,
+        s_drop,
+        max_steps,
+        h_max,
+        record,
+    )
 
 
 @jit(error_model="numpy")
@@ -840,8 +891,9 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
                 # near a hyperbolic fixed point: Newton gives u* to ~1e-13 at once, where the
                 # explicit integrator would take many more steps to converge
                 du_polish = du
-                us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, y[:3], y[7],
-                                                      np.int64(12), POLISH_MAX_MOVE)
+                us, ok, lam, nit = polish_fixed_point(
+                    par, kc, W, fp, y[:3], y[7], np.int64(12), POLISH_MAX_MOVE
+                )
                 nrhs += 5 * nit
                 if ok and lam < 0.0:
                     status = ST_STOPPED
@@ -859,15 +911,21 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
                 # (exponentially, or algebraically at a boundary) and that the direction has
                 # come to half its distance from (or within 1e-3) is the limit; a direction
                 # that sweeps SPIRAL_ARC with no attracting point near turns for ever
-                us, ok, rel, calls = terminal_point(par, kc, W, fp, y[:3], y[7],
-                                                    symmetric, np.int64(40), 0.5)
+                us, ok, rel, calls = terminal_point(
+                    par, kc, W, fp, y[:3], y[7], symmetric, np.int64(40), 0.5
+                )
                 nrhs += calls
                 attracting = ok and rel <= MARGIN
                 if attracting:
-                    d = math.sqrt((y[0] - us[0]) ** 2 + (y[1] - us[1]) ** 2
-                                  + (y[2] - us[2]) ** 2)
-                    same = math.sqrt((us[0] - us_prev[0]) ** 2 + (us[1] - us_prev[1]) ** 2
-                                     + (us[2] - us_prev[2]) ** 2) < 1e-8
+                    d = math.sqrt((y[0] - us[0]) ** 2 + (y[1] - us[1]) ** 2 + (y[2] - us[2]) ** 2)
+                    same = (
+                        math.sqrt(
+                            (us[0] - us_prev[0]) ** 2
+                            + (us[1] - us_prev[1]) ** 2
+                            + (us[2] - us_prev[2]) ** 2
+                        )
+                        < 1e-8
+                    )
                     if not same:
                         d_ref = d
                         for i in range(3):
@@ -887,8 +945,7 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
                         spiral_slides = True
                         status = ST_SPIRAL
                         break
-                    if extra_arcs < 20 and (u3_max < 0.7 * u3_max_prev
-                                            or abs(y[2]) < 0.5 * u3_max):
+                    if extra_arcs < 20 and (u3_max < 0.7 * u3_max_prev or abs(y[2]) < 0.5 * u3_max):
                         extra_arcs += 1
                         u3_max_prev = u3_max
                         arc = 0.0
@@ -900,8 +957,9 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
     if status == ST_STOPPED:
         # classify the stop from the fixed point and its eigenvalues (MODEL §9)
         u_pre = u_dir
-        us, ok, rel, calls = terminal_point(par, kc, W, fp, y[:3], y[7], symmetric,
-                                            np.int64(60), 0.5)
+        us, ok, rel, calls = terminal_point(
+            par, kc, W, fp, y[:3], y[7], symmetric, np.int64(60), 0.5
+        )
         nrhs += calls
         if ok:
             y[0] = us[0]
@@ -914,8 +972,7 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
         if ln_inv3 == ln_inv3 and abs(y[2]) > ENDING_TOL:
             # the spin came back from round-off: what the motion does down to that energy is
             # to approach pure sliding (the invariant set ω = 0)
-            us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, u_inv3, y[7],
-                                                  np.int64(40), 0.05)
+            us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, u_inv3, y[7], np.int64(40), 0.05)
             src = us if ok else u_inv3
             n12 = math.sqrt(src[0] ** 2 + src[1] ** 2)
             y[0] = src[0] / n12
@@ -934,8 +991,10 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
         elif rel > -MARGIN:
             if rel < MARGIN:
                 status = ST_MARGINAL
-            elif not ((not spin0 and abs(y[2]) <= ENDING_TOL)
-                      or (not slide0 and symmetric and u12 <= ENDING_TOL)):
+            elif not (
+                (not spin0 and abs(y[2]) <= ENDING_TOL)
+                or (not slide0 and symmetric and u12 <= ENDING_TOL)
+            ):
                 # held on an unstable fixed point (other than by an exact invariance)
                 status = ST_SADDLE
                 term[1] = y[3] - ln_s0
@@ -1011,8 +1070,9 @@ def stop_direction(yend):
     return u12, theta
 
 
-def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop,
-                   max_steps):
+def integrate_many(
+    pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop, max_steps
+):
     """:func:`integrate_fp` for many independent cases in parallel (no per-step records).
 
     Parameters
@@ -1050,22 +1110,37 @@ def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, uto
     init = c(init, dtype=np.float64)
     foot = pars[:, P_SHAPE] == SHAPE_FOOTPRINT
     args = (rtol, atol, utol, s_drop, max_steps)
-    fps = (c(edges, dtype=np.float64), c(circles, dtype=np.float64),
-           c(eidx, dtype=np.int64), c(cidx, dtype=np.int64), c(geos, dtype=np.float64))
+    fps = (
+        c(edges, dtype=np.float64),
+        c(circles, dtype=np.float64),
+        c(eidx, dtype=np.int64),
+        c(cidx, dtype=np.int64),
+        c(geos, dtype=np.float64),
+    )
     if not foot.any():
         return _integrate_many(pars, None, init, *args)
     if foot.all():
         return _integrate_many(pars, fps, init, *args)
     n = pars.shape[0]
-    out = (np.empty((n, NY)), np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int64),
-           np.empty(n, dtype=np.int64), np.empty(n, dtype=np.int64), np.empty((n, 4)))
+    out = (
+        np.empty((n, NY)),
+        np.empty(n, dtype=np.int64),
+        np.empty(n, dtype=np.int64),
+        np.empty(n, dtype=np.int64),
+        np.empty(n, dtype=np.int64),
+        np.empty((n, 4)),
+    )
     ell = np.flatnonzero(~foot)
     res = _integrate_many(c(pars[ell]), None, c(init[ell]), *args)
     for whole, part in zip(out, res):
         whole[ell] = part
     fpi = np.flatnonzero(foot)
-    res = _integrate_many(c(pars[fpi]), fps[:2] + (c(fps[2][fpi]), c(fps[3][fpi]),
-                                                   c(fps[4][fpi])), c(init[fpi]), *args)
+    res = _integrate_many(
+        c(pars[fpi]),
+        fps[:2] + (c(fps[2][fpi]), c(fps[3][fpi]), c(fps[4][fpi])),
+        c(init[fpi]),
+        *args,
+    )
     for whole, part in zip(out, res):
         whole[fpi] = part
     return out
@@ -1084,8 +1159,9 @@ def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
     terms = np.empty((n, 4))
     no_record = max_steps < 0
     for i in prange(n):
-        y0 = initial_state(pars[i], init[i, 0], init[i, 1], init[i, 2], init[i, 3],
-                           init[i, 4], init[i, 5])
+        y0 = initial_state(
+            pars[i], init[i, 0], init[i, 1], init[i, 2], init[i, 3], init[i, 4], init[i, 5]
+        )
         if y0[3] == -np.inf:
             for c in range(NY):
                 out[i, c] = y0[c]
@@ -1105,9 +1181,11 @@ def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
         else:
             edges, circles, eidx, cidx, geos = fps
             # contiguous copies: the same array types as simulate() passes (one compilation)
-            fp = (np.ascontiguousarray(edges[eidx[i, 0]:eidx[i, 1]]),
-                  np.ascontiguousarray(circles[cidx[i, 0]:cidx[i, 1]]),
-                  np.ascontiguousarray(geos[i]))
+            fp = (
+                np.ascontiguousarray(edges[eidx[i, 0] : eidx[i, 1]]),
+                np.ascontiguousarray(circles[cidx[i, 0] : cidx[i, 1]]),
+                np.ascontiguousarray(geos[i]),
+            )
             yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
                 pars[i], fp, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
             )
