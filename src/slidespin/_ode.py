@@ -29,9 +29,9 @@ here takes the patch as the argument ``fp``: ``None`` for an ellipse (the kernel
 (:func:`slidespin._footprint_kernel.wrench_world`; :func:`footprint_argument`). numba compiles
 one specialisation per argument type, on first use, and caches each on disk; the kernel is
 chosen when numba types the call of :func:`accelerations` (an ``overload`` on the type of
-``fp``), so the ellipse specialisation holds no footprint code and the footprint one no
-ellipse kernel: an ellipse-only user compiles only the ellipse, a footprint compiles on its
-first use. (Two other routes were tried and rejected: a jitted wrench function passed as an
+``fp``), so the ellipse specialisation holds no footprint code and the footprint one none of
+the ellipse kernel but its constants (:func:`kernel_constants`, small): an ellipse-only user
+compiles only the ellipse, a footprint compiles on its first use. (Two other routes were tried and rejected: a jitted wrench function passed as an
 argument, or a factory closing over it, specialise as well but miss numba's disk cache in
 every new process, numba 0.68: the dispatcher's type carries a per-process identity.) For a
 footprint the length unit a is its extent, and the classification of MODEL §9 uses the flags
