@@ -1070,10 +1070,13 @@ def stop_direction(yend):
     return u12, theta
 
 
-def integrate_many(
-    pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop, max_steps
-):
+def integrate_many(pars, *args):
     """:func:`integrate_fp` for many independent cases in parallel (no per-step records).
+
+    Called as ``integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol,
+    s_drop, max_steps)``: variadic after ``pars`` so that callers may splat the footprint
+    arrays (``*fps``) as they did into the compiled function this wrapper replaced (mypy maps
+    a splatted tuple of unknown length onto every remaining named parameter).
 
     Parameters
     ----------
@@ -1105,6 +1108,7 @@ def integrate_many(
     first use; a batch that mixes both runs twice, on each kind's rows (the cases are
     independent: the same results as one run).
     """
+    edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop, max_steps = args
     c = np.ascontiguousarray
     pars = c(pars, dtype=np.float64)
     init = c(init, dtype=np.float64)

@@ -90,7 +90,7 @@ class StopResults:
         """The stop results as a :class:`pandas.DataFrame`, one row per case (the columns of
         :meth:`as_dict`, SI units; ``ending`` and ``status`` as strings). Needs pandas."""
         try:
-            import pandas as pd  # type: ignore[import-untyped]
+            import pandas as pd
         except ImportError:  # pragma: no cover - depends on the environment
             raise ImportError("StopResults.to_pandas needs pandas: pip install pandas") from None
         return pd.DataFrame(self.as_dict())
@@ -109,10 +109,8 @@ class StopResults:
         """Number of cases per status and per ending: ``{"status": {...}, "ending": {...}}``."""
         from collections import Counter
 
-        return {
-            "status": dict(Counter(self.status.tolist())),
-            "ending": dict(Counter(self.ending.tolist())),
-        }
+        return {"status": dict(Counter(self.status.tolist())),
+                "ending": dict(Counter(self.ending.tolist()))}
 
     @property
     def ending(self) -> np.ndarray:
@@ -126,20 +124,9 @@ class StopResults:
 
     def as_dict(self) -> dict:
         """Column name → array, with string columns for ending and status."""
-        out = {
-            k: getattr(self, k)
-            for k in (
-                "t_stop",
-                "x_stop",
-                "y_stop",
-                "phi_stop",
-                "path_length",
-                "beta_stop",
-                "theta_stop",
-                "saddle_energy",
-                "n_steps",
-            )
-        }
+        out = {k: getattr(self, k) for k in (
+            "t_stop", "x_stop", "y_stop", "phi_stop", "path_length", "beta_stop", "theta_stop",
+            "saddle_energy", "n_steps")}
         out["ending"] = self.ending
         out["status"] = self.status
         return out
@@ -220,17 +207,10 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
     a = np.broadcast_to(np.asarray(a, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
     res = StopResults(
-        t_stop=np.empty(n),
-        x_stop=np.empty(n),
-        y_stop=np.empty(n),
-        phi_stop=np.empty(n),
-        path_length=np.empty(n),
-        beta_stop=np.empty(n),
-        theta_stop=np.empty(n),
-        ending_code=np.empty(n, dtype=np.int8),
-        status_code=np.empty(n, dtype=np.int8),
-        n_steps=np.empty(n, dtype=np.int64),
-        saddle_energy=np.empty(n),
+        t_stop=np.empty(n), x_stop=np.empty(n), y_stop=np.empty(n), phi_stop=np.empty(n),
+        path_length=np.empty(n), beta_stop=np.empty(n), theta_stop=np.empty(n),
+        ending_code=np.empty(n, dtype=np.int8), status_code=np.empty(n, dtype=np.int8),
+        n_steps=np.empty(n, dtype=np.int64), saddle_energy=np.empty(n),
     )
     fails = 0
     for lo in range(0, n, CHUNK):
@@ -248,27 +228,15 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
         init[:, 4] = st["y"][lo:hi] / ac
         init[:, 5] = st["phi"][lo:hi]
         fps = _no_footprints(hi - lo) if footprints_of is None else footprints_of(lo, hi)
-        edges, circles, eidx, cidx, geos = fps
         yend, status, steps, _, nf, term = _ode.integrate_many(
-            pars,
-            edges,
-            circles,
-            eidx,
-            cidx,
-            geos,
-            init,
-            rtol,
-            rtol,
-            rtol,
-            min(rtol, 1e-8),
-            max_steps,
+            pars, *fps, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
         )
         fails += int((nf > 0).sum())
-        _stop_values(res, lo, hi, yend, status, steps, term, pars[:, _ode.P_K], ac, t_unit, st)
+        _stop_values(res, lo, hi, yend, status, steps, term, pars[:, _ode.P_K], ac, t_unit,
+                     st)
     if fails:  # pragma: no cover - guard
-        raise RuntimeError(
-            f"{fails} cases had wrench evaluations above their error target; please report"
-        )
+        raise RuntimeError(f"{fails} cases had wrench evaluations above their error target; "
+                           "please report")
     return res
 
 
@@ -298,7 +266,8 @@ def _stop_values(res, lo, hi, yend, status, steps, term, k, a, t_unit, st):
     res.y_stop[lo:hi] = np.where(rest, st["y"][lo:hi], yend[:, 6] * a)
     res.phi_stop[lo:hi] = np.where(rest, st["phi"][lo:hi], yend[:, 7])
     res.path_length[lo:hi] = np.where(rest, 0.0, yend[:, 8] * a)
-    res.saddle_energy[lo:hi] = np.where(np.isfinite(term[:, 1]), np.exp(2.0 * term[:, 1]), np.nan)
+    res.saddle_energy[lo:hi] = np.where(np.isfinite(term[:, 1]), np.exp(2.0 * term[:, 1]),
+                                        np.nan)
     res.n_steps[lo:hi] = steps
 
 
@@ -308,25 +277,20 @@ def _check_run(initial_states, n, rtol, max_steps, g):
     try:
         st = np.asarray(initial_states, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(
-            "initial_states must be an (N, 6) array of real numbers (x, y, phi, vx, vy, omega)"
-        ) from None
+        raise ValueError("initial_states must be an (N, 6) array of real numbers "
+                         "(x, y, phi, vx, vy, omega)") from None
     if st.ndim != 2 or st.shape[1] != 6 or (n is not None and st.shape[0] != n):
         rows = "N" if n is None else str(n)
-        raise ValueError(
-            f"initial_states has shape {st.shape}; valid: ({rows}, 6), one row "
-            "(x, y, phi, vx, vy, omega) per case"
-        )
+        raise ValueError(f"initial_states has shape {st.shape}; valid: ({rows}, 6), one row "
+                         "(x, y, phi, vx, vy, omega) per case")
     rtol, max_steps = check_solver_options(rtol, max_steps)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     bad = ~np.isfinite(st)
     if bad.any():
         i, j = (int(x[0]) for x in np.nonzero(bad))
         name = ("x", "y", "phi", "vx", "vy", "omega")[j]
-        raise ValueError(
-            f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
-            "valid range: any finite real number"
-        )
+        raise ValueError(f"initial_states[{i}, {j}] ({name}) = {st[i, j]!r} is not finite; "
+                         "valid range: any finite real number")
     return st, rtol, max_steps, g
 
 
@@ -376,16 +340,9 @@ def simulate_many(
         cidx[:, 1] = fc.shape[0]
         return fe, fc, eidx, cidx, np.repeat(geo[None, :], m, axis=0)
 
-    return _integrate_all(
-        st.shape[0],
-        lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
-        body.length_unit,
-        g,
-        states,
-        rtol,
-        max_steps,
-        footprints_of if body.is_footprint else None,
-    )
+    return _integrate_all(st.shape[0], lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
+                          body.length_unit, g, states, rtol, max_steps,
+                          footprints_of if body.is_footprint else None)
 
 
 def simulate_bodies(
@@ -425,10 +382,8 @@ def simulate_bodies(
     else:
         frictions = list(friction)
         if len(frictions) != n or not all(isinstance(f, FrictionTensor) for f in frictions):
-            raise ValueError(
-                f"friction must be a FrictionTensor or a sequence of {n} "
-                "FrictionTensor (one per body)"
-            )
+            raise ValueError(f"friction must be a FrictionTensor or a sequence of {n} "
+                             "FrictionTensor (one per body)")
     st, rtol, max_steps, g = _check_run(initial_states, n, rtol, max_steps, g)
     # each distinct (body, friction) once; the parameter vectors of simulate() itself
     cache: dict = {}
@@ -463,6 +418,5 @@ def simulate_bodies(
         geos = np.ascontiguousarray(np.array([e[3] for e in engines[lo:hi]]))
         return edges, circles, eidx, cidx, geos
 
-    return _integrate_all(
-        n, lambda lo, hi: pars[lo:hi], length, g, states, rtol, max_steps, footprints_of
-    )
+    return _integrate_all(n, lambda lo, hi: pars[lo:hi], length, g, states, rtol, max_steps,
+                          footprints_of)
