@@ -90,8 +90,9 @@ from ._kernel import tensor_in_body
 
 #: fields of the ``geo`` vector
 GEO_FIELDS = ("ox", "oy", "extent", "p0", "p1", "p2", "xg", "yg", "xp", "yp", "load")
-(GEO_OX, GEO_OY, GEO_EXT, GEO_P0, GEO_P1, GEO_P2, GEO_XG, GEO_YG, GEO_XP, GEO_YP,
- GEO_LOAD) = range(11)
+(GEO_OX, GEO_OY, GEO_EXT, GEO_P0, GEO_P1, GEO_P2, GEO_XG, GEO_YG, GEO_XP, GEO_YP, GEO_LOAD) = range(
+    11
+)
 NGEO = 11
 
 #: ICR distance (in extents, from the reference point o) beyond which V, N are integrated
@@ -226,10 +227,18 @@ def _sym3(nx, ny, tx, ty, l0, l1, l2, l3):
     """Components (xxx, xxy, xyy, yyy) of the symmetric tensor with components l0 (nnn),
     l1 (nnt), l2 (ntt), l3 (ttt) in the orthonormal frame (n, t)."""
     xxx = l0 * nx * nx * nx + 3.0 * l1 * nx * nx * tx + 3.0 * l2 * nx * tx * tx + l3 * tx * tx * tx
-    xxy = (l0 * nx * nx * ny + l1 * (nx * nx * ty + 2.0 * nx * tx * ny)
-           + l2 * (2.0 * nx * tx * ty + tx * tx * ny) + l3 * tx * tx * ty)
-    xyy = (l0 * nx * ny * ny + l1 * (2.0 * nx * ny * ty + tx * ny * ny)
-           + l2 * (nx * ty * ty + 2.0 * tx * ny * ty) + l3 * tx * ty * ty)
+    xxy = (
+        l0 * nx * nx * ny
+        + l1 * (nx * nx * ty + 2.0 * nx * tx * ny)
+        + l2 * (2.0 * nx * tx * ty + tx * tx * ny)
+        + l3 * tx * tx * ty
+    )
+    xyy = (
+        l0 * nx * ny * ny
+        + l1 * (2.0 * nx * ny * ty + tx * ny * ny)
+        + l2 * (nx * ty * ty + 2.0 * tx * ny * ty)
+        + l3 * tx * ty * ty
+    )
     yyy = l0 * ny * ny * ny + 3.0 * l1 * ny * ny * ty + 3.0 * l2 * ny * ty * ty + l3 * ty * ty * ty
     return xxx, xxy, xyy, yyy
 
@@ -286,8 +295,15 @@ def fan_tensors(edges, circles, cx, cy):
             j0 = math.log((sq + rq) * (rp - sp) / (d * d))
             j2a = sq * rq - sp * rp
         j2 = 0.5 * (j2a - d * d * j0)
-        j3 = j1 * (sq * sq + sp * sp + (sq * sq * sp * sp + d * d * (sq * sq + sp * sp))
-                   / (rq * rp + d * d)) / 3.0
+        j3 = (
+            j1
+            * (
+                sq * sq
+                + sp * sp
+                + (sq * sq * sp * sp + d * d * (sq * sq + sp * sp)) / (rq * rp + d * d)
+            )
+            / 3.0
+        )
         w1 = 0.5 * d
         g1x += w1 * (d * j0 * nx + j1 * tx)
         g1y += w1 * (d * j0 * ny + j1 * ty)
@@ -471,8 +487,9 @@ def wrench_body(edges, circles, geo, t00, t01, t10, t11, vx, vy, omega):
     dist = math.sqrt((cx - ox) ** 2 + (cy - oy) ** 2)
     if dist > FAR_RATIO * ext:
         nodes = FAR_NODES if dist <= FAR_RATIO_3 * ext else 3
-        vx_, vy_, nxx, nxy, nyx, nyy = far_sums(edges, circles, ox, oy, cx, cy, xg, yg, p0, p1,
-                                                p2, nodes)
+        vx_, vy_, nxx, nxy, nyx, nyy = far_sums(
+            edges, circles, ox, oy, cx, cy, xg, yg, p0, p1, p2, nodes
+        )
     else:
         g1x, g1y, g2xx, g2xy, g2yy, g3a, g3b, g3c, g3d = fan_tensors(edges, circles, cx, cy)
         al = p0 + p1 * cx + p2 * cy
@@ -518,8 +535,9 @@ def wrench_array(edges, circles, geo, t00, t01, t10, t11, body_frame, phi, vx, v
     fy = np.empty(n)
     mm = np.empty(n)
     for i in range(n):
-        fx[i], fy[i], mm[i] = wrench_world(edges, circles, geo, t00, t01, t10, t11, body_frame,
-                                           phi[i], vx[i], vy[i], omega[i])
+        fx[i], fy[i], mm[i] = wrench_world(
+            edges, circles, geo, t00, t01, t10, t11, body_frame, phi[i], vx[i], vy[i], omega[i]
+        )
     return fx, fy, mm
 
 

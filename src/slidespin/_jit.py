@@ -21,8 +21,9 @@ import warnings
 import numba
 from numba import prange
 from numba.core import config as _config
+from numba.extending import overload
 
-__all__ = ["jit", "prange", "numba", "set_threads", "CacheWarning"]
+__all__ = ["jit", "prange", "numba", "set_threads", "CacheWarning", "overload", "is_none_type"]
 
 
 class CacheWarning(UserWarning):
@@ -34,7 +35,20 @@ _fallback: dict = {"dir": None, "noted": False}
 
 def set_threads(n: int) -> None:
     """Limit the threads of compiled parallel loops (e.g. one per Dask worker thread)."""
-    numba.set_num_threads(max(1, min(int(n), numba.config.NUMBA_NUM_THREADS)))
+    most = _config.NUMBA_NUM_THREADS  # type: ignore[attr-defined]
+    numba.set_num_threads(max(1, min(int(n), most)))
+
+
+def is_none_type(numba_type) -> bool:
+    """True if ``numba_type`` (an argument type seen by an ``overload`` typing function) is
+    ``None``'s: the typing function then returns the implementation for a missing argument.
+
+    ``overload`` (``numba.extending.overload``) is how one compiled source specialises on
+    the type of an argument: called from compiled code, the plain-Python stub it decorates is
+    replaced by the implementation its typing function returns for the argument types, and
+    only that one is compiled (and cached with its caller).
+    """
+    return isinstance(numba_type, numba.types.NoneType)
 
 
 def _no_locator(err: Exception) -> bool:
@@ -45,8 +59,9 @@ def _note(text: str) -> None:
     if not _fallback["noted"]:
         _fallback["noted"] = True
         # warn_explicit without a source line: one line on stderr, still filterable
-        warnings.warn_explicit(text, CacheWarning, filename="slidespin", lineno=0,
-                               module="slidespin._jit")
+        warnings.warn_explicit(
+            text, CacheWarning, filename="slidespin", lineno=0, module="slidespin._jit"
+        )
 
 
 def _njit_cached(fn, options):

@@ -98,8 +98,15 @@ METHOD_CLENSHAW_CURTIS_INSIDE = 7  # ICR inside near the rim, uniform/linear
 METHOD_ADAPTIVE_INSIDE = 8  # fallback: adaptive Gauss–Kronrod
 METHOD_ADAPTIVE_OUTSIDE = 9
 METHOD_NAMES = (
-    "translation", "trapezoid", "trapezoid-mapped", "sine-trapezoid", "sine-trapezoid-mapped",
-    "clenshaw-curtis", "clenshaw-curtis-mapped", "clenshaw-curtis-inside", "adaptive-inside",
+    "translation",
+    "trapezoid",
+    "trapezoid-mapped",
+    "sine-trapezoid",
+    "sine-trapezoid-mapped",
+    "clenshaw-curtis",
+    "clenshaw-curtis-mapped",
+    "clenshaw-curtis-inside",
+    "adaptive-inside",
     "adaptive-outside",
 )
 
@@ -130,19 +137,36 @@ MAP_MIN_HALF_WIDTH = 0.2
 GK_INITIAL_CAPACITY = 64
 GK_MAX_INTERVALS = 4000
 
+
 def _gk15_tables():
     """Gauss–Kronrod 7/15 (QUADPACK qk15) as 15 nodes with their Kronrod and Gauss weights
     (the Gauss weight is 0 at the 8 Kronrod-only nodes)."""
-    xgk = [0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
-           0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
-           0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
-           0.207784955007898467600689403773245, 0.0]
-    wgk = [0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
-           0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
-           0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
-           0.204432940075298892414161999234649, 0.209482141084727828012999174891714]
-    wg = [0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
-          0.381830050505118944950369775488975, 0.417959183673469387755102040816327]
+    xgk = [
+        0.991455371120812639206854697526329,
+        0.949107912342758524526189684047851,
+        0.864864423359769072789712788640926,
+        0.741531185599394439863864773280788,
+        0.586087235467691130294144845693013,
+        0.405845151377397166906606412076961,
+        0.207784955007898467600689403773245,
+        0.0,
+    ]
+    wgk = [
+        0.022935322010529224963732008058970,
+        0.063092092629978553290700663189204,
+        0.104790010322250183839876322541518,
+        0.140653259715525918745189590510238,
+        0.169004726639267902826583426598550,
+        0.190350578064785409913256402421014,
+        0.204432940075298892414161999234649,
+        0.209482141084727828012999174891714,
+    ]
+    wg = [
+        0.129484966168869693270611432679082,
+        0.279705391489276667901467771423780,
+        0.381830050505118944950369775488975,
+        0.417959183673469387755102040816327,
+    ]
     x, wk, wgs = [0.0], [wgk[7]], [wg[3]]
     for j in range(7):
         g = wg[j // 2] if j % 2 == 1 else 0.0
@@ -207,8 +231,13 @@ def _cc_tables():
         index[n] = len(offsets)
         offsets.append(o)
         o += n + 1
-    return (index, np.array(offsets, dtype=np.int64), np.concatenate(w1), np.concatenate(w2),
-            np.concatenate(w4))
+    return (
+        index,
+        np.array(offsets, dtype=np.int64),
+        np.concatenate(w1),
+        np.concatenate(w2),
+        np.concatenate(w4),
+    )
 
 
 _NODE_INDEX, _NODE_OFFSETS, _COS, _SIN = _node_tables()
@@ -222,8 +251,7 @@ _CC_SIZES = np.array(CC_SIZES, dtype=np.int64)
 
 
 @jit(error_model="numpy", inline="always")
-def _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, exc, A, disc,
-                jac):
+def _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, exc, A, disc, jac):
     """(F_x, F_y, M) integrand, times ``jac``, of the line through the ICR in direction ê
     (before the factor −sign ω), from the chord moments K₁, K₂ of the module notes.
 
@@ -298,16 +326,75 @@ def _sincos(t):
     """(cos t, sin t) by Taylor polynomials for |t| ≤ π/2 (truncation < 1e-18; vectorisable,
     unlike the library functions)."""
     t2 = t * t
-    s = 1.0 + t2 * (-0.16666666666666666 + t2 * (0.008333333333333333 + t2 * (
-        -0.0001984126984126984 + t2 * (2.7557319223985893e-06 + t2 * (-2.505210838544172e-08
-        + t2 * (1.6059043836821613e-10 + t2 * (-7.647163731819816e-13 + t2 * (
-            2.8114572543455206e-15 + t2 * (-8.22063524662433e-18 + t2 * (
-                1.9572941063391263e-20))))))))))
-    c = 1.0 + t2 * (-0.5 + t2 * (0.041666666666666664 + t2 * (-0.001388888888888889 + t2 * (
-        2.48015873015873e-05 + t2 * (-2.755731922398589e-07 + t2 * (2.08767569878681e-09 + t2 * (
-            -1.1470745597729725e-11 + t2 * (4.779477332387385e-14 + t2 * (
-                -1.5619206968586225e-16 + t2 * (4.110317623312165e-19 + t2 * (
-                    -8.896791392450574e-22)))))))))))
+    s = 1.0 + t2 * (
+        -0.16666666666666666
+        + t2
+        * (
+            0.008333333333333333
+            + t2
+            * (
+                -0.0001984126984126984
+                + t2
+                * (
+                    2.7557319223985893e-06
+                    + t2
+                    * (
+                        -2.505210838544172e-08
+                        + t2
+                        * (
+                            1.6059043836821613e-10
+                            + t2
+                            * (
+                                -7.647163731819816e-13
+                                + t2
+                                * (
+                                    2.8114572543455206e-15
+                                    + t2 * (-8.22063524662433e-18 + t2 * (1.9572941063391263e-20))
+                                )
+                            )
+                        )
+                    )
+                )
+            )
+        )
+    )
+    c = 1.0 + t2 * (
+        -0.5
+        + t2
+        * (
+            0.041666666666666664
+            + t2
+            * (
+                -0.001388888888888889
+                + t2
+                * (
+                    2.48015873015873e-05
+                    + t2
+                    * (
+                        -2.755731922398589e-07
+                        + t2
+                        * (
+                            2.08767569878681e-09
+                            + t2
+                            * (
+                                -1.1470745597729725e-11
+                                + t2
+                                * (
+                                    4.779477332387385e-14
+                                    + t2
+                                    * (
+                                        -1.5619206968586225e-16
+                                        + t2
+                                        * (4.110317623312165e-19 + t2 * (-8.896791392450574e-22))
+                                    )
+                                )
+                            )
+                        )
+                    )
+                )
+            )
+        )
+    )
     return c, s * t
 
 
@@ -365,8 +452,26 @@ def _lines(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n):
         ey = W[1, j]
         A = ex * ex + ey * ey * s22
         disc = max(A - s22 * W[3, j] * W[3, j], 0.0)
-        fx, fy, mm = _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey,
-                                 W[2, j], W[3, j], A, disc, W[4, j])
+        fx, fy, mm = _line_terms(
+            law,
+            s22,
+            ib,
+            lx,
+            ly,
+            xg,
+            yg,
+            t00,
+            t01,
+            t10,
+            t11,
+            ex,
+            ey,
+            W[2, j],
+            W[3, j],
+            A,
+            disc,
+            W[4, j],
+        )
         W[5, j] = fx
         W[6, j] = fy
         W[7, j] = mm
@@ -532,8 +637,30 @@ def _out_distance(lo, hi, y, re0, step, branch, enough, entire):
 
 
 @jit(error_model="numpy")
-def _adaptive(inside, lo, hi, tol, law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, cx, cy,
-              ecx, ecy, dist, mid, half):
+def _adaptive(
+    inside,
+    lo,
+    hi,
+    tol,
+    law,
+    s22,
+    ib,
+    lx,
+    ly,
+    xg,
+    yg,
+    t00,
+    t01,
+    t10,
+    t11,
+    cx,
+    cy,
+    ecx,
+    ecy,
+    dist,
+    mid,
+    half,
+):
     """Globally adaptive Gauss–Kronrod 7/15 on [lo, hi], first split at the midpoint.
 
     The integration variable is ψ (``inside``) or s with α = mid + half sin s (outside, α
@@ -579,8 +706,9 @@ def _adaptive(inside, lo, hi, tol, law, s22, ib, lx, ly, xg, yg, t00, t01, t10, 
                 disc = A - s22 * exc * exc
                 if disc <= 0.0 or jac <= 0.0:
                     continue  # the line misses the patch
-                fx, fy, mm = _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex,
-                                         ey, cde, exc, A, disc, jac)
+                fx, fy, mm = _line_terms(
+                    law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, exc, A, disc, jac
+                )
                 kx += _GK_WK[q] * fx
                 ky += _GK_WK[q] * fy
                 km += _GK_WK[q] * mm
@@ -632,13 +760,38 @@ def _adaptive(inside, lo, hi, tol, law, s22, ib, lx, ly, xg, yg, t00, t01, t10, 
 
 
 @jit(error_model="numpy")
-def _run_rule(W, method, n, law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, cx, cy, k, mid,
-              half, ecx, ecy, dist):
+def _run_rule(
+    W,
+    method,
+    n,
+    law,
+    s22,
+    ib,
+    lx,
+    ly,
+    xg,
+    yg,
+    t00,
+    t01,
+    t10,
+    t11,
+    cx,
+    cy,
+    k,
+    mid,
+    half,
+    ecx,
+    ecy,
+    dist,
+):
     """One tabulated rule with n nodes in the workspace W: (Fx, Fy, M, e₁, e₂) before the
     factor −sign ω."""
     o = _NODE_OFFSETS[_NODE_INDEX[n]]
-    cc = (method == METHOD_CLENSHAW_CURTIS or method == METHOD_CLENSHAW_CURTIS_MAPPED
-          or method == METHOD_CLENSHAW_CURTIS_INSIDE)
+    cc = (
+        method == METHOD_CLENSHAW_CURTIS
+        or method == METHOD_CLENSHAW_CURTIS_MAPPED
+        or method == METHOD_CLENSHAW_CURTIS_INSIDE
+    )
     if method == METHOD_TRAPEZOID or method == METHOD_TRAPEZOID_MAPPED:
         _dirs_table(W, o, n, k, cx, cy)
     else:
@@ -679,8 +832,22 @@ def wrench_constants(bn, law, xg, yg, tnorm, tol):
     logterm = max(math.log(tnorm / tol * max(bn, 1.0 / bn)), 0.0) if tnorm > 0.0 else 0.0
     d_a = _atanh_sym(bn)
     d_am = _atanh_sym(ksq)
-    return (bn, s22, 1.0 / bn, xg, yg, lx, ly, ksq, re0, d_a, d_am, logterm,
-            min(bn, 1.0 / bn), math.expm1(4.0 * d_am) if d_am < 100.0 else math.inf)
+    return (
+        bn,
+        s22,
+        1.0 / bn,
+        xg,
+        yg,
+        lx,
+        ly,
+        ksq,
+        re0,
+        d_a,
+        d_am,
+        logterm,
+        min(bn, 1.0 / bn),
+        math.expm1(4.0 * d_am) if d_am < 100.0 else math.inf,
+    )
 
 
 @jit(error_model="numpy")
@@ -695,8 +862,14 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
         ux = vx / speed
         uy = vy / speed
         # pure translation: F = −𝔽 v̂, M = 0 since G lies over the pressure centroid
-        return (-(t00 * ux + t01 * uy), -(t10 * ux + t11 * uy), 0.0, STATUS_OK,
-                METHOD_TRANSLATION, 0)
+        return (
+            -(t00 * ux + t01 * uy),
+            -(t10 * ux + t11 * uy),
+            0.0,
+            STATUS_OK,
+            METHOD_TRANSLATION,
+            0,
+        )
     if t00 == 0.0 and t01 == 0.0 and t10 == 0.0 and t11 == 0.0:
         return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0
     cx = xg - vy / omega
@@ -738,8 +911,9 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
             # near the rim: Clenshaw–Curtis over [ψ₁, ψ₁ + π], D's zeros at its ends
             cost = COST_MAPPED * n if k != 1.0 else 1.0 * n
             enough = (logterm + C_CC) / (GAMMA_CC * MIN_NODES_CC)
-            d, _ = _out_distance(psi1, psi1 + math.pi, d_a, re0, math.pi, q > 1.0, enough,
-                                 ENTIRE_HEIGHT_CC)  # (q > 1 is False here, as a variable)
+            d, _ = _out_distance(
+                psi1, psi1 + math.pi, d_a, re0, math.pi, q > 1.0, enough, ENTIRE_HEIGHT_CC
+            )  # (q > 1 is False here, as a variable)
             d = min(d, _log_rho(psi1, _atanh_sym(r) if r > 0.0 else 0.0, mid, half))
             n3 = _count(logterm, C_CC, GAMMA_CC, d, _CC_SIZES, MIN_NODES_CC)
             if n3 > 0 and (n < 0 or COST_ROTATED * (n3 + 1) < cost):
@@ -747,8 +921,30 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
                 n = n3
                 k = 1.0
         while 0 < n <= MAX_NODES:
-            fx, fy, mm, e1, e2 = _run_rule(W, method, n, law, s22, ib, lx, ly, xg, yg, t00,
-                                           t01, t10, t11, cx, cy, k, mid, half, 0.0, 0.0, 0.0)
+            fx, fy, mm, e1, e2 = _run_rule(
+                W,
+                method,
+                n,
+                law,
+                s22,
+                ib,
+                lx,
+                ly,
+                xg,
+                yg,
+                t00,
+                t01,
+                t10,
+                t11,
+                cx,
+                cy,
+                k,
+                mid,
+                half,
+                0.0,
+                0.0,
+                0.0,
+            )
             used += n + 1 if method == METHOD_CLENSHAW_CURTIS_INSIDE else n
             if _estimate(e1, e2) <= tol:
                 return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used
@@ -758,9 +954,30 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
             lam1, lam2, c2, s2 = _q_form(s22, cx, cy)
             psi1 = 0.5 * math.atan2(s2, c2)
         inside = q <= 1.0  # (a variable: a literal True would compile a second version)
-        fx, fy, mm, nev, status = _adaptive(inside, psi1, psi1 + math.pi, tol, law, s22, ib,
-                                            lx, ly, xg, yg, t00, t01, t10, t11, cx, cy,
-                                            0.0, 0.0, 0.0, 0.0, 0.0)
+        fx, fy, mm, nev, status = _adaptive(
+            inside,
+            psi1,
+            psi1 + math.pi,
+            tol,
+            law,
+            s22,
+            ib,
+            lx,
+            ly,
+            xg,
+            yg,
+            t00,
+            t01,
+            t10,
+            t11,
+            cx,
+            cy,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+            0.0,
+        )
         return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_INSIDE, used + nev
     # ---- ICR outside: the sector α₋ ≤ α ≤ α₊ of lines that meet the patch (α from ê_c)
     dist = math.sqrt(cx * cx + cy * cy)
@@ -776,17 +993,28 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
     mid = 0.5 * (a_plus + a_minus)
     half = 0.5 * (a_plus - a_minus)
     if branch:
-        c_rule, gamma, sizes, least, entire = (C_SINE, GAMMA_TRAPEZOID, _NODE_SIZES,
-                                               MIN_NODES, ENTIRE_HEIGHT_SINE)
+        c_rule, gamma, sizes, least, entire = (
+            C_SINE,
+            GAMMA_TRAPEZOID,
+            _NODE_SIZES,
+            MIN_NODES,
+            ENTIRE_HEIGHT_SINE,
+        )
         method = METHOD_SINE
     else:
-        c_rule, gamma, sizes, least, entire = (C_CC, GAMMA_CC, _CC_SIZES, MIN_NODES_CC,
-                                               ENTIRE_HEIGHT_CC)
+        c_rule, gamma, sizes, least, entire = (
+            C_CC,
+            GAMMA_CC,
+            _CC_SIZES,
+            MIN_NODES_CC,
+            ENTIRE_HEIGHT_CC,
+        )
         method = METHOD_CLENSHAW_CURTIS
     enough = (logterm + c_rule) / (gamma * least)
     psic = math.atan2(ecy, ecx)
-    d, a_nearest = _out_distance(a_minus + psic, a_plus + psic, d_a, re0, math.pi, branch,
-                                 enough, entire)
+    d, a_nearest = _out_distance(
+        a_minus + psic, a_plus + psic, d_a, re0, math.pi, branch, enough, entire
+    )
     n = _count(logterm, c_rule, gamma, d, sizes, least)
     k = 1.0
     # the map can only help when the A-points limit the rule
@@ -809,8 +1037,30 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
             half = 0.5 * (hi2 - lo2)
             method = METHOD_SINE_MAPPED if branch else METHOD_CLENSHAW_CURTIS_MAPPED
     while 0 < n <= MAX_NODES:
-        fx, fy, mm, e1, e2 = _run_rule(W, method, n, law, s22, ib, lx, ly, xg, yg, t00, t01,
-                                       t10, t11, cx, cy, k, mid, half, ecx, ecy, dist)
+        fx, fy, mm, e1, e2 = _run_rule(
+            W,
+            method,
+            n,
+            law,
+            s22,
+            ib,
+            lx,
+            ly,
+            xg,
+            yg,
+            t00,
+            t01,
+            t10,
+            t11,
+            cx,
+            cy,
+            k,
+            mid,
+            half,
+            ecx,
+            ecy,
+            dist,
+        )
         used += n - 1 if branch else n + 1
         if _estimate(e1, e2) <= tol:
             return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used
@@ -818,9 +1068,30 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
     mid = 0.5 * (a_plus + a_minus)
     half = 0.5 * (a_plus - a_minus)
     inside = q <= 1.0
-    fx, fy, mm, nev, status = _adaptive(inside, -0.5 * math.pi, 0.5 * math.pi, tol, law, s22,
-                                        ib, lx, ly, xg, yg, t00, t01, t10, t11, cx, cy, ecx,
-                                        ecy, dist, mid, half)
+    fx, fy, mm, nev, status = _adaptive(
+        inside,
+        -0.5 * math.pi,
+        0.5 * math.pi,
+        tol,
+        law,
+        s22,
+        ib,
+        lx,
+        ly,
+        xg,
+        yg,
+        t00,
+        t01,
+        t10,
+        t11,
+        cx,
+        cy,
+        ecx,
+        ecy,
+        dist,
+        mid,
+        half,
+    )
     return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_OUTSIDE, used + nev
 
 
@@ -837,8 +1108,7 @@ def wrench_body_info(bn, law, xg, yg, t00, t01, t10, t11, vx, vy, omega, tol):
     number of integrand evaluations (all attempts included).
     """
     K = wrench_constants(bn, law, xg, yg, _tensor_norm(t00, t01, t10, t11), tol)
-    return wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol,
-                       np.empty(WORKSPACE_SHAPE))
+    return wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, np.empty(WORKSPACE_SHAPE))
 
 
 @jit(error_model="numpy")
@@ -869,8 +1139,9 @@ def wrench_body(bn, law, xg, yg, t00, t01, t10, t11, vx, vy, omega, tol):
     status : int
         0 converged, 1 error target not reached.
     """
-    fx, fy, m, status, _, _ = wrench_body_info(bn, law, xg, yg, t00, t01, t10, t11, vx, vy,
-                                               omega, tol)
+    fx, fy, m, status, _, _ = wrench_body_info(
+        bn, law, xg, yg, t00, t01, t10, t11, vx, vy, omega, tol
+    )
     return fx, fy, m, status
 
 
@@ -909,8 +1180,9 @@ def wrench_world(bn, law, xg, yg, t00, t01, t10, t11, body_frame, phi, vx, vy, o
     Returns (Fx, Fy, M, status) with M about G, counter-clockwise positive.
     """
     K = wrench_constants(bn, law, xg, yg, _tensor_norm(t00, t01, t10, t11), tol)
-    return wrench_world_fast(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol,
-                             np.empty(WORKSPACE_SHAPE))
+    return wrench_world_fast(
+        law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol, np.empty(WORKSPACE_SHAPE)
+    )
 
 
 @jit(error_model="numpy")

@@ -23,22 +23,30 @@ new attempt each time |du/dτ| has halved) until |du/dτ| < ``utol``. The remain
 added in closed form (t += s/|u·A|, x += s² u₁/(2|u·A|), ...); its error is
 O(s·|u − u*|/|u·A|), below 1e-12 s₀ in t since s < 1e-8 s₀ and |u − u*| ≲ 1e-4/|λ|.
 
-Footprints (MODEL §10): the same integrator serves every patch. ``par[P_SHAPE]`` selects
-the wrench at run time: the ellipse kernel (:mod:`slidespin._kernel`) or the exact footprint
-kernel (:func:`slidespin._footprint_kernel.wrench_world`), which reads the footprint's edges,
-circles and constants (``fe``, ``fc``, ``geo``) passed alongside ``par`` through every
-function here (empty (0, 4) arrays for an ellipse, so one compiled integrator serves both).
-For a footprint the length unit a is its extent, and the classification of MODEL §9 uses
-the flags ``P_CSYM`` (pure spin about G is invariant: a centrally symmetric pressure) and
-``P_RSYM`` (axisymmetric: a centred disk or ring under uniform pressure) in place of the
-ellipse's tests on b/a and G.
+Footprints (MODEL §10): one integrator source serves every patch. Every compiled function
+here takes the patch as the argument ``fp``: ``None`` for an ellipse (the kernel of
+:mod:`slidespin._kernel`), or the tuple (edges, circles, geo) of the exact footprint kernel
+(:func:`slidespin._footprint_kernel.wrench_world`; :func:`footprint_argument`). numba compiles
+one specialisation per argument type, on first use, and caches each on disk; the kernel is
+chosen when numba types the call of :func:`accelerations` (an ``overload`` on the type of
+``fp``), so the ellipse specialisation holds no footprint code and the footprint one none of
+the ellipse kernel but its constants (:func:`kernel_constants`, small): an ellipse-only user
+compiles only the ellipse, a footprint compiles on its first use. (Two other routes were tried and rejected: a jitted wrench function passed as an
+argument, or a factory closing over it, specialise as well but miss numba's disk cache in
+every new process, numba 0.68: the dispatcher's type carries a per-process identity.) For a
+footprint the length unit a is its extent, and the classification of MODEL §9 uses the flags
+``P_CSYM`` (pure spin about G is invariant: a centrally symmetric pressure) and ``P_RSYM``
+(axisymmetric: a centred disk or ring under uniform pressure) in place of the ellipse's tests
+on b/a and G.
 
 Speed: the wrench kernel's per-body constants and its workspace are set up once per
 trajectory (:func:`slidespin._kernel.wrench_constants`, :func:`~slidespin._kernel.workspace`),
 so a right-hand side costs one call of the kernel's inner function; the batch
-(:func:`integrate_many`) runs :func:`integrate` itself, without records, under ``prange``.
-Compile time: the Newton polish is inlined and every call site passes non-literal arguments,
-so the first call compiles each function once.
+(:func:`integrate_many`) runs :func:`integrate_fp` itself, without records, under ``prange``.
+Compile time: each function is compiled once per kind of patch. Nothing large is inlined by
+numba (an inlined function is typed and lowered again at every call site; LLVM still inlines
+where it pays), and no call passes an integer literal (numba would compile the callee once
+per value: ``np.int64(40)``, not ``40``).
 """
 
 from __future__ import annotations
@@ -50,7 +58,7 @@ from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from ._footprint_kernel import NGEO
 from ._footprint_kernel import wrench_world as fp_wrench_world
-from ._jit import jit, prange
+from ._jit import is_none_type, jit, overload, prange
 from ._kernel import WORKSPACE_SHAPE, wrench_constants, wrench_world_fast
 
 _NS = _dop.N_STAGES  # 12
@@ -78,8 +86,16 @@ SHAPE_ELLIPSE, SHAPE_FOOTPRINT = 0, 1
 
 # integration status codes (indices into slidespin.outcomes.STATUSES; ST_SPIRAL is reported
 # as "stopped" with the ending "spiral")
-(ST_STOPPED, ST_MAX_STEPS, ST_STEP_TOO_SMALL, ST_AT_REST, ST_MARGINAL, ST_SADDLE,
- ST_NON_FINITE, ST_SPIRAL) = range(8)
+(
+    ST_STOPPED,
+    ST_MAX_STEPS,
+    ST_STEP_TOO_SMALL,
+    ST_AT_REST,
+    ST_MARGINAL,
+    ST_SADDLE,
+    ST_NON_FINITE,
+    ST_SPIRAL,
+) = range(8)
 #: |u₃| or |u₁₂| at or below which a terminal direction is pure sliding or pure spinning
 ENDING_TOL = 1e-6
 #: |λ|/|u·A| below which a fixed point is marginal: the direction approaches it like
@@ -103,34 +119,79 @@ SPIRAL_ARC = 3.0 * math.pi
 def kernel_constants(par):
     """The wrench kernel's per-body constants for the parameter vector ``par``."""
     t00, t01, t10, t11 = par[P_T00], par[P_T01], par[P_T10], par[P_T11]
-    return wrench_constants(par[P_BN], int(par[P_LAW]), par[P_XG], par[P_YG],
-                            math.sqrt(t00 * t00 + t01 * t01 + t10 * t10 + t11 * t11),
-                            par[P_WTOL])
+    return wrench_constants(
+        par[P_BN],
+        int(par[P_LAW]),
+        par[P_XG],
+        par[P_YG],
+        math.sqrt(t00 * t00 + t01 * t01 + t10 * t10 + t11 * t11),
+        par[P_WTOL],
+    )
 
 
-@jit(error_model="numpy", inline="always")
-def accelerations(par, kc, W, fe, fc, geo, u1, u2, u3, phi):
+def accelerations(par, kc, W, fp, u1, u2, u3, phi):
     """A(u, φ) = (Fx, Fy, M/k)/(m g) in natural units, and the wrench status.
 
     ``kc`` are the kernel constants (:func:`kernel_constants`), ``W`` a kernel workspace;
-    ``fe``, ``fc``, ``geo`` the footprint's edges, circles and constants (natural units, unit
-    load), read only if ``par[P_SHAPE]`` is ``SHAPE_FOOTPRINT`` (one compiled function serves
-    both shapes: a runtime branch). The footprint kernel is exact (status 0).
+    ``fp`` the footprint: ``None`` for the ellipse kernel, else the tuple (edges, circles,
+    geo) of the exact footprint kernel (natural units, unit load), which is exact (status 0).
+    From compiled code the choice is made when numba types the call (``overload`` on the
+    type of ``fp``): each compiled caller holds one kernel. This body runs as Python only
+    (``NUMBA_DISABLE_JIT=1``).
     """
+    if fp is None:
+        return _ellipse_accelerations(par, kc, W, fp, u1, u2, u3, phi)
+    return _footprint_accelerations(par, kc, W, fp, u1, u2, u3, phi)
+
+
+def _ellipse_accelerations(par, kc, W, fp, u1, u2, u3, phi):
     k = par[P_K]
-    if par[P_SHAPE] == SHAPE_FOOTPRINT:
-        fx, fy, m = fp_wrench_world(fe, fc, geo, par[P_T00], par[P_T01], par[P_T10],
-                                    par[P_T11], par[P_BODY] != 0.0, phi, u1, u2, u3 / k)
-        return fx, fy, m / k, 0
     fx, fy, m, st = wrench_world_fast(
-        int(par[P_LAW]), kc, par[P_T00], par[P_T01], par[P_T10], par[P_T11],
-        par[P_BODY] != 0.0, phi, u1, u2, u3 / k, par[P_WTOL], W,
+        int(par[P_LAW]),
+        kc,
+        par[P_T00],
+        par[P_T01],
+        par[P_T10],
+        par[P_T11],
+        par[P_BODY] != 0.0,
+        phi,
+        u1,
+        u2,
+        u3 / k,
+        par[P_WTOL],
+        W,
     )
     return fx, fy, m / k, st
 
 
+def _footprint_accelerations(par, kc, W, fp, u1, u2, u3, phi):
+    k = par[P_K]
+    fe, fc, geo = fp
+    fx, fy, m = fp_wrench_world(
+        fe,
+        fc,
+        geo,
+        par[P_T00],
+        par[P_T01],
+        par[P_T10],
+        par[P_T11],
+        par[P_BODY] != 0.0,
+        phi,
+        u1,
+        u2,
+        u3 / k,
+    )
+    return fx, fy, m / k, 0
+
+
+@overload(accelerations, jit_options={"error_model": "numpy"})
+def _accelerations_of_type(par, kc, W, fp, u1, u2, u3, phi):
+    """Compiled calls of :func:`accelerations`: the kernel for the type of ``fp``."""
+    return _ellipse_accelerations if is_none_type(fp) else _footprint_accelerations
+
+
 @jit(error_model="numpy")
-def _rhs(par, kc, W, fe, fc, geo, y, out):
+def _rhs(par, kc, W, fp, y, out):
     """Right-hand side of the regularised system; returns the wrench status."""
     u1 = y[0]
     u2 = y[1]
@@ -139,7 +200,7 @@ def _rhs(par, kc, W, fe, fc, geo, y, out):
     u1 *= inv
     u2 *= inv
     u3 *= inv
-    ax, ay, am, st = accelerations(par, kc, W, fe, fc, geo, u1, u2, u3, y[7])
+    ax, ay, am, st = accelerations(par, kc, W, fp, u1, u2, u3, y[7])
     ua = u1 * ax + u2 * ay + u3 * am
     out[0] = ax - ua * u1
     out[1] = ay - ua * u2
@@ -156,11 +217,30 @@ def _rhs(par, kc, W, fe, fc, geo, y, out):
 
 
 @jit(error_model="numpy")
+def _rhs_once(par, fp, y, out):
+    return _rhs(par, kernel_constants(par), np.empty(WORKSPACE_SHAPE), fp, y, out)
+
+
+def footprint_argument(par, fe, fc, geo):
+    """The footprint argument ``fp`` of the compiled functions for the parameter vector
+    ``par`` and the footprint arrays of :meth:`slidespin.Body.kernel_params`: ``None`` for an
+    ellipse (the arrays are ignored), else the tuple (edges, circles, geo) as C-contiguous
+    float arrays (the types every caller passes: one compiled specialisation)."""
+    if par[P_SHAPE] != SHAPE_FOOTPRINT:
+        return None
+    return (
+        np.ascontiguousarray(fe, dtype=np.float64),
+        np.ascontiguousarray(fc, dtype=np.float64),
+        np.ascontiguousarray(geo, dtype=np.float64),
+    )
+
+
 def rhs(par, fe, fc, geo, y, out):
     """Right-hand side of the regularised system (one call; the integrator keeps its
     constants and workspace); returns the wrench status. ``fe``, ``fc``, ``geo``: the
-    footprint arrays (:func:`no_footprint` for an ellipse)."""
-    return _rhs(par, kernel_constants(par), np.empty(WORKSPACE_SHAPE), fe, fc, geo, y, out)
+    footprint arrays (:func:`no_footprint` for an ellipse; ignored unless ``par[P_SHAPE]`` is
+    ``SHAPE_FOOTPRINT``)."""
+    return _rhs_once(par, footprint_argument(par, fe, fc, geo), y, out)
 
 
 def no_footprint():
@@ -168,8 +248,8 @@ def no_footprint():
     return np.empty((0, 4)), np.empty((0, 4)), np.zeros(NGEO)
 
 
-@jit(error_model="numpy", inline="always")
-def tangent_jacobian(par, kc, W, fe, fc, geo, uu, phi, t1, t2, jac, g):
+@jit(error_model="numpy")
+def tangent_jacobian(par, kc, W, fp, uu, phi, t1, t2, jac, g):
     """Jacobian of the sphere flow G(u) = A − (u·A)u in the tangent plane at the unit vector
     ``uu`` (frozen φ), by central differences; fills the tangent basis ``t1``, ``t2``, the 2×2
     ``jac`` (in that basis) and G(uu) in ``g``.
@@ -179,8 +259,11 @@ def tangent_jacobian(par, kc, W, fe, fc, geo, uu, phi, t1, t2, jac, g):
     one call site keeps the compiled code small (scalar loops: array expressions compile
     slowly).
     """
-    ax = 0 if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2]) else (
-        1 if abs(uu[1]) <= abs(uu[2]) else 2)
+    ax = (
+        0
+        if abs(uu[0]) <= abs(uu[1]) and abs(uu[0]) <= abs(uu[2])
+        else (1 if abs(uu[1]) <= abs(uu[2]) else 2)
+    )
     d = uu[ax]
     for i in range(3):
         t1[i] = (1.0 if i == ax else 0.0) - d * uu[i]
@@ -200,7 +283,7 @@ def tangent_jacobian(par, kc, W, fe, fc, geo, uu, phi, t1, t2, jac, g):
         sg = 0.0 if m == 0 else (1.0 if m % 2 == 1 else -1.0)
         for i in range(3):
             yp[i] = uu[i] + sg * hd * (t1[i] if j == 0 else t2[i])
-        _rhs(par, kc, W, fe, fc, geo, yp, out)
+        _rhs(par, kc, W, fp, yp, out)
         if m == 0:
             for i in range(3):
                 g[i] = out[i]
@@ -223,8 +306,8 @@ def _lam_max(jac):
     return 0.5 * tr + (math.sqrt(disc) if disc > 0.0 else 0.0)
 
 
-@jit(error_model="numpy", inline="always")
-def polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter, max_dist):
+@jit(error_model="numpy")
+def polish_fixed_point(par, kc, W, fp, u, phi, max_iter, max_dist):
     """Newton iteration for the fixed point u* of the sphere flow at frozen φ (MODEL §5–6).
 
     Starts from ``u`` (close to u*); works in the tangent plane of the sphere with the
@@ -251,10 +334,11 @@ def polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter, max_dist):
     # the circle of pure-sliding fixed points of an isotropic tensor)
     fp_floor = -1.0
     if par[P_SHAPE] == SHAPE_FOOTPRINT:
-        fp_floor = 1e-15 * math.sqrt(par[P_T00] ** 2 + par[P_T01] ** 2 + par[P_T10] ** 2
-                                     + par[P_T11] ** 2)
+        fp_floor = 1e-15 * math.sqrt(
+            par[P_T00] ** 2 + par[P_T01] ** 2 + par[P_T10] ** 2 + par[P_T11] ** 2
+        )
     for it in range(max_iter):
-        tangent_jacobian(par, kc, W, fe, fc, geo, uu, phi, t1, t2, jac, g)
+        tangent_jacobian(par, kc, W, fp, uu, phi, t1, t2, jac, g)
         r0 = g[0] * t1[0] + g[1] * t1[1] + g[2] * t1[2]
         r1 = g[0] * t2[0] + g[1] * t2[1] + g[2] * t2[2]
         det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
@@ -302,7 +386,7 @@ def _err_norm(K, h, scale):
 
 
 @jit(error_model="numpy")
-def _equator_point(par, kc, W, fe, fc, geo, u, phi):
+def _equator_point(par, kc, W, fp, u, phi):
     """The pure-sliding fixed point (u₃ = 0) nearest the direction ``u``: Newton's method on
     the tangential component of the flow along the invariant circle u₃ = 0 (pure translation:
     the moment about G vanishes there). Returns (u*, converged)."""
@@ -319,7 +403,7 @@ def _equator_point(par, kc, W, fe, fc, geo, u, phi):
             yp[0] = math.cos(t)
             yp[1] = math.sin(t)
             yp[2] = 0.0
-            _rhs(par, kc, W, fe, fc, geo, yp, out)
+            _rhs(par, kc, W, fp, yp, out)
             gv[m] = -math.sin(t) * out[0] + math.cos(t) * out[1]
         der = (gv[2] - gv[0]) / (2.0 * hd)
         if der == 0.0 or not math.isfinite(der):
@@ -336,7 +420,7 @@ def _equator_point(par, kc, W, fe, fc, geo, u, phi):
 
 
 @jit(error_model="numpy")
-def _meridian_point(par, kc, W, fe, fc, geo, u, phi, max_dist):
+def _meridian_point(par, kc, W, fp, u, phi, max_dist):
     """Under rotational symmetry, the fixed point on the meridian through ``u`` (the great
     circle through the pole and u): Newton's method on the flow's component along the
     meridian, at the fixed azimuth of u. Every rotation of a fixed point about the vertical is
@@ -361,7 +445,7 @@ def _meridian_point(par, kc, W, fe, fc, geo, u, phi, max_dist):
             yp[0] = ca * ct
             yp[1] = ca * sn
             yp[2] = sa
-            _rhs(par, kc, W, fe, fc, geo, yp, out)
+            _rhs(par, kc, W, fp, yp, out)
             gv[m] = -sa * ct * out[0] - sa * sn * out[1] + ca * out[2]
         der = (gv[2] - gv[0]) / (2.0 * hd)
         if der == 0.0 or not math.isfinite(der):
@@ -394,7 +478,7 @@ def rotationally_symmetric(par):
 
 
 @jit(error_model="numpy")
-def _rel_lam(par, kc, W, fe, fc, geo, us, phi):
+def _rel_lam(par, kc, W, fp, us, phi):
     """λ/|u·A| at the unit vector ``us``: the largest real part of the eigenvalues of the
     sphere flow's tangent Jacobian over the decay rate of ln s (MODEL §9). Under rotational
     symmetry (:func:`rotationally_symmetric`) the neutral eigenvalue along the circle of fixed
@@ -403,8 +487,8 @@ def _rel_lam(par, kc, W, fe, fc, geo, us, phi):
     t2 = np.empty(3)
     jac = np.empty((2, 2))
     g = np.empty(3)
-    tangent_jacobian(par, kc, W, fe, fc, geo, us, phi, t1, t2, jac, g)
-    if rotationally_symmetric(par) and us[0] ** 2 + us[1] ** 2 > ENDING_TOL ** 2:
+    tangent_jacobian(par, kc, W, fp, us, phi, t1, t2, jac, g)
+    if rotationally_symmetric(par) and us[0] ** 2 + us[1] ** 2 > ENDING_TOL**2:
         lam = jac[0, 0] + jac[1, 1]
     else:
         lam = _lam_max(jac)
@@ -414,12 +498,12 @@ def _rel_lam(par, kc, W, fe, fc, geo, us, phi):
     yp[2] = us[2]
     yp[7] = phi
     out = np.empty(NY)
-    _rhs(par, kc, W, fe, fc, geo, yp, out)
+    _rhs(par, kc, W, fp, yp, out)
     return lam / max(abs(out[3]), 1e-300)
 
 
 @jit(error_model="numpy")
-def terminal_point(par, kc, W, fe, fc, geo, u, phi, symmetric, max_iter, max_dist):
+def terminal_point(par, kc, W, fp, u, phi, symmetric, max_iter, max_dist):
     """The fixed point of the sphere flow that the direction ``u`` approaches, at frozen φ.
 
     Newton's method first (:func:`polish_fixed_point`, or :func:`_meridian_point` under
@@ -431,31 +515,30 @@ def terminal_point(par, kc, W, fe, fc, geo, u, phi, symmetric, max_iter, max_dis
     """
     u12 = math.sqrt(u[0] ** 2 + u[1] ** 2)
     if rotationally_symmetric(par) and u12 > 1e-3:
-        us, ok = _meridian_point(par, kc, W, fe, fc, geo, u, phi, max_dist)
+        us, ok = _meridian_point(par, kc, W, fp, u, phi, max_dist)
         calls = 120 + 6
     else:
-        us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, u, phi, max_iter,
-                                              max_dist)
+        us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, u, phi, max_iter, max_dist)
         calls = 5 * nit + 6
     if ok:
-        return us, True, _rel_lam(par, kc, W, fe, fc, geo, us, phi), calls
+        return us, True, _rel_lam(par, kc, W, fp, us, phi), calls
     cand = np.zeros(3)
     found = False
     if symmetric and u12 < 0.1:
         cand[2] = 1.0 if u[2] >= 0.0 else -1.0
         found = True
     elif abs(u[2]) < 0.1:
-        cand, found = _equator_point(par, kc, W, fe, fc, geo, u, phi)
+        cand, found = _equator_point(par, kc, W, fp, u, phi)
         calls += 120
     if found:
-        rel = _rel_lam(par, kc, W, fe, fc, geo, cand, phi)
+        rel = _rel_lam(par, kc, W, fp, cand, phi)
         if abs(rel) < MARGIN:
             return cand, True, rel, calls
     return us, False, math.nan, calls
 
 
 @jit(error_model="numpy")
-def _pole_eigen(par, kc, W, fe, fc, geo, sign, phi, out_v):
+def _pole_eigen(par, kc, W, fp, sign, phi, out_v):
     """The linearised flow of the velocity direction (u₁, u₂) at the pole u = (0, 0, sign),
     frozen at φ: returns 0 where its Jacobian J is a multiple of the identity (the direction is
     frozen), 1 where the eigenvalues are complex (it keeps turning), 2 where they are real and
@@ -467,7 +550,7 @@ def _pole_eigen(par, kc, W, fe, fc, geo, sign, phi, out_v):
     t2 = np.empty(3)
     jac = np.empty((2, 2))
     g = np.empty(3)
-    tangent_jacobian(par, kc, W, fe, fc, geo, pole, phi, t1, t2, jac, g)
+    tangent_jacobian(par, kc, W, fp, pole, phi, t1, t2, jac, g)
     # J in the (u₁, u₂) coordinates: t1 = e_x, t2 = ±e_y
     sy = t2[1]
     a = jac[0, 0]
@@ -482,7 +565,7 @@ def _pole_eigen(par, kc, W, fe, fc, geo, sign, phi, out_v):
     yp[2] = sign
     yp[7] = phi
     out = np.empty(NY)
-    _rhs(par, kc, W, fe, fc, geo, yp, out)
+    _rhs(par, kc, W, fp, yp, out)
     rate = abs(out[3])  # the decay rate of ln s: the scale of every eigenvalue here
     if not math.isfinite(size) or size <= 1e-6 * rate:
         return 0
@@ -502,7 +585,7 @@ def _pole_eigen(par, kc, W, fe, fc, geo, sign, phi, out_v):
 
 
 @jit(error_model="numpy")
-def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_pre, phi):
+def _pure_spin_direction(par, kc, W, fp, u_pre, phi_pre, phi):
     """ϑ* of a pure-spinning ending (MODEL §9), or NaN where the velocity has no limiting
     direction.
 
@@ -524,7 +607,7 @@ def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_pre, phi):
     ev = np.empty(4)
     vx = u_pre[0]
     vy = u_pre[1]
-    kind = _pole_eigen(par, kc, W, fe, fc, geo, sign, phi_pre, ev)
+    kind = _pole_eigen(par, kc, W, fp, sign, phi_pre, ev)
     if kind == 1:
         return math.nan  # complex eigenvalues: the direction keeps turning
     if kind == 2:
@@ -534,7 +617,7 @@ def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_pre, phi):
             vx, vy = -vx, -vy
     n = int(abs(phi - phi_pre) / 0.02) + 1 if phi != phi_pre else 0
     for i in range(1, n + 1):
-        kind = _pole_eigen(par, kc, W, fe, fc, geo, sign, phi_pre + (phi - phi_pre) * i / n, ev)
+        kind = _pole_eigen(par, kc, W, fp, sign, phi_pre + (phi - phi_pre) * i / n, ev)
         if kind == 1:
             return math.nan
         if kind == 2:
@@ -547,26 +630,42 @@ def _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_pre, phi):
 
 @jit(error_model="numpy")
 def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
-    """:func:`integrate_on` for an elliptic patch (no footprint arrays)."""
-    fe = np.empty((0, 4))
-    fc = np.empty((0, 4))
-    geo = np.zeros(NGEO)
-    return integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max,
-                        record)
+    """:func:`integrate_fp` for an elliptic patch (``fp`` = None)."""
+    return integrate_fp(par, None, y0, rtol, atol, utol, s_drop, max_steps, h_max, record)
+
+
+def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+    """:func:`integrate_fp` for the parameter vector ``par`` and the footprint arrays ``fe``,
+    ``fc``, ``geo`` of :meth:`slidespin.Body.kernel_params` (edges (n, 4), circles (m, 4)
+    and kernel constants (``NGEO``,) in natural units; ignored for an ellipse): the compiled
+    specialisation of the patch's kind runs, compiled on its first use."""
+    return integrate_fp(
+        par,
+        footprint_argument(par, fe, fc, geo),
+        y0,
+        rtol,
+        atol,
+        utol,
+        s_drop,
+        max_steps,
+        h_max,
+        record,
+    )
 
 
 @jit(error_model="numpy")
-def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     """Integrate the regularised system from ``y0`` to the stop and classify the stop.
 
     Parameters
     ----------
     par : ndarray (NPAR,)
         Body, law and tensor parameters (natural units).
-    fe, fc, geo : ndarray
-        The footprint's edges (n, 4), circles (m, 4) and kernel constants (``NGEO``,) in
-        natural units (lengths in the extent, unit load), read if ``par[P_SHAPE]`` is
-        ``SHAPE_FOOTPRINT``; empty (0, 4) arrays and any ``geo`` for an ellipse.
+    fp : None or tuple of ndarray
+        The patch: ``None`` for an ellipse (the kernel of :mod:`slidespin._kernel`), else the
+        footprint's edges (n, 4), circles (m, 4) and kernel constants (``NGEO``,) in natural
+        units (lengths in the extent, unit load; :func:`footprint_argument`). numba compiles
+        one specialisation per kind, on first use.
     y0 : ndarray (9,)
         Initial (u, ln s, t, x, y, φ, ℓ); u need not be normalised.
     rtol, atol : float
@@ -648,7 +747,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     kc = kernel_constants(par)
     W = np.empty(WORKSPACE_SHAPE)
     fails = 0
-    fails += _rhs(par, kc, W, fe, fc, geo, y, f)
+    fails += _rhs(par, kc, W, fp, y, f)
     nrhs = 1
     cap = 256 if record else 1
     rec = np.empty((cap, NY + 1))
@@ -709,14 +808,14 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                     for j in range(st):
                         acc += _A[st, j] * K[j, i]
                     yt[i] = y[i] + h * acc
-                fails += _rhs(par, kc, W, fe, fc, geo, yt, K[st])
+                fails += _rhs(par, kc, W, fp, yt, K[st])
                 nrhs += 1
             for i in range(NY):
                 acc = 0.0
                 for j in range(_NS):
                     acc += _B[j] * K[j, i]
                 ynew[i] = y[i] + h * acc
-            fails += _rhs(par, kc, W, fe, fc, geo, ynew, K[_NS])
+            fails += _rhs(par, kc, W, fp, ynew, K[_NS])
             nrhs += 1
             for i in range(NY):
                 scale[i] = atol + max(abs(y[i]), abs(ynew[i])) * rtol
@@ -792,8 +891,9 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                 # near a hyperbolic fixed point: Newton gives u* to ~1e-13 at once, where the
                 # explicit integrator would take many more steps to converge
                 du_polish = du
-                us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, y[:3], y[7],
-                                                      12, POLISH_MAX_MOVE)
+                us, ok, lam, nit = polish_fixed_point(
+                    par, kc, W, fp, y[:3], y[7], np.int64(12), POLISH_MAX_MOVE
+                )
                 nrhs += 5 * nit
                 if ok and lam < 0.0:
                     status = ST_STOPPED
@@ -811,15 +911,21 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                 # (exponentially, or algebraically at a boundary) and that the direction has
                 # come to half its distance from (or within 1e-3) is the limit; a direction
                 # that sweeps SPIRAL_ARC with no attracting point near turns for ever
-                us, ok, rel, calls = terminal_point(par, kc, W, fe, fc, geo, y[:3], y[7],
-                                                    symmetric, 40, 0.5)
+                us, ok, rel, calls = terminal_point(
+                    par, kc, W, fp, y[:3], y[7], symmetric, np.int64(40), 0.5
+                )
                 nrhs += calls
                 attracting = ok and rel <= MARGIN
                 if attracting:
-                    d = math.sqrt((y[0] - us[0]) ** 2 + (y[1] - us[1]) ** 2
-                                  + (y[2] - us[2]) ** 2)
-                    same = math.sqrt((us[0] - us_prev[0]) ** 2 + (us[1] - us_prev[1]) ** 2
-                                     + (us[2] - us_prev[2]) ** 2) < 1e-8
+                    d = math.sqrt((y[0] - us[0]) ** 2 + (y[1] - us[1]) ** 2 + (y[2] - us[2]) ** 2)
+                    same = (
+                        math.sqrt(
+                            (us[0] - us_prev[0]) ** 2
+                            + (us[1] - us_prev[1]) ** 2
+                            + (us[2] - us_prev[2]) ** 2
+                        )
+                        < 1e-8
+                    )
                     if not same:
                         d_ref = d
                         for i in range(3):
@@ -839,8 +945,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                         spiral_slides = True
                         status = ST_SPIRAL
                         break
-                    if extra_arcs < 20 and (u3_max < 0.7 * u3_max_prev
-                                            or abs(y[2]) < 0.5 * u3_max):
+                    if extra_arcs < 20 and (u3_max < 0.7 * u3_max_prev or abs(y[2]) < 0.5 * u3_max):
                         extra_arcs += 1
                         u3_max_prev = u3_max
                         arc = 0.0
@@ -852,22 +957,22 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     if status == ST_STOPPED:
         # classify the stop from the fixed point and its eigenvalues (MODEL §9)
         u_pre = u_dir
-        us, ok, rel, calls = terminal_point(par, kc, W, fe, fc, geo, y[:3], y[7], symmetric,
-                                            60, 0.5)
+        us, ok, rel, calls = terminal_point(
+            par, kc, W, fp, y[:3], y[7], symmetric, np.int64(60), 0.5
+        )
         nrhs += calls
         if ok:
             y[0] = us[0]
             y[1] = us[1]
             y[2] = us[2]
         else:
-            rel = _rel_lam(par, kc, W, fe, fc, geo, y[:3], y[7])
+            rel = _rel_lam(par, kc, W, fp, y[:3], y[7])
         term[2] = rel
         u12 = math.sqrt(y[0] * y[0] + y[1] * y[1])
         if ln_inv3 == ln_inv3 and abs(y[2]) > ENDING_TOL:
             # the spin came back from round-off: what the motion does down to that energy is
             # to approach pure sliding (the invariant set ω = 0)
-            us, ok, lam, nit = polish_fixed_point(par, kc, W, fe, fc, geo, u_inv3, y[7], 40,
-                                                  0.05)
+            us, ok, lam, nit = polish_fixed_point(par, kc, W, fp, u_inv3, y[7], np.int64(40), 0.05)
             src = us if ok else u_inv3
             n12 = math.sqrt(src[0] ** 2 + src[1] ** 2)
             y[0] = src[0] / n12
@@ -886,8 +991,10 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
         elif rel > -MARGIN:
             if rel < MARGIN:
                 status = ST_MARGINAL
-            elif not ((not spin0 and abs(y[2]) <= ENDING_TOL)
-                      or (not slide0 and symmetric and u12 <= ENDING_TOL)):
+            elif not (
+                (not spin0 and abs(y[2]) <= ENDING_TOL)
+                or (not slide0 and symmetric and u12 <= ENDING_TOL)
+            ):
                 # held on an unstable fixed point (other than by an exact invariance)
                 status = ST_SADDLE
                 term[1] = y[3] - ln_s0
@@ -896,7 +1003,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
             y[0] = 0.0
             y[1] = 0.0
             y[2] = 1.0 if y[2] >= 0.0 else -1.0
-            term[0] = _pure_spin_direction(par, kc, W, fe, fc, geo, u_pre, phi_dir, y[7])
+            term[0] = _pure_spin_direction(par, kc, W, fp, u_pre, phi_dir, y[7])
             nrhs += 5
         else:
             if abs(y[2]) <= ENDING_TOL:
@@ -904,7 +1011,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
                 y[1] /= u12
                 y[2] = 0.0
             term[0] = math.atan2(y[1], y[0])
-        fails += _rhs(par, kc, W, fe, fc, geo, y, f)
+        fails += _rhs(par, kc, W, fp, y, f)
     # β*/a = k u₁₂/u₃ of the reported direction (computed here, so that simulate() and the
     # batch agree to the last bit)
     u12 = math.hypot(y[0], y[1])
@@ -963,10 +1070,13 @@ def stop_direction(yend):
     return u12, theta
 
 
-@jit(parallel=True, error_model="numpy")
-def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop,
-                   max_steps):
-    """:func:`integrate_on` for many independent cases in parallel (no per-step records).
+def integrate_many(pars, *args):
+    """:func:`integrate_fp` for many independent cases in parallel (no per-step records).
+
+    Called as ``integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol,
+    s_drop, max_steps)``: variadic after ``pars`` so that callers may splat the footprint
+    arrays (``*fps``) as they did into the compiled function this wrapper replaced (mypy maps
+    a splatted tuple of unknown length onto every remaining named parameter).
 
     Parameters
     ----------
@@ -989,8 +1099,61 @@ def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, uto
         Stop states (a body at rest keeps its initial state, with ln s = −inf).
     status, n_steps, n_rhs, n_wrench_failed : ndarray (N,) of int64
     term : ndarray (N, 4)
-        ϑ*, the saddle's ln(s/s₀), λ/|u·A| and β*/a per case (see :func:`integrate`).
+        ϑ*, the saddle's ln(s/s₀), λ/|u·A| and β*/a per case (see :func:`integrate_fp`).
+
+    Notes
+    -----
+    The elliptic and the footprint cases run through the specialisation of their kind
+    (:func:`_integrate_many` with ``fps`` None or the footprint arrays), each compiled on its
+    first use; a batch that mixes both runs twice, on each kind's rows (the cases are
+    independent: the same results as one run).
     """
+    edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop, max_steps = args
+    c = np.ascontiguousarray
+    pars = c(pars, dtype=np.float64)
+    init = c(init, dtype=np.float64)
+    foot = pars[:, P_SHAPE] == SHAPE_FOOTPRINT
+    args = (rtol, atol, utol, s_drop, max_steps)
+    fps = (
+        c(edges, dtype=np.float64),
+        c(circles, dtype=np.float64),
+        c(eidx, dtype=np.int64),
+        c(cidx, dtype=np.int64),
+        c(geos, dtype=np.float64),
+    )
+    if not foot.any():
+        return _integrate_many(pars, None, init, *args)
+    if foot.all():
+        return _integrate_many(pars, fps, init, *args)
+    n = pars.shape[0]
+    out = (
+        np.empty((n, NY)),
+        np.empty(n, dtype=np.int64),
+        np.empty(n, dtype=np.int64),
+        np.empty(n, dtype=np.int64),
+        np.empty(n, dtype=np.int64),
+        np.empty((n, 4)),
+    )
+    ell = np.flatnonzero(~foot)
+    res = _integrate_many(c(pars[ell]), None, c(init[ell]), *args)
+    for whole, part in zip(out, res):
+        whole[ell] = part
+    fpi = np.flatnonzero(foot)
+    res = _integrate_many(
+        c(pars[fpi]),
+        fps[:2] + (c(fps[2][fpi]), c(fps[3][fpi]), c(fps[4][fpi])),
+        c(init[fpi]),
+        *args,
+    )
+    for whole, part in zip(out, res):
+        whole[fpi] = part
+    return out
+
+
+@jit(parallel=True, error_model="numpy")
+def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
+    """:func:`integrate_many` for cases of one kind: ``fps`` is None (ellipses) or the tuple
+    (edges, circles, eidx, cidx, geos) of its arguments."""
     n = init.shape[0]
     out = np.empty((n, NY))
     status = np.empty(n, dtype=np.int64)
@@ -1000,8 +1163,9 @@ def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, uto
     terms = np.empty((n, 4))
     no_record = max_steps < 0
     for i in prange(n):
-        y0 = initial_state(pars[i], init[i, 0], init[i, 1], init[i, 2], init[i, 3],
-                           init[i, 4], init[i, 5])
+        y0 = initial_state(
+            pars[i], init[i, 0], init[i, 1], init[i, 2], init[i, 3], init[i, 4], init[i, 5]
+        )
         if y0[3] == -np.inf:
             for c in range(NY):
                 out[i, c] = y0[c]
@@ -1012,15 +1176,23 @@ def integrate_many(pars, edges, circles, eidx, cidx, geos, init, rtol, atol, uto
             for c in range(4):
                 terms[i, c] = math.nan
             continue
-        # ``no_record`` is False as a variable: a literal False would compile integrate() a
+        # ``no_record`` is False as a variable: a literal False would compile integrate_fp() a
         # second time, specialised, instead of reusing the version simulate() compiled
-        # contiguous copies: the same array types as simulate() passes (one compilation)
-        fe = np.ascontiguousarray(edges[eidx[i, 0]:eidx[i, 1]])
-        fc = np.ascontiguousarray(circles[cidx[i, 0]:cidx[i, 1]])
-        geo = np.ascontiguousarray(geos[i])
-        yend, st, ns, nr, nf, rate, rec, term = integrate_on(
-            pars[i], fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
-        )
+        if fps is None:
+            yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
+                pars[i], None, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
+            )
+        else:
+            edges, circles, eidx, cidx, geos = fps
+            # contiguous copies: the same array types as simulate() passes (one compilation)
+            fp = (
+                np.ascontiguousarray(edges[eidx[i, 0] : eidx[i, 1]]),
+                np.ascontiguousarray(circles[cidx[i, 0] : cidx[i, 1]]),
+                np.ascontiguousarray(geos[i]),
+            )
+            yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
+                pars[i], fp, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
+            )
         for c in range(NY):
             out[i, c] = yend[c]
         for c in range(4):
