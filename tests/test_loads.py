@@ -285,7 +285,7 @@ def test_tables_of_a_case_file():
     assert ramp.wrench(5.0) == (0.0, 0.0, 0.0) and not ramp.is_constant
     slope = incline_from_table({"angle_deg": 30.0, "downhill_deg": 90.0})
     assert slope.angle == pytest.approx(math.pi / 6) and slope.downhill == pytest.approx(math.pi / 2)
-    for bad, match in [({"fx": 1.0, "force": 2.0}, "unknown key 'force'"),
+    for bad, match in [({"fx": 1.0, "force": 2.0}, "both 'force' and 'fx'"),
                        ({"fx": 1.0, "times": [0.0, 1.0]}, "not both"),
                        ({"times": [0.0, 1.0], "profile_fx": [0.0, 1.0]}, "profile_fy"),
                        ({"times": [1.0, 0.0], "profile_fx": [0, 1], "profile_fy": [0, 1]},

@@ -72,8 +72,8 @@ def test_block_on_slope(friction, downhill, mu):
 
 def test_block_on_slope_load_factor_closed_form():
     # λ* of the downhill pull on the level plane is μ / tan α for any footprint
-    pull = (BOX.mass * G * math.sin(0.5), 0.0, 0.0)
-    lam = statics.load_factor(BOX, ISO, pull, incline=Incline(0.5))
+    # the incline adds the downhill pull itself: no other load
+    lam = statics.load_factor(BOX, ISO, (0.0, 0.0, 0.0), incline=Incline(0.5))
     assert lam == pytest.approx(MU / math.tan(0.5), rel=1e-12)
 
 

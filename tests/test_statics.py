@@ -212,7 +212,9 @@ def test_incline_scales_the_set_by_cos_alpha():
     disk = ss.Body(ss.Circle(0.05), ss.UniformPressure(), 1.0)
     fr = ss.FrictionTensor.isotropic(0.4)
     w = (1.0, 0.5, 0.02)
-    lev = load_factor(disk, fr, w, g=G)
+    # the incline adds its downhill pull m g sin α (along +X here) and scales C by cos α
+    pull = disk.mass * G * math.sin(0.5)
+    lev = load_factor(disk, fr, (w[0] + pull, w[1], w[2]), g=G)
     tilt = load_factor(disk, fr, w, g=G, incline=Incline(0.5))
     assert tilt == pytest.approx(lev * math.cos(0.5), rel=1e-12)
 

@@ -147,6 +147,15 @@ class LimitSurface:
     body: Body | None = field(default=None, repr=False)
     friction: FrictionTensor | None = field(default=None, repr=False)
 
+    def __repr__(self) -> str:
+        return (
+            f"LimitSurface(n={self.vx.size}, phi={self.phi:.6g} rad, "
+            f"normal_load={self.normal_load:.6g} N, length={self.length:.6g} m, "
+            f"ellipsoid_error={self.ellipsoid_error:.3g}, "
+            f"quartic_error={self.quartic_error:.3g}, "
+            f"max_dissipation_gap={float(np.max(self.dissipation_gap)):.3g})"
+        )
+
     @property
     def twists(self) -> np.ndarray:
         """(n, 3) unit twists (vx, vy, ℓ ω)."""

@@ -81,7 +81,14 @@ from .statics import (
     static_support,
 )
 
-__all__ = ["GAUGE_TOL", "LoadedTrajectory", "simulate_loaded"]
+__all__ = [
+    "GAUGE_TOL",
+    "SCAN_POINTS_MAX",
+    "SCAN_STEP_MAX",
+    "LoadedTrajectory",
+    "default_scan_step",
+    "simulate_loaded",
+]
 
 _TOL = 1e-13
 _STOP_DROP = 1e-13  # the stop is declared when s has fallen below this fraction of its scale
@@ -93,6 +100,12 @@ _STIFF = 100.0  # relaxation-to-growth ratio above which a slip phase is integra
 #: decision to slip and the onset it leads to consistent (a load held exactly at the
 #: threshold would otherwise start, stall and start again at the same instant)
 GAUGE_TOL = 1e-12
+#: cap [s] on the default step of the scan for a time-varying load leaving C (a callable
+#: load whose excursion beyond C lasts longer than the step is always found)
+SCAN_STEP_MAX = 1e-3
+#: the default scan takes at most this many points per stick phase (so for stick phases
+#: longer than SCAN_STEP_MAX × SCAN_POINTS_MAX = 200 s the default step is duration/2e5)
+SCAN_POINTS_MAX = 200_000
 
 
 @dataclass(frozen=True)
@@ -156,6 +169,24 @@ class LoadedTrajectory:
     incline: Incline | None = field(default=None, repr=False)
     g: float = 9.81
     message: str = ""
+
+    def __repr__(self) -> str:
+        f = self.final_state
+        t_stop = self.t_stop
+        return (
+            f"LoadedTrajectory(status={self.status!r}, ending={self.ending!r}, "
+            f"t_final={float(self.t[-1]):.6g} s, t_stop={t_stop:.6g} s, "
+            f"phases={len(self.phases)}, final_position=({f.x:.6g} m, {f.y:.6g} m, "
+            f"{f.phi:.6g} rad), n_points={self.t.size})"
+        )
+
+    def _repr_html_(self) -> str:
+        """A short summary table for notebooks (no arrays)."""
+        from .simulate import _html_table
+
+        items = self.summary()
+        items["phases"] = len(self.phases)
+        return _html_table("LoadedTrajectory", items)
 
     @property
     def stick_intervals(self) -> list[tuple[float, float]]:
@@ -263,21 +294,34 @@ class _Problem:
         self.v_unit = math.sqrt(self.a * g)
         self.tw = TwistWrench(body, friction, _TOL)  # the wrench of any patch
         self.k = self.tw.k
-        self.nf = 1.0 if incline is None else incline.normal_factor
-        if incline is None:
+        # a constant tilt keeps its factors as numbers (bit for bit the fixed-plane run)
+        self.fixed_tilt = incline is None or incline.is_constant
+        self.nf = 1.0 if incline is None or not self.fixed_tilt else incline.normal_factor
+        if incline is None or not self.fixed_tilt:
             self.grav = (0.0, 0.0)
         else:
             dx, dy = incline.direction
             self.grav = (incline.downhill_factor * dx, incline.downhill_factor * dy)
-        self.constant = load is None or load.is_constant
+        self.constant = (load is None or load.is_constant) and self.fixed_tilt
         self.n_rhs = 0
         self.failure = ""
         self._support = {}
         self._d_last = None
 
+    def nf_at(self, t):
+        """cos α at the natural time t (the constant cos α for a fixed tilt)."""
+        if self.fixed_tilt:
+            return self.nf
+        return self.incline.normal_factor_at(t * self.t_unit)
+
     def b(self, t, phi):
         """Applied accelerations (Qx, Qy, T_G/k)/(m g), scaled natural coordinates."""
-        bx, by = self.grav
+        if self.fixed_tilt:
+            bx, by = self.grav
+        else:
+            sa = self.incline.downhill_factor_at(t * self.t_unit)
+            dx, dy = self.incline.direction
+            bx, by = sa * dx, sa * dy
         bm = 0.0
         if self.load is not None:
             qx, qy, mz = self.load.wrench(t * self.t_unit, phi, self.body.mass_centre)
@@ -295,9 +339,9 @@ class _Problem:
                 )
         return bx, by, bm
 
-    def friction_acc(self, u1, u2, u3, phi):
+    def friction_acc(self, u1, u2, u3, phi, t=0.0):
         fx, fy, m = self.tw(phi, u1, u2, u3 / self.k)
-        nf = self.nf
+        nf = self.nf if self.fixed_tilt else self.nf_at(t)
         return fx * nf, fy * nf, m * nf / self.k
 
     def rhs(self, tau, y):
@@ -307,7 +351,7 @@ class _Problem:
         u1 *= inv
         u2 *= inv
         u3 *= inv
-        ax, ay, am = self.friction_acc(u1, u2, u3, y[7])
+        ax, ay, am = self.friction_acc(u1, u2, u3, y[7], y[4])
         bx, by, bm = self.b(y[4], y[7])
         xx, xy, xm = ax + bx, ay + by, am + bm
         ux = u1 * xx + u2 * xy + u3 * xm
@@ -356,10 +400,15 @@ class _Problem:
             self._support[key] = static_support(self.tw, self.friction, key)
         return self._support[key]
 
-    def gauge(self, t, phi):
-        """γ = 1/λ*: the body at rest holds iff γ ≤ 1."""
+    def w_nat(self, t, phi):
+        """The applied wrench per unit normal load, in the coordinates of C (natural)."""
         bx, by, bm = self.b(t, phi)
-        w = np.array([bx, by, bm * self.k]) / self.nf
+        return np.array([bx, by, bm * self.k]) / self.nf_at(t)
+
+    def gauge(self, t, phi, w=None):
+        """γ = 1/λ*: the body at rest holds iff γ ≤ 1."""
+        if w is None:
+            w = self.w_nat(t, phi)
         if not w.any():
             return 0.0
         lam, self._d_last = _load_factor_nat(self.support(phi), w, self._d_last)
@@ -376,7 +425,7 @@ class _Problem:
             self.friction,
             phi,
             b,
-            self.nf,
+            self.nf_at(t),
             self.support(phi),
             slipping=True,
             d0=self._d_last,
@@ -412,7 +461,11 @@ def simulate_loaded(
     load : Load or None
         Applied force and torque, constant or functions of time.
     incline : Incline or None
-        Tilted plane: normal load m g cos α, downhill pull m g sin α.
+        Tilted plane: normal load m g cos α, downhill pull m g sin α. The tilt may vary in
+        time (``Incline(angle=callable)`` or :meth:`Incline.piecewise_linear`): then both
+        vary, static friction holds while the wrench is in C scaled by cos α(t), and the
+        slip starts when the load leaves it (for a block with isotropic friction, when
+        tan α(t) passes μ).
     t_end : float or None
         End of the run [s]. ``None`` is allowed for a constant load that static friction
         can hold at the initial angle: the run then ends when the body sticks (or after
@@ -433,9 +486,25 @@ def simulate_loaded(
     max_phases : int
         Budget of stick and slip phases.
     scan_step : float or None
-        Step [s] of the scan for the moment a time-varying load overcomes static friction;
-        default (t_end − t)/400. An excursion of the load beyond C shorter than this may
-        be missed. Brent's method then locates the moment to ``time_tol``.
+        Step [s] of the scan for the moment a time-varying load overcomes static friction
+        (the gauge of C at the load exceeds 1; Brent's method then locates the moment to
+        ``time_tol``). Default :func:`default_scan_step`: (t_end − t)/400, but at most
+        SCAN_STEP_MAX = 1 ms (for a stick phase longer than 200 s, at most 2e5 points:
+        (t_end − t)/2e5). What is guaranteed:
+
+        * a load built by :meth:`Load.piecewise_linear` (every ``[load]`` profile of a case
+          file) on a plane of fixed tilt, or a tilt built by
+          :meth:`Incline.piecewise_linear` alone: the test looks at every sample time and,
+          the gauge being convex (resp. monotone) in between, never misses the load
+          leaving C, however briefly (the grid is then not used unless ``scan_step`` is
+          given);
+        * any other load varying in time (a callable): every excursion beyond C that
+          lasts longer than the scan step is found; a shorter one may be missed. Give a
+          smaller ``scan_step`` for short pulses, or tabulate the load.
+
+        Between grid points at which the load stays far inside C the gauge is bounded
+        (triangle inequality of the gauge of C) instead of computed, so a fine grid
+        costs little more than evaluating the load.
     time_tol : float
         Accuracy [s] of the located stick-to-slip times.
     slow_speed : float
@@ -489,7 +558,9 @@ def simulate_loaded(
     prob.b(0.0, initial_state.phi)  # the load's range, before any work
     if t_end is None:
         if not prob.constant:
-            raise ValueError("t_end = None is invalid for a time-varying load; give t_end [s]")
+            raise ValueError(
+                "t_end = None is invalid for a load or a tilt varying in time; give t_end [s]"
+            )
         t_end_n = math.inf
     else:
         t_end_n = v.positive("t_end", t_end, "s") / prob.t_unit
@@ -652,7 +723,7 @@ def simulate_loaded(
         ending = "moving_at_t_end"
         if prob.constant and status == "ok":
             u = arr[-1, 4:7] / speed_end
-            ax, ay, am = prob.friction_acc(u[0], u[1], u[2], arr[-1, 3])
+            ax, ay, am = prob.friction_acc(u[0], u[1], u[2], arr[-1, 3], arr[-1, 0])
             bx, by, bm = prob.b(arr[-1, 0], arr[-1, 3])
             acc = math.sqrt((ax + bx) ** 2 + (ay + by) ** 2 + (am + bm) ** 2)
             if acc * arr[-1, 0] < STEADY_TOL * speed_end:
@@ -660,13 +731,23 @@ def simulate_loaded(
     dx = (arr[-1, 1] - arr[0, 1]) * a
     dy = (arr[-1, 2] - arr[0, 2]) * a
     grav = 0.0
-    if incline is not None:
+    if incline is not None and incline.is_constant:
         gx, gy = incline.gravity_force(body.mass, g)
         grav = gx * dx + gy * dy
+    elif incline is not None:
+        # a tilt varying in time: the work of gravity depends on the path; it is the load
+        # work when gravity is the only applied load, and not separated otherwise
+        grav = float(wq[-1] - wq[0]) if load is None else math.nan
     energy_error = abs((ke[-1] - ke[0]) - (wf[-1] - wf[0]) - (wq[-1] - wq[0]))
-    phases_si = tuple((kind, float(t0 * tu), float(t1 * tu)) for kind, t0, t1 in phases)
+    t_si = arr[:, 0] * tu
+    phases_si = [(kind, float(t0 * tu), float(t1 * tu)) for kind, t0, t1 in phases]
+    if t_end is not None and abs(arr[-1, 0] - t_end_n) <= 1e-9 * t_end_n:
+        # the run reached t_end: report it exactly (t_end / t_unit × t_unit rounds)
+        t_si[-1] = float(t_end)
+        if phases_si and abs(phases_si[-1][2] / tu - t_end_n) <= 1e-9 * t_end_n:
+            phases_si[-1] = (phases_si[-1][0], phases_si[-1][1], float(t_end))
     return LoadedTrajectory(
-        t=arr[:, 0] * tu,
+        t=t_si,
         x=arr[:, 1] * a,
         y=arr[:, 2] * a,
         phi=arr[:, 3].copy(),
@@ -676,7 +757,7 @@ def simulate_loaded(
         kinetic_energy=ke,
         friction_work=wf,
         load_work=wq,
-        phases=phases_si,
+        phases=tuple(phases_si),
         ending=ending,
         status=status,
         energy_error=float(energy_error),
@@ -711,7 +792,7 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
 
     def slaved(t, phi):
         b = np.array(prob.b(t, phi))
-        acc = _friction_fun(prob, phi)
+        acc = _friction_fun(prob, phi, t)
         got = _onset_nat(acc, b, cache["u"], quick=True)
         if got is None:
             got = _onset_nat(acc, b, cache["u"], allow_negative=True)
@@ -779,16 +860,64 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow):
     return te, z[1:4].copy(), z[4:6].copy(), max(float(z[0]), 0.0), u, reason, rows
 
 
-def _friction_fun(prob, phi):
-    return lambda u: np.array(prob.friction_acc(u[0], u[1], u[2], phi))
+def _friction_fun(prob, phi, t):
+    return lambda u: np.array(prob.friction_acc(u[0], u[1], u[2], phi, t))
+
+
+def _knots_nat(prob, t0, t_end):
+    """Sample times of piecewise-linear loads and tilts in (t0, t_end], natural units."""
+    times = set()
+    for obj in (prob.load, prob.incline):
+        if obj is not None:
+            times.update(tk / prob.t_unit for tk in obj.knots)
+    return sorted(tk for tk in times if t0 < tk < t_end)
+
+
+def _exact_at_knots(prob):
+    """True when looking at the knots alone cannot miss the load leaving C.
+
+    A piecewise-linear load on a fixed plane is affine in t between knots (the body is at
+    rest, φ fixed), so the gauge γ of the convex set C at it is convex there and exceeds 1
+    somewhere in a segment only if it does at an end. A piecewise-linear tilt with no
+    other load gives γ = tan α(t) γ(d), monotone between knots.
+    """
+    load, inc = prob.load, prob.incline
+    if inc is None or inc.is_constant:
+        return load is not None and load.is_piecewise_linear
+    return load is None and inc.knots != ()
+
+
+def default_scan_step(duration: float) -> float:
+    """Default ``scan_step`` [s] of :func:`simulate_loaded` for a stick phase that may last
+    ``duration`` [s]: min(duration/400, max(SCAN_STEP_MAX, duration/SCAN_POINTS_MAX))."""
+    return min(duration / 400.0, max(SCAN_STEP_MAX, duration / SCAN_POINTS_MAX))
 
 
 def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
     """First time after t0 at which the gauge γ(t) exceeds 1 + GAUGE_TOL, or None (stays
-    stuck)."""
+    stuck).
+
+    γ is evaluated at every knot of a piecewise-linear load or tilt and (unless that is
+    exact, :func:`_exact_at_knots`) on a grid of step ``scan`` (natural units; default
+    :func:`default_scan_step`). Where the load has moved little from the last point at which
+    γ was computed, γ is bounded instead of computed: γ is a gauge of the symmetric convex
+    set C, so γ(w) ≤ γ(w₀) + Σᵢ |wᵢ − w₀ᵢ| γ(eᵢ) (the triangle inequality), and a point
+    with that bound below 1 is inside C without the minimisation.
+    """
     if prob.constant or math.isinf(t_end):
         return None
-    h = scan if scan is not None else (t_end - t0) / 400.0
+    exact = _exact_at_knots(prob)
+    points = _knots_nat(prob, t0, t_end)
+    if scan is not None or not exact:
+        h = (
+            scan
+            if scan is not None
+            else (default_scan_step((t_end - t0) * prob.t_unit) / prob.t_unit)
+        )
+        n = int(math.ceil((t_end - t0) / h))
+        grid = t0 + h * np.arange(1, n + 1)
+        points = np.union1d(grid[grid < t_end], np.asarray(points, dtype=float)).tolist()
+    points.append(t_end)
     memo = {}
 
     def f(tt):
@@ -799,13 +928,23 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
             memo[tt] = prob.gauge(tt, phi) - (1.0 + GAUGE_TOL)
         return memo[tt]
 
-    ta, fa = t0, f(t0)
-    while ta < t_end:
-        tb = min(ta + h, t_end)
+    fa = f(t0)
+    if fa > 0.0:  # pragma: no cover - γ > 1 at the scan start: slip at once
+        return t0
+    # the gauge of the unit wrenches, for the bound (C is symmetric: γ(−e) = γ(e))
+    sup = prob.support(phi)
+    ge = np.array([1.0 / _load_factor_nat(sup, e)[0] for e in np.eye(3)])
+    w_anchor, g_anchor = prob.w_nat(t0, phi), fa + 1.0 + GAUGE_TOL
+    ta = t0
+    for tb in points:
+        w = prob.w_nat(tb, phi)
+        bound = g_anchor + float(np.abs(w - w_anchor) @ ge)
+        if bound * (1.0 + 1e-8) < 1.0:  # certainly inside C
+            ta = tb
+            continue
         fb = f(tb)
         if fb > 0.0:
-            if fa > 0.0:  # pragma: no cover - γ > 1 at the scan start: slip at once
-                return ta
+            f(ta)  # the bracket's left end (inside C, perhaps only bounded so far)
             r = brentq(f, ta, tb, xtol=t_tol, rtol=1e-15, maxiter=200)
             # return a time at which the load is already beyond C (slip starts there)
             for _ in range(60):
@@ -813,7 +952,7 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol):
                     return min(r, tb)
                 r += t_tol
             return tb
-        ta, fa = tb, fb
+        ta, w_anchor, g_anchor = tb, w, fb + 1.0 + GAUGE_TOL
     return None
 
 
@@ -902,7 +1041,7 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
                 ye = sol.y_events[0][0].copy()
                 # closed-form tail of the approach to rest: t += s/|u·X|
                 u = ye[0:3] / np.linalg.norm(ye[0:3])
-                ax, ay, am = prob.friction_acc(u[0], u[1], u[2], ye[7])
+                ax, ay, am = prob.friction_acc(u[0], u[1], u[2], ye[7], ye[4])
                 bx, by, bm = prob.b(ye[4], ye[7])
                 rate = -(u[0] * (ax + bx) + u[1] * (ay + by) + u[2] * (am + bm))
                 s = math.exp(ye[3])

@@ -304,6 +304,7 @@ def simulate(
     load: None = ...,
     incline: None = ...,
     t_end: None = ...,
+    scan_step: float | None = ...,
 ) -> Trajectory: ...
 
 
@@ -320,6 +321,7 @@ def simulate(
     load: Load,
     incline: Incline | None = ...,
     t_end: float | None = ...,
+    scan_step: float | None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -336,6 +338,7 @@ def simulate(
     load: Load | None = ...,
     incline: Incline,
     t_end: float | None = ...,
+    scan_step: float | None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -352,6 +355,7 @@ def simulate(
     load: Load | None = ...,
     incline: Incline | None = ...,
     t_end: float,
+    scan_step: float | None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -368,6 +372,7 @@ def simulate(
     load: Load | None = ...,
     incline: Incline | None = ...,
     t_end: float | None = ...,
+    scan_step: float | None = ...,
 ) -> Trajectory | LoadedTrajectory: ...
 
 
@@ -383,6 +388,7 @@ def simulate(
     load: Load | None = None,
     incline: Incline | None = None,
     t_end: float | None = None,
+    scan_step: float | None = None,
 ) -> Trajectory | LoadedTrajectory:
     """Integrate the motion of ``body`` from ``initial_state`` until it stops.
 
@@ -418,6 +424,12 @@ def simulate(
         A tilted plane: normal load m g cos α, downhill pull m g sin α.
     t_end : float, optional
         Time bound [s]; a loaded body need not stop.
+    scan_step : float, optional
+        Step [s] of the scan for the moment a load varying in time (a callable) overcomes
+        static friction; see :func:`slidespin.loaded.simulate_loaded`. By default at most
+        :data:`slidespin.loaded.SCAN_STEP_MAX` = 1 ms (for runs up to 200 s); an excursion
+        of a callable load beyond static friction lasting longer than the step is always
+        found. Piecewise-linear loads are also checked at every sample time.
 
     Returns
     -------
@@ -447,6 +459,16 @@ def simulate(
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
         )
+    from .loads import Incline as _Incline
+    from .loads import Load as _Load
+
+    for name, val in (("g", g), ("rtol", rtol)):
+        if isinstance(val, (_Load, _Incline)):  # simulate(body, friction, state, load)
+            raise ValueError(
+                f"{name} = {v._short(val)} is invalid: the 4th and 5th positional arguments "
+                "are g and rtol; pass load=, incline=, t_end= by keyword, e.g. "
+                "simulate(body, friction, state, load=load, t_end=2.0)"
+            )
     if load is not None or incline is not None or t_end is not None:
         # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11)
         from .loaded import simulate_loaded
@@ -462,6 +484,12 @@ def simulate(
             rtol=rtol,
             max_steps=max_steps,
             max_step=max_step,
+            scan_step=scan_step,
+        )
+    if scan_step is not None:
+        raise ValueError(
+            f"scan_step = {v._short(scan_step)} is invalid without load, incline or t_end "
+            "(it only applies to the stick-slip engine); valid values: None"
         )
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol, max_steps = check_solver_options(rtol, max_steps)

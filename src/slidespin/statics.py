@@ -387,8 +387,22 @@ def _normal(incline, normal_factor):
     if incline is not None:
         if not isinstance(incline, Incline):
             raise ValueError(f"incline = {incline!r} is invalid; valid values: an Incline or None")
+        if not incline.is_constant:
+            raise ValueError(
+                f"incline = {v._short(incline, 80)} has a tilt that varies in time; valid "
+                "here: a fixed tilt (static friction is judged on one plane; give "
+                "Incline(incline.angle_at(t)) for the plane at time t)"
+            )
         return incline.normal_factor
     return v.positive("normal_factor", normal_factor)
+
+
+def _with_pull(body, w, incline, g):
+    """W_a plus gravity's downhill pull m g sin α d at G on an incline (MODEL §11)."""
+    if incline is None:
+        return w
+    gx, gy = incline.gravity_force(body.mass, g)
+    return np.array([w[0] + gx, w[1] + gy, w[2]])
 
 
 def support_function(
@@ -496,15 +510,17 @@ def load_factor(
     body, friction : Body, FrictionTensor
         The body and its friction tensor.
     applied_wrench : (float, float, float)
-        W_a = (Qx [N], Qy [N], moment about G [N m]) in the fixed frame; gravity along a
-        slope included (:func:`slidespin.loads.applied_wrench` builds it).
+        W_a = (Qx [N], Qy [N], moment about G [N m]) in the fixed frame: the loads other
+        than gravity (``(0, 0, 0)`` asks whether the body holds on the slope alone).
     phi : float
         Body angle [rad].
     g : float
         Gravitational acceleration [m/s²].
     incline : Incline or None
-        Scales the normal load (and C) by cos α. Its downhill pull is *not* added here: it
-        belongs to ``applied_wrench``.
+        A plane of fixed tilt α (MODEL §11): the normal load, hence C, scales by cos α, and
+        gravity's downhill pull m g sin α d at G is added to ``applied_wrench``, as
+        :func:`slidespin.simulate` does. λ* then multiplies the total W_a + m g sin α d.
+        A tilt varying in time is refused (give the plane at one time).
 
     Returns
     -------
@@ -524,11 +540,19 @@ def load_factor(
     >>> box = Body(Rectangle(0.4, 0.3), UniformPressure(), mass=5.0)
     >>> round(load_factor(box, FrictionTensor(0.35, 0.35), (10.0, 0.0, 0.0), g=10.0), 12)
     1.75
+
+    On a slope gravity's pull is included: a block holds iff tan α ≤ μ, λ* = μ / tan α.
+
+    >>> from slidespin.loads import Incline
+    >>> round(load_factor(box, FrictionTensor(0.35, 0.35), (0.0, 0.0, 0.0),
+    ...                   incline=Incline(math.atan(0.25))), 12)
+    1.4
     """
     _check(body, friction)
     w = _wrench3("applied_wrench", applied_wrench)
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    w = _with_pull(body, w, incline, g)
     b = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", b):
         return math.inf
@@ -555,7 +579,9 @@ def can_stick(
     """Whether static friction can hold the body at rest under ``applied_wrench``.
 
     True iff −W_a ∈ C (MODEL §11), i.e. :func:`load_factor` ≥ 1: a load exactly at the
-    threshold is held. Arguments as in :func:`load_factor`.
+    threshold is held. Arguments as in :func:`load_factor`: with ``incline`` gravity's
+    downhill pull is included, so ``can_stick(body, friction, (0, 0, 0), incline=...)``
+    answers "does it hold on this slope?" (for isotropic friction: iff tan α ≤ μ).
 
     Examples
     --------
@@ -734,7 +760,8 @@ def onset(
     Parameters
     ----------
     body, friction, applied_wrench, phi, g, incline
-        As in :func:`load_factor`; ``applied_wrench`` includes the slope's downhill pull.
+        As in :func:`load_factor`; with ``incline`` gravity's downhill pull m g sin α d is
+        added to ``applied_wrench`` (the loads other than gravity).
 
     Returns
     -------
@@ -770,6 +797,7 @@ def onset(
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     phi = v.finite("phi", phi)
+    w = _with_pull(body, w, incline, g)
     tw = TwistWrench(body, friction, _TOL)
     wn = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", wn):

@@ -215,7 +215,8 @@ def compute_statics(
         try:
             load, incline = _load_objects(loads, i, given)
             tilt[i] = critical_tilt(body, fr, float(loads["incline_downhill"][i]), phi)
-            w = applied_wrench(body, 0.0, phi, load, incline, float(g[i]))
+            # load_factor adds the tilt's downhill pull itself (MODEL §11)
+            w = applied_wrench(body, 0.0, phi, load, None, float(g[i]))
             lam[i] = load_factor(body, fr, w, phi, float(g[i]), incline=incline)
         except (ValueError, RuntimeError) as exc:
             raise CaseError(i, exc) from exc
