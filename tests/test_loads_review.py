@@ -391,3 +391,33 @@ def test_limit_surface_repr_is_short():
     ls = limit_surface(BOX, ISO, n=400)
     text = repr(ls)
     assert len(text) < 400 and "array" not in text and "n=400" in text
+
+
+def test_tilt_profile_in_a_case_file(tmp_path):
+    # [incline] times + profile_angle_deg: α = 3° per second, downhill along +y
+    path = tmp_path / "tilt.toml"
+    path.write_text(
+        '[patch]\nshape = "rectangle"\nlength = 0.2\nwidth = 0.1\n[pressure]\nlaw = "uniform"\n'
+        "[friction]\nfx = 0.3\nfy = 0.3\n[body]\nmass = 1.0\n[initial]\n"
+        "[incline]\ntimes = [0.0, 10.0]\nprofile_angle_deg = [0.0, 30.0]\ndownhill_deg = 90.0\n"
+        "[solver]\nt_end = 7.0\n"
+    )
+    case = load_case(path)
+    rate = math.radians(3.0)
+    assert case.incline.angle_at(4.0) == pytest.approx(4.0 * rate, rel=1e-15)
+    tr = ss.simulate(
+        case.body, case.friction, case.initial_state, incline=case.incline, t_end=case.t_end
+    )
+    t_star = math.atan(MU) / rate
+    assert tr.phases[0][2] == pytest.approx(t_star, abs=1e-9)
+    v_end = _tilt_reference(lambda t: rate * t, t_star, 7.0)
+    assert tr.vy[-1] == pytest.approx(v_end, rel=1e-8) and abs(tr.vx[-1]) < 1e-12 * v_end
+    for bad, words in [
+        ({"times": [0.0, 1.0], "profile_angle_deg": [0.0, 95.0]}, ["profile_angle_deg", "[0, 90)"]),
+        ({"times": [0.0, 1.0], "profile_angle": [0.0, 2.0]}, ["profile_angle", "2.0"]),
+        ({"times": [0.0, 1.0], "profile_angle": [0.0, 0.1], "angle": 0.1}, ["not both"]),
+        ({"profile_angle": [0.0, 0.1]}, ["times"]),
+    ]:
+        with pytest.raises(ValueError) as info:
+            incline_from_table(bad)
+        assert all(w in str(info.value) for w in words), str(info.value)

@@ -98,6 +98,14 @@ class _Profile:
         vals = tuple(_interp(t, self.times, c) for c in self.columns)
         return vals if len(vals) > 1 else vals[0]
 
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, _Profile):
+            return NotImplemented
+        return self.times == other.times and self.columns == other.columns
+
+    def __hash__(self) -> int:
+        return hash((self.times, self.columns))
+
     def __repr__(self) -> str:
         return (
             f"<piecewise linear: {len(self.times)} samples over "
@@ -353,7 +361,7 @@ class Incline:
 
     @classmethod
     def piecewise_linear(
-        cls, times: ArrayLike, angles: ArrayLike, downhill: float = 0.0
+        cls, times: ArrayLike, angles: ArrayLike, downhill: float = 0.0, *, name: str = "angles"
     ) -> Incline:
         """A tilt interpolated linearly between samples, constant beyond the first and last.
 
@@ -365,6 +373,8 @@ class Incline:
             Tilt α [rad] at those times, each in [0, π/2).
         downhill : float
             Direction δ of steepest descent [rad].
+        name : str
+            Name of ``angles`` in error messages (a case file's key).
 
         Notes
         -----
@@ -373,15 +383,15 @@ class Incline:
         between samples, so the start of the slip is never missed.
         """
         t = v.real_array("times", times)
-        a = v.real_array("angles", angles)
+        a = v.real_array(name, angles)
         _check_times(t)
         if a.shape != t.shape:
             raise ValueError(
-                f"angles = {_show(np.atleast_1d(a))} is invalid; valid values: {t.size} "
+                f"{name} = {_show(np.atleast_1d(a))} is invalid; valid values: {t.size} "
                 "angles [rad], one per time"
             )
         for x in a:
-            _check_angle("angles", float(x))
+            _check_angle(name, float(x))
         return cls(_Profile(tuple(float(x) for x in t), tuple(float(x) for x in a)), downhill)
 
     @property
@@ -506,7 +516,15 @@ LOAD_KEYS = (
     "profile_torque",
 )
 #: keys of an ``[incline]`` table in a case file (see :func:`incline_from_table`)
-INCLINE_KEYS = ("angle", "angle_deg", "downhill", "downhill_deg")
+INCLINE_KEYS = (
+    "angle",
+    "angle_deg",
+    "downhill",
+    "downhill_deg",
+    "times",
+    "profile_angle",
+    "profile_angle_deg",
+)
 
 
 def _table_value(where: str, build: Callable[..., _T], *args: Any, **kwargs: Any) -> _T:
@@ -587,10 +605,17 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
     """Build an :class:`Incline` from an ``[incline]`` TOML table (``angle`` or ``angle_deg``,
     ``downhill`` or ``downhill_deg``; radians unless the key ends in ``_deg``).
 
+    A tilt varying in time takes ``times`` [s] with ``profile_angle`` [rad] or
+    ``profile_angle_deg`` at those times, interpolated linearly
+    (:meth:`Incline.piecewise_linear`), instead of ``angle``.
+
     Examples
     --------
     >>> incline_from_table({"angle_deg": 30.0}).downhill_factor  # doctest: +ELLIPSIS
     0.4999...
+    >>> rising = incline_from_table({"times": [0.0, 10.0], "profile_angle_deg": [0.0, 30.0]})
+    >>> round(math.degrees(rising.angle_at(5.0)), 9)
+    15.0
     """
     if not isinstance(table, dict):
         raise ValueError(f"[{where}] must be a table, got {table!r}")
@@ -614,6 +639,39 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
             if default is None:
                 raise ValueError(f"[{where}] is missing the required key 'angle' (or angle_deg)")
             return default
-        return v.finite(f"[{where}] {key}", table[key])
+        return v.finite(f"[{where}] {key}", _real(table[key]))
 
+    profile = [k for k in ("times", "profile_angle", "profile_angle_deg") if k in table]
+    if profile:
+        fixed = [k for k in ("angle", "angle_deg") if k in table]
+        if fixed:
+            raise ValueError(
+                f"[{where}] give either {fixed[0]!r} (a fixed tilt) or times/profile_angle "
+                "(a tilt varying in time), not both"
+            )
+        if "times" not in table:
+            raise ValueError(f"[{where}] is missing the required key 'times' of a profile")
+        if ("profile_angle" in table) == ("profile_angle_deg" in table):
+            raise ValueError(
+                f"[{where}] give one of 'profile_angle' [rad] or 'profile_angle_deg' with 'times'"
+            )
+        if "profile_angle_deg" in table:
+            deg = _table_value(where, v.real_array, "profile_angle_deg", table["profile_angle_deg"])
+            if np.any(deg >= 90.0) or np.any(deg < 0.0):
+                raise ValueError(
+                    f"[{where}] profile_angle_deg = {_show(deg)} is invalid; valid range: "
+                    "[0, 90) degrees"
+                )
+            angles: Any = np.radians(deg)
+            name = "profile_angle_deg (in rad)"
+        else:
+            angles, name = table["profile_angle"], "profile_angle"
+        return _table_value(
+            where,
+            Incline.piecewise_linear,
+            table["times"],
+            angles,
+            angle("downhill", 0.0),
+            name=name,
+        )
     return _table_value(where, Incline, angle("angle"), angle("downhill", 0.0))
