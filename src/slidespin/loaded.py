@@ -23,7 +23,12 @@ Stick and slip, exactly (no regularised friction):
   (:mod:`slidespin.statics`), to within GAUGE_TOL = 1e-12 (relative) of its boundary; for
   a time-varying load the moment W_a leaves C is the root of γ(t) − 1 − GAUGE_TOL, γ the
   gauge of C at W_a(t) (the inverse load factor), located by Brent's method to
-  ``time_tol`` after a scan of step ``scan_step``;
+  ``time_tol`` after a scan: at every knot of a piecewise-linear load or tilt (exact: γ is
+  convex between knots, so no excursion is missed) and, for callables, on a grid of step
+  ``scan_step`` (default at most SCAN_STEP_MAX = 1 ms; an excursion beyond C longer than
+  the step is always found, a shorter one may be missed);
+* a tilt may vary in time (``Incline(callable)``, :meth:`Incline.piecewise_linear`): the
+  factor cos α(t) of the friction accelerations and of C and the pull sin α(t) d follow it;
 * it starts in the onset direction u (A_a + A(u) = λ u, λ > 0; :func:`slidespin.statics.onset`);
   s grows linearly, s ≈ λ (t − t₀), so the slip starts analytically at a small s. A ramped
   load starts the body at the threshold, where λ = 0⁺ (computed as round-off of either
@@ -141,7 +146,9 @@ class LoadedTrajectory:
     energy_error : float
         |ΔKE − W_f − W_Q| [J] over the run (integration accuracy).
     gravity_work : float
-        m g sin α d·(r_end − r_0) [J] from the displacement alone (0 on a level plane).
+        m g sin α d·(r_end − r_0) [J] from the displacement alone (0 on a level plane). For
+        a tilt varying in time the work of gravity depends on the path: it is then the
+        integrated load work when gravity is the only applied load, NaN otherwise.
     n_rhs : int
         Right-hand-side evaluations.
     """
