@@ -8,9 +8,9 @@ pressure map, closed forms for the normalisation of rim-singular maps.
 from __future__ import annotations
 
 import math
-from fractions import Fraction
 import time
 import warnings
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -164,3 +164,31 @@ def test_existing_polygon_errors_kept():
         with pytest.raises(ValueError, match=word) as e:
             Polygon(verts)
         assert "np.float64" not in str(e.value)
+
+
+# ---------------------------------------------------------------------------------------------
+# P1-5: user maps with a square-root rim behaviour
+
+
+def test_hertz_shaped_map_matches_exact_hertz_disk():
+    r, load = 0.1, 10.0
+    disk = Disk(r)
+    hz = ss.PressureMap(lambda x, y: np.sqrt(np.clip(1 - (x**2 + y**2) / r**2, 0, None)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # accurate, so no warning either
+        for f in (ss.FrictionTensor(0.3, 0.3), ss.FrictionTensor(0.2, 0.5, 0.1)):
+            for vx, vy, om in [(0, 0, 1), (1, 0.5, 0), (0.03, 0.01, 1), (0.5, 0.2, 1)]:
+                w = ss.footprint_wrench(disk, hz, f, vx, vy, om, load=load)
+                e = ss.footprint_wrench(disk, ss.HertzPressure(), f, vx, vy, om, load=load)
+                assert abs(w.force_x - e.force_x) < 1e-8 * load
+                assert abs(w.force_y - e.force_y) < 1e-8 * load
+                assert abs(w.moment - e.moment) < 1e-8 * load * r
+    # the pure-spin moment in closed form: −(3π/16) μ P R (MODEL §3)
+    w = ss.footprint_wrench(disk, hz, ss.FrictionTensor(0.3, 0.3), 0, 0, 1, load=load)
+    assert abs(w.moment + 3 * math.pi / 16 * 0.3 * load * r) < 1e-10 * load * r
+
+
+def test_rough_map_warns():
+    kink = ss.PressureMap(lambda x, y: np.abs(x - 0.0123) + 0.01)
+    with pytest.warns(RuntimeWarning, match="reached only"):
+        ss.footprint_wrench(Disk(0.1), kink, ss.FrictionTensor(0.3, 0.3), 1, 0, 0)

@@ -25,6 +25,7 @@ checked exactly. A user map is checked at its quadrature nodes (:func:`area_rule
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -184,13 +185,32 @@ class PressureMap:
 # quadrature over the footprint (smooth integrands)
 
 
-def area_rule(footprint, n: int = AREA_RULE_NODES):
+def _unit_rule(n: int, graded: bool) -> tuple[np.ndarray, np.ndarray]:
+    """n Gauss–Legendre nodes and weights on [0, 1]; ``graded``: after the substitution
+    t = (1 − cos πs)/2, which turns √t, 1/√t (and the same at t = 1) into smooth functions
+    of s."""
+    x, w = np.polynomial.legendre.leggauss(n)
+    s = 0.5 * (x + 1.0)
+    ws = 0.5 * w
+    if not graded:
+        return s, ws
+    return 0.5 * (1.0 - np.cos(np.pi * s)), ws * 0.5 * np.pi * np.sin(np.pi * s)
+
+
+def area_rule(footprint, n: int = AREA_RULE_NODES, graded: bool = False):
     """Quadrature nodes and weights over the footprint, for smooth integrands.
 
     Polygons are triangulated (ear clipping) and each triangle gets the n × n collapsed
     Gauss–Legendre rule (exact for polynomials of degree 2n − 2); a ring r ≤ ρ ≤ R gets n
     Gauss–Legendre points in ρ and 2n + 2 equally spaced angles (exact for trigonometric
     degree 2n + 1).
+
+    With ``graded=True`` every Gauss–Legendre coordinate t ∈ [0, 1] (both of a triangle's,
+    a ring's radius) is first substituted t = (1 − cos πs)/2: the nodes crowd towards the
+    boundary as s², so that an integrand with a square-root edge behaviour, √d or 1/√d in
+    the distance d to a polygon side or a ring's rim (a Hertz- or Boussinesq-shaped map),
+    becomes smooth in s and is integrated to ~1e-12 (measured, n = 24), while smooth
+    integrands keep their spectral accuracy (no longer exact for polynomials).
 
     Returns
     -------
@@ -200,9 +220,7 @@ def area_rule(footprint, n: int = AREA_RULE_NODES):
         Positive weights [m²]; they add up to the area.
     """
     _check_footprint(footprint)
-    x, w = np.polynomial.legendre.leggauss(n)
-    x = 0.5 * (x + 1.0)
-    w = 0.5 * w
+    x, w = _unit_rule(n, graded)
     pts, wts = [], []
     for p in as_patches(footprint):
         if isinstance(p, Annulus):
@@ -259,25 +277,77 @@ def contains(footprint, xi, eta) -> np.ndarray:
 # the laws
 
 
-def map_scale(footprint, pmap: PressureMap) -> tuple[float, float, float]:
-    """(∫f dS, ∫f ξ dS, ∫f η dS) of the raw map f over the footprint (:func:`area_rule`)."""
-    pts, w = area_rule(footprint)
+#: default accuracy target of a map's normalisation (relative, and G relative to the extent)
+MAP_SCALE_TOL = 1e-9
+#: order of the second, coarser graded rule that checks :func:`map_scale`
+MAP_CHECK_NODES = 16
+
+
+def _map_values(pmap: PressureMap, pts: np.ndarray) -> np.ndarray:
+    """The raw map at the nodes ``pts``; a ``ValueError`` for a wrong shape, non-finite or
+    negative values."""
     f = pmap(pts[:, 0], pts[:, 1])
-    if f.shape != (len(w),) or not np.all(np.isfinite(f)):
+    if f.shape != (len(pts),):
         raise ValueError(
-            "pressure map: function(xi, eta) must return finite values of the shape of its "
-            f"inputs; got shape {f.shape}"
+            "pressure map: function(xi, eta) must return an array of the shape of its "
+            f"inputs; got shape {f.shape} for inputs of shape ({len(pts)},)"
+        )
+    if not np.all(np.isfinite(f)):
+        k = int(np.flatnonzero(~np.isfinite(f))[0])
+        raise ValueError(
+            f"pressure map: function(xi, eta) returned non-finite values, e.g. p = "
+            f"{float(f[k])!r} at (xi, eta) = ({float(pts[k, 0])!r}, {float(pts[k, 1])!r}) m; "
+            "valid values: finite p >= 0 on the footprint"
         )
     if np.any(f < 0.0):
         k = int(np.argmin(f))
         raise ValueError(
-            f"pressure map: p = {f[k]!r} < 0 at (xi, eta) = ({pts[k, 0]!r}, {pts[k, 1]!r}) m; "
-            "valid range: p >= 0 on the footprint"
+            f"pressure map: p = {float(f[k])!r} < 0 at (xi, eta) = ({float(pts[k, 0])!r}, "
+            f"{float(pts[k, 1])!r}) m; valid range: p >= 0 on the footprint"
         )
+    return f
+
+
+def map_scale(
+    footprint, pmap: PressureMap, tol: float = MAP_SCALE_TOL
+) -> tuple[float, float, float]:
+    """(∫f dS, ∫f ξ dS, ∫f η dS) of the raw map f over the footprint.
+
+    By the graded rule of :func:`area_rule` (``graded=True``, n = 24), which integrates
+    smooth maps and maps with a square-root edge behaviour (√d or 1/√d in the distance d to
+    a polygon side or a ring's rim: Hertz- and Boussinesq-shaped maps) to ~1e-12. Its error
+    is estimated by a second graded rule (n = :data:`MAP_CHECK_NODES`): where they differ by
+    more than ``tol`` (relative for ∫f, relative to ∫f × extent for the moments: G's
+    accuracy in units of the extent), a ``RuntimeWarning`` names the accuracy reached (a map
+    with a kink, a jump or another edge singularity inside or on the footprint).
+    """
+    pts, w = area_rule(footprint, graded=True)
+    f = _map_values(pmap, pts)
     total = float(w @ f)
     if not total > 0.0:
-        raise ValueError(f"pressure map: integral over the footprint = {total!r}; valid range: > 0")
-    return total, float(w @ (f * pts[:, 0])), float(w @ (f * pts[:, 1]))
+        raise ValueError(
+            f"pressure map: integral over the footprint = {total:.6g}; valid range: > 0"
+        )
+    out = (total, float(w @ (f * pts[:, 0])), float(w @ (f * pts[:, 1])))
+    pc, wc = area_rule(footprint, MAP_CHECK_NODES, graded=True)
+    fc = _map_values(pmap, pc)
+    check = (float(wc @ fc), float(wc @ (fc * pc[:, 0])), float(wc @ (fc * pc[:, 1])))
+    ext = footprint.extent
+    err = max(
+        abs(out[0] - check[0]) / total,
+        abs(out[1] - check[1]) / (total * ext),
+        abs(out[2] - check[2]) / (total * ext),
+    )
+    if err > tol:
+        warnings.warn(
+            f"pressure map: its normalisation and pressure centroid reached only ~{err:.1e} "
+            f"(two quadrature rules differ), not {tol:.1e}: the map is not smooth on the "
+            "footprint (a kink, a jump, or an edge behaviour other than sqrt(d) or "
+            "1/sqrt(d)); the load, G and the wrench carry that error",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+    return out
 
 
 def pressure_coefficients(footprint, pressure, load: float = 1.0) -> tuple[float, float, float]:
