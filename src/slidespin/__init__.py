@@ -8,8 +8,10 @@ with elliptic contact area and anisotropic friction"; the model as built, with t
 errata, is documented in docs/model.md.
 """
 
+from .batch import simulate_bodies, simulate_many
 from .body import Body, State
-from .footprint import Annulus, Disk, Pads, Polygon, Rectangle
+from .case import Case, load_case
+from .footprint import Annulus, Blade, Disk, Pads, Polygon, Rectangle
 from .footprint_pressure import PressureMap
 from .footprint_wrench import footprint_wrench
 from .friction import FrictionTensor
@@ -48,6 +50,11 @@ __all__ = [
     "BoussinesqPressure",
     "HertzPressure",
     "Polygon",
+    "Blade",
+    "Case",
+    "load_case",
+    "simulate_bodies",
+    "simulate_many",
     "Rectangle",
     "Disk",
     "Annulus",

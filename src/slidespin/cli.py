@@ -568,7 +568,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
         prog="slidespin",
         description="Sliding and spinning of a flat body on a plane under anisotropic dry "
-        "friction with an elliptic contact patch.",
+        "friction, on a contact patch of any shape (ellipse, polygon, rectangle, ring, pads).",
     )
     parser.add_argument("--version", action="version", version=f"slidespin {__version__}")
     parser.add_argument("--debug", action="store_true", help="show tracebacks of internal errors")

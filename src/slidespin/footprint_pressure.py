@@ -316,7 +316,7 @@ def map_scale(
     By the graded rule of :func:`area_rule` (``graded=True``, n = 24), which integrates
     smooth maps and maps with a square-root edge behaviour (√d or 1/√d in the distance d to
     a polygon side or a ring's rim: Hertz- and Boussinesq-shaped maps) to ~1e-12. Its error
-    is estimated by a second graded rule (n = :data:`MAP_CHECK_NODES`): where they differ by
+    is estimated by a second graded rule (n = ``MAP_CHECK_NODES`` = 16): where they differ by
     more than ``tol`` (relative for ∫f, relative to ∫f × extent for the moments: G's
     accuracy in units of the extent), a ``RuntimeWarning`` names the accuracy reached (a map
     with a kink, a jump or another edge singularity inside or on the footprint).
