@@ -192,3 +192,13 @@ def test_rough_map_warns():
     kink = ss.PressureMap(lambda x, y: np.abs(x - 0.0123) + 0.01)
     with pytest.warns(RuntimeWarning, match="reached only"):
         ss.footprint_wrench(Disk(0.1), kink, ss.FrictionTensor(0.3, 0.3), 1, 0, 0)
+
+
+def test_inertia_intervals_accepts_a_body():
+    # ring closed forms (isotropic): I1 = (R² + r²)/(4R²), I3 = (2/3)(R² + Rr + r²)/R²
+    r, big = 0.05, 0.1
+    f = ss.FrictionTensor(0.3, 0.3)
+    body = ss.Body(ss.Annulus(r, big), ss.UniformPressure(), 1.0)
+    i1, _, i3 = ss.inertia_intervals(body, f)
+    assert abs(i1 - (big**2 + r**2) / (4 * big**2)) < 1e-9
+    assert abs(i3 - 2 / 3 * (big**2 + big * r + r**2) / big**2) < 1e-9

@@ -840,14 +840,15 @@ def _richardson(values, factor):
 
 
 def inertia_intervals(
-    pressure: PressureLaw, friction: FrictionTensor, patch: Circle | Annulus | None = None
+    pressure, friction: FrictionTensor, patch: Circle | Annulus | None = None
 ) -> InertiaIntervals:
     """Boundaries (I₁, I₂, I₃) of Table 2, computed numerically from J(β) (MODEL §6).
 
     Parameters
     ----------
-    pressure : UniformPressure, BoussinesqPressure or HertzPressure
-        Pressure law on a circular patch.
+    pressure : UniformPressure, BoussinesqPressure, HertzPressure or Body
+        Pressure law on a circular patch; or a ``Body`` on a circle, disk or centred ring
+        (its law and patch are used; ``patch`` must then be None).
     friction : FrictionTensor
         Orthotropic friction (f = 0, principal axes along OX, OY) with μ = fy − fx ≥ 0.
     patch : Circle, Disk or Annulus, optional
@@ -874,6 +875,16 @@ def inertia_intervals(
     >>> [round(x, 6) for x in inertia_intervals(UniformPressure(), FrictionTensor(0.3, 0.3))]
     [0.25, 0.333333, 0.666667]
     """
+    from .body import Body
+
+    if isinstance(pressure, Body):  # inertia_intervals(body, friction), like its siblings
+        if patch is not None:
+            raise ValueError(
+                f"patch = {patch!r} is invalid with a Body; valid values: None (the body's "
+                "own patch)"
+            )
+        body = pressure
+        pressure, patch = body.pressure, body.patch  # type: ignore[assignment]
     _check_table2(pressure, friction)
     par = _circle_params(pressure, friction, patch)
     big = _j_values(par, np.array([100.0, 200.0, 400.0]))
