@@ -457,9 +457,6 @@ def test_blade_body():
     w = ss.friction_wrench(body, friction, 0.2, 0.1, 3.0, 0.4, g=9.81)
     ref = _reference_blade(BLADE, friction.matrix, "plane", 0.2, 0.1, 3.0, 0.4, 2.0 * 9.81)
     assert abs(w.moment - ref[2]) <= 1e-10 * 2.0 * 9.81 * 0.2
-    if not ss.body._BLADE_INTEGRATION:
-        with pytest.raises(ValueError, match="not yet with the compiled integrator"):
-            ss.simulate(body, friction, ss.State(omega=3.0))
     for law in (ss.LinearPressure(0.05, 0.0), ss.HertzPressure(), ss.BoussinesqPressure()):
         with pytest.raises(ValueError, match="pressure = .* is invalid"):
             ss.Body(BLADE, law, mass=1.0)
@@ -474,13 +471,8 @@ def test_blade_body():
         Blade(1e-3, centre=(1e4, 0.0))
 
 
-BLADE_INTEGRATION = pytest.mark.skipif(
-    not ss.body._BLADE_INTEGRATION,
-    reason="the compiled integrator does not take blades yet (slidespin.body._BLADE_INTEGRATION)",
-)
 
 
-@BLADE_INTEGRATION
 def test_blade_simulate_closed_forms():
     """Pure spin about the centre: I ω̇ = −μ m g L/4 with I = m L²/12, so t = L ω₀/(3 μ g);
     pure sliding: t = v₀/(μ g) (isotropic friction)."""
@@ -495,7 +487,6 @@ def test_blade_simulate_closed_forms():
     assert slide.t_stop == pytest.approx(math.hypot(1.0, 0.5) / (mu * g), rel=1e-9)
 
 
-@BLADE_INTEGRATION
 @pytest.mark.parametrize("inertia", [None, 2.0 * 0.13**2])
 def test_blade_terminal_ratio_closed_form(inertia):
     """The mixed ending (isotropic friction): the velocity of G across the blade and the ICR on
@@ -509,7 +500,6 @@ def test_blade_terminal_ratio_closed_form(inertia):
     assert abs(r.beta_stop) == pytest.approx(math.sqrt(length**2 / 4.0 - 2.0 * k2), rel=1e-8)
 
 
-@BLADE_INTEGRATION
 def test_blade_stop_time_is_the_limit_of_thin_rectangles():
     """The stop time of a sliding, spinning blade: thin rectangles approach it like (w/L)²."""
     body = ss.Body(Blade(0.4), ss.UniformPressure(), mass=2.0)

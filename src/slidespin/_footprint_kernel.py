@@ -85,6 +85,7 @@ import math
 
 import numpy as np
 
+from ._blade_kernel import blade_wrench_body
 from ._jit import jit
 from ._kernel import tensor_in_body
 
@@ -464,6 +465,23 @@ def wrench_body(edges, circles, geo, t00, t01, t10, t11, vx, vy, omega):
         Force in the body frame (units of the load) and moment about G (load × length),
         counter-clockwise positive. Zero at rest.
     """
+    if edges.shape[0] == 1:  # a blade (slidespin.footprint.Blade): the line-contact kernel
+        return blade_wrench_body(
+            edges[0, 0],
+            edges[0, 1],
+            edges[0, 2],
+            edges[0, 3],
+            geo[GEO_XG],
+            geo[GEO_YG],
+            geo[GEO_LOAD],
+            t00,
+            t01,
+            t10,
+            t11,
+            vx,
+            vy,
+            omega,
+        )
     ext = geo[GEO_EXT]
     xg = geo[GEO_XG]
     yg = geo[GEO_YG]

@@ -109,6 +109,9 @@ EPS_INVARIANT = 1e-9
 # arc of SPIRAL_ARC [rad] (one and a half turns of a great circle), it turns for ever: the
 # ω-limit set of the flow on the sphere is a closed orbit (Poincaré–Bendixson), a spiral stop
 LN_S_WINDOW = 30.0
+#: a direction that moved less than this over a whole window has converged even where no
+#: smooth fixed point is found (a kernel not differentiable there: a blade with the ICR on it)
+WIN_STILL = 1e-8
 #: [rad] a pure-spinning ending's ϑ* needs the body to have turned less than this after the
 #: vanishing velocity fell below 1e-6 of s (see :func:`_pure_spin_direction`)
 PHI_RESOLVED = 0.05
@@ -786,6 +789,7 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
     u_inv12 = np.zeros(3)
     # windows of LN_S_WINDOW in ln s once s < s_drop s₀: fixed-point search and spiral test
     ln_s_win = math.inf
+    u_win = np.zeros(3)  # the direction at the start of the current window
     arc = 0.0  # arc swept by u since the tail began or an attracting point was last seen
     u3_max = 0.0  # largest |u₃| over that arc, and over the arc before
     u3_max_prev = math.inf
@@ -903,6 +907,8 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
             u3_max = max(u3_max, abs(y[2]))
             if ln_s_win == math.inf:
                 ln_s_win = y[3] - LN_S_WINDOW
+                for i in range(3):
+                    u_win[i] = y[i]
                 arc = 0.0
                 u3_max = abs(y[2])
             elif y[3] < ln_s_win:
@@ -953,7 +959,21 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
                     else:
                         status = ST_SPIRAL
                         break
+                elif (
+                    not ok
+                    and math.sqrt(
+                        (y[0] - u_win[0]) ** 2 + (y[1] - u_win[1]) ** 2 + (y[2] - u_win[2]) ** 2
+                    )
+                    < WIN_STILL
+                ):
+                    # no smooth fixed point (a kernel that is not differentiable there, e.g.
+                    # the v ln|v| force of a blade with the ICR on it), but the direction has
+                    # not moved over a whole window: it has converged
+                    status = ST_STOPPED
+                    break
                 ln_s_win = y[3] - LN_S_WINDOW
+                for i in range(3):
+                    u_win[i] = y[i]
     if status == ST_STOPPED:
         # classify the stop from the fixed point and its eigenvalues (MODEL §9)
         u_pre = u_dir

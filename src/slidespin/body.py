@@ -38,12 +38,6 @@ __all__ = ["Body", "State", "check_body_friction"]
 
 _LAWS = (UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure)
 
-#: whether the compiled integrator takes a ``Blade``: it needs the footprint kernel to hand a
-#: one-edge footprint to :mod:`slidespin._blade_kernel` and an ending for the blade's
-#: non-smooth terminal motion (the ICR on the blade); until both are in, the integrating
-#: functions refuse blades (friction_wrench and footprint_wrench take them)
-_BLADE_INTEGRATION = False
-
 
 @dataclass(frozen=True, slots=True)
 class Body:
@@ -235,16 +229,6 @@ class Body:
         t = friction.matrix
         patch = self.patch
         if self.is_footprint and not isinstance(patch, Ellipse):  # the footprint kernel
-            if isinstance(patch, _fp.Blade) and not _BLADE_INTEGRATION:
-                raise ValueError(
-                    f"patch = {patch!r} works with friction_wrench and footprint_wrench, but not "
-                    "yet with the compiled integrator (simulate, simulate_many, "
-                    "terminal_states): a blade's mixed terminal motion has the ICR on the blade, "
-                    "where the wrench is not differentiable (the force along the blade goes like "
-                    "v ln(1/|v|)), which the integrator's ending analysis (MODEL §9) does not "
-                    "treat yet; valid values here: an area footprint (a thin Rectangle) or an "
-                    "ellipse"
-                )
             from .footprint_pressure import kernel_geometry, scaled_arrays, symmetry
 
             ell = self.length_unit
