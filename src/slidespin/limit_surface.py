@@ -8,8 +8,8 @@ twist is normal to it (maximum dissipation: −W(û)·û = h(û), the support fu
 an anisotropic tensor τ = −p 𝔽 ŵ is not of maximum dissipation and L may lie inside C;
 ``dissipation_gap`` = h(û) − (−W(û)·û) ≥ 0 reports by how much.
 
-Every area patch: the paper's ellipses and circles and the footprints of MODEL §10, not a
-``Blade`` (a line contact: refused with a ``ValueError``). The samples are
+Every patch: the paper's ellipses and circles and the footprints of MODEL §10, a
+``Blade`` (a line contact) included. The samples are
 :func:`slidespin.friction_wrench`'s exact wrenches; the support h is that of
 ``slidespin.statics.static_support``.
 

@@ -45,8 +45,8 @@ direction u relaxes in O(1) τ while the motion evolves over O(1/λ) τ), so the
 integrator is ``Radau`` (implicit, order 5) of :func:`scipy.integrate.solve_ivp`, which
 calls the compiled wrench kernel once per right-hand side.
 
-Every area patch: the ellipses and circles of the paper and the footprints of MODEL §10 (a
-``Blade``, a line contact, is refused with a ``ValueError``); the
+Every patch: the ellipses and circles of the paper and the footprints of MODEL §10 (a
+``Blade``, a line contact, included); the
 friction wrench comes from :class:`slidespin._twist_wrench.TwistWrench` (the elliptic or the
 exact footprint kernel) and the static-friction set C from
 ``slidespin.statics.static_support``. Natural units use the body's length unit

@@ -290,10 +290,11 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     draw_path(ax_path, traj, n_outlines, end_label=end_label)
     where = "path of the mass centre"
     if traj.incline is not None:
-        where += (
-            f" (plane tilted {math.degrees(traj.incline.angle):.4g}°, downhill "
-            f"{math.degrees(traj.incline.downhill):.4g}° from x)"
-        )
+        inc = traj.incline
+        a0 = math.degrees(inc.angle_at(0.0))
+        a1 = math.degrees(inc.angle_at(float(traj.t[-1])))
+        tilt = f"{a0:.4g}°" if inc.is_constant else f"{a0:.4g}°→{a1:.4g}°"
+        where += f" (plane tilted {tilt}, downhill {math.degrees(inc.downhill):.4g}° from x)"
     ax_path.set_title(where, fontsize=10)
 
     t = np.asarray(traj.t, dtype=float)
