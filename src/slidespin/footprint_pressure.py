@@ -419,7 +419,8 @@ def _check_nonnegative(arrays: FootprintArrays, coef, pressure, mean: float) -> 
         raise ValueError(
             f"LinearPressure(xi_c={pressure.xi_c!r}, eta_c={pressure.eta_c!r}) turns negative on "
             f"the footprint: p = {worst:.6g} Pa at (xi, eta) = ({where[0]:.6g}, {where[1]:.6g}) m; "
-            "valid range: a centroid for which p >= 0 everywhere (closer to the area centroid)"
+            "valid range: a centroid for which p >= 0 everywhere (closer to the area centroid "
+            f"({arrays.frame[0]:.6g}, {arrays.frame[1]:.6g}) m)"
         )
 
 
