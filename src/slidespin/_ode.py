@@ -81,6 +81,25 @@ P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range
 # invariant set), P_RSYM = 1 if it is axisymmetric about G (a centred disk or ring, uniform).
 # For an ellipse these three are 0, the arrays are empty and unused.
 P_SHAPE, P_CSYM, P_RSYM = 11, 12, 13
+
+
+def elliptic_args(par: np.ndarray) -> tuple:
+    """The elliptic kernel's body and tensor arguments from ``par``: (b/a, law, ξ_G, η_G,
+    t00, t01, t10, t11, body frame), in the order of :func:`slidespin._kernel.wrench_world`
+    and :func:`slidespin._kernel.wrench_array` (a Python helper, not compiled)."""
+    return (
+        par[P_BN],
+        int(par[P_LAW]),
+        par[P_XG],
+        par[P_YG],
+        par[P_T00],
+        par[P_T01],
+        par[P_T10],
+        par[P_T11],
+        par[P_BODY] != 0.0,
+    )
+
+
 NPAR = 14
 SHAPE_ELLIPSE, SHAPE_FOOTPRINT = 0, 1
 

@@ -59,17 +59,7 @@ class TwistWrench:
                 p[_ode.P_BODY] != 0.0,
             )
         else:
-            self._args = (
-                p[_ode.P_BN],
-                int(p[_ode.P_LAW]),
-                p[_ode.P_XG],
-                p[_ode.P_YG],
-                p[_ode.P_T00],
-                p[_ode.P_T01],
-                p[_ode.P_T10],
-                p[_ode.P_T11],
-                p[_ode.P_BODY] != 0.0,
-            )
+            self._args = (*_ode.elliptic_args(p),)
 
     def __call__(
         self, phi: float, vx: float, vy: float, omega: float

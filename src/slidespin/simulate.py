@@ -573,15 +573,7 @@ def simulate(
         )
     else:
         fx, fy, mm, _ = wrench_array(
-            par[_ode.P_BN],
-            int(par[_ode.P_LAW]),
-            par[_ode.P_XG],
-            par[_ode.P_YG],
-            par[_ode.P_T00],
-            par[_ode.P_T01],
-            par[_ode.P_T10],
-            par[_ode.P_T11],
-            par[_ode.P_BODY] != 0.0,
+            *_ode.elliptic_args(par),
             rows[:, 7].copy(),
             u1.copy(),
             u2.copy(),

@@ -153,15 +153,7 @@ def _wrench_nat(par, phi, vx, vy, omega):
     if getattr(par, "fp", None) is not None:
         return _fp_world(par, phi, vx, vy, omega)
     fx, fy, m, st = wrench_world(
-        par[_ode.P_BN],
-        int(par[_ode.P_LAW]),
-        par[_ode.P_XG],
-        par[_ode.P_YG],
-        par[_ode.P_T00],
-        par[_ode.P_T01],
-        par[_ode.P_T10],
-        par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0,
+        *_ode.elliptic_args(par),
         phi,
         vx,
         vy,
@@ -190,15 +182,7 @@ def _acc_array(par, phi, u1, u2, u3):
         fx, fy, m = _fp_world(par, ph, u1, u2, u3 / k)
         return fx.reshape(shape), fy.reshape(shape), (m / k).reshape(shape)
     fx, fy, m, st = wrench_array(
-        par[_ode.P_BN],
-        int(par[_ode.P_LAW]),
-        par[_ode.P_XG],
-        par[_ode.P_YG],
-        par[_ode.P_T00],
-        par[_ode.P_T01],
-        par[_ode.P_T10],
-        par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0,
+        *_ode.elliptic_args(par),
         ph,
         u1,
         u2,
@@ -777,15 +761,7 @@ def _j_values(par, beta):
         fx, fy, m = _fp_world(par, np.zeros(n), beta, np.zeros(n), np.ones(n))
         return beta * (-m) / (-fx)
     fx, fy, m, st = wrench_array(
-        par[_ode.P_BN],
-        int(par[_ode.P_LAW]),
-        par[_ode.P_XG],
-        par[_ode.P_YG],
-        par[_ode.P_T00],
-        par[_ode.P_T01],
-        par[_ode.P_T10],
-        par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0,
+        *_ode.elliptic_args(par),
         np.zeros(n),
         beta,
         np.zeros(n),

@@ -215,15 +215,7 @@ def friction_wrench(
 
     ux, uy, uw = (np.ascontiguousarray(x) for x in _direction(vxa, vya, oma, a))
     fx, fy, mm, st = wrench_array(
-        par[_ode.P_BN],
-        int(par[_ode.P_LAW]),
-        par[_ode.P_XG],
-        par[_ode.P_YG],
-        par[_ode.P_T00],
-        par[_ode.P_T01],
-        par[_ode.P_T10],
-        par[_ode.P_T11],
-        par[_ode.P_BODY] != 0.0,
+        *_ode.elliptic_args(par),
         pha,
         ux,
         uy,
