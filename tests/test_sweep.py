@@ -147,7 +147,7 @@ def test_sigkill_then_resume_loses_nothing(tmp_path):
     spec_path = tmp_path / "spec.toml"
     spec_path.write_text(
         'name = "kill"\nkind = "random"\nchunk_size = 10\n'
-        "[random]\nsamples = 160\nseed = 11\n"
+        "[random]\nsamples = 1600\nseed = 11\n"
         '[fixed]\na = 0.05\nfx = 0.3\nmass = 1.0\nlaw = "uniform"\n'
         "[vary]\nmu = {low = 0.0, high = 0.3}\nv0 = {low = 0.1, high = 1.0}\n"
         "omega0 = {low = -20.0, high = 20.0}\nI_star = {low = 0.2, high = 1.0}\n"
@@ -165,12 +165,12 @@ def test_sigkill_then_resume_loses_nothing(tmp_path):
     proc.send_signal(signal.SIGKILL)
     proc.wait()
     done_at_kill = len(list((out / "chunks").glob("chunk-*.parquet")))
-    assert done_at_kill < 16, "the sweep finished before it could be killed"
+    assert done_at_kill < 160, "the sweep finished before it could be killed"
     r = run_cli("sweep", str(spec_path), "--out", str(out), "--resume", "--quiet")
     assert r.returncode == 0, r.stderr
     assert not list((out / "chunks").glob(".chunk-*"))  # no temporary leftovers
     table = read_sweep(out)
-    assert np.array_equal(table["case_id"], np.arange(160))  # complete, no duplicates
+    assert np.array_equal(table["case_id"], np.arange(1600))  # complete, no duplicates
     fresh = tmp_path / "fresh"
     sweep(load_spec(spec_path), fresh)
     ref = read_sweep(fresh)
