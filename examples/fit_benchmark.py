@@ -1,4 +1,4 @@
-"""Benchmark of ``slidespin.fit``: three friction parameters (fx, fy, f) fitted to five runs of
+"""Benchmark of ``slidespin.analysis.fit``: three friction parameters (fx, fy, f) fitted to five runs of
 200 tracked instants each (x, y, phi: 3000 values), every run's start state fitted too
 (33 parameters in all), noise sigma estimated from the residuals.
 
@@ -19,7 +19,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fit_synthetic as fs
 
 import slidespin as ss
-from slidespin.fit import fit
+from slidespin.analysis.fit import fit
 
 
 def main(repeats: int = 3) -> None:
@@ -34,12 +34,16 @@ def main(repeats: int = 3) -> None:
         t = time.perf_counter()
         res = fit(runs, body, guess)
         times.append(time.perf_counter() - t)
-        print(f"fit {i + 1}: {times[-1]:.2f} s  ({res.nfev} residual evaluations, "
-              f"{len(res.parameter_names)} parameters, {res.n_points} values)")
+        print(
+            f"fit {i + 1}: {times[-1]:.2f} s  ({res.nfev} residual evaluations, "
+            f"{len(res.parameter_names)} parameters, {res.n_points} values)"
+        )
     print(res)
-    print(f"median {statistics.median(times):.2f} s, best {min(times):.2f} s over {repeats} "
-          f"fits; {platform.processor() or platform.machine()}, {os.cpu_count()} CPUs, "
-          f"Python {platform.python_version()}")
+    print(
+        f"median {statistics.median(times):.2f} s, best {min(times):.2f} s over {repeats} "
+        f"fits; {platform.processor() or platform.machine()}, {os.cpu_count()} CPUs, "
+        f"Python {platform.python_version()}"
+    )
 
 
 if __name__ == "__main__":

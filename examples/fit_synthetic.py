@@ -20,7 +20,7 @@ import os
 import numpy as np
 
 import slidespin as ss
-from slidespin.fit import trajectory_at
+from slidespin.analysis.fit import trajectory_at
 
 TRUTH = {"fx": 0.42, "fy": 0.54, "f": 0.03}
 SIGMA = {"x": 5e-4, "y": 5e-4, "phi": 1e-2}
@@ -67,19 +67,26 @@ def write_csv(runs, path: str = PATH) -> None:
     with open(path, "w", encoding="utf-8", newline="") as fh:
         fh.write("run,t,x,y,phi\n")
         for k, run in enumerate(runs):
-            fh.writelines(f"{k},{run['t'][i]:.6f},{run['x'][i]:.6f},{run['y'][i]:.6f},"
-                         f"{run['phi'][i]:.5f}\n" for i in range(run["t"].size))
+            fh.writelines(
+                f"{k},{run['t'][i]:.6f},{run['x'][i]:.6f},{run['y'][i]:.6f},{run['phi'][i]:.5f}\n"
+                for i in range(run["t"].size)
+            )
 
 
 def main() -> None:
     runs, starts = make_runs()
     write_csv(runs)
     print(f"wrote {PATH}: {len(runs)} synthetic runs x {N_POINTS} points")
-    print("truth: " + ", ".join(f"{k} = {val}" for k, val in TRUTH.items())
-          + f"; noise sigma: x, y {SIGMA['x']} m, phi {SIGMA['phi']} rad")
+    print(
+        "truth: "
+        + ", ".join(f"{k} = {val}" for k, val in TRUTH.items())
+        + f"; noise sigma: x, y {SIGMA['x']} m, phi {SIGMA['phi']} rad"
+    )
     for k, st in enumerate(starts):
-        print(f"run {k} start: speed {st.speed:.3g} m/s, omega {st.omega:.3g} rad/s, "
-              f"theta {math.atan2(st.vy, st.vx):.3g} rad, phi {st.phi:.3g} rad")
+        print(
+            f"run {k} start: speed {st.speed:.3g} m/s, omega {st.omega:.3g} rad/s, "
+            f"theta {math.atan2(st.vy, st.vx):.3g} rad, phi {st.phi:.3g} rad"
+        )
 
 
 if __name__ == "__main__":

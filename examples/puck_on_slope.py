@@ -15,8 +15,8 @@ import math
 import sys
 
 import slidespin as ss
-from slidespin.loaded import simulate_loaded
-from slidespin.loads import Incline
+from slidespin.motion.loaded import simulate_loaded
+from slidespin.contact.incline import Incline
 
 SLOPE = Incline(math.radians(20.0), downhill=0.0)
 
@@ -24,8 +24,9 @@ SLOPE = Incline(math.radians(20.0), downhill=0.0)
 def compute():
     puck = ss.Body(ss.Circle(0.04), ss.UniformPressure(), mass=0.2)
     friction = ss.FrictionTensor.isotropic(0.3)
-    return simulate_loaded(puck, friction, ss.State(omega=30.0), incline=SLOPE, t_end=1.0,
-                           max_step=0.2)
+    return simulate_loaded(
+        puck, friction, ss.State(omega=30.0), incline=SLOPE, t_end=1.0, max_step=0.2
+    )
 
 
 def main(out="puck_on_slope.png"):

@@ -17,8 +17,8 @@ import sys
 import numpy as np
 
 import slidespin as ss
-from slidespin.loaded import simulate_loaded
-from slidespin.loads import Load
+from slidespin.motion.loaded import simulate_loaded
+from slidespin.motion.loads import Load
 
 
 def push(t):
@@ -36,8 +36,10 @@ def compute():
 def main(out="pushed_puck.png"):
     tr = compute()
     t_start = tr.slip_intervals[0][0]
-    print(f"the puck starts to move at t = {t_start:.9f} s; phases: "
-          + ", ".join(f"{k} {a:.4f}-{b:.4f} s" for k, a, b in tr.phases))
+    print(
+        f"the puck starts to move at t = {t_start:.9f} s; phases: "
+        + ", ".join(f"{k} {a:.4f}-{b:.4f} s" for k, a, b in tr.phases)
+    )
     if out:
         import matplotlib
 

@@ -16,8 +16,11 @@ def make_law(name: str, a: float = 1.0, b: float = 0.5):
     """The four pressure laws; the linear one with an off-centre centroid inside the core."""
     if name == "linear":
         return ss.LinearPressure(0.12 * a, -0.08 * b)
-    return {"uniform": ss.UniformPressure(), "boussinesq": ss.BoussinesqPressure(),
-            "hertz": ss.HertzPressure()}[name]
+    return {
+        "uniform": ss.UniformPressure(),
+        "boussinesq": ss.BoussinesqPressure(),
+        "hertz": ss.HertzPressure(),
+    }[name]
 
 
 def state_with_icr(body, cx, cy, phi, omega=1.0):

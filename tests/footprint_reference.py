@@ -51,14 +51,32 @@ def regions_of(footprint):
         elif hasattr(p, "vertices"):
             c, s = math.cos(p.angle), math.sin(p.angle)
             v = np.array(p.vertices, dtype=float)
-            out.append(("poly", np.column_stack((p.centre[0] + c * v[:, 0] - s * v[:, 1],
-                                                 p.centre[1] + s * v[:, 0] + c * v[:, 1]))))
+            out.append(
+                (
+                    "poly",
+                    np.column_stack(
+                        (
+                            p.centre[0] + c * v[:, 0] - s * v[:, 1],
+                            p.centre[1] + s * v[:, 0] + c * v[:, 1],
+                        )
+                    ),
+                )
+            )
         else:  # rectangle
             a, b = 0.5 * p.length, 0.5 * p.width
             v = np.array([(-a, -b), (a, -b), (a, b), (-a, b)])
             c, s = math.cos(p.angle), math.sin(p.angle)
-            out.append(("poly", np.column_stack((p.centre[0] + c * v[:, 0] - s * v[:, 1],
-                                                 p.centre[1] + s * v[:, 0] + c * v[:, 1]))))
+            out.append(
+                (
+                    "poly",
+                    np.column_stack(
+                        (
+                            p.centre[0] + c * v[:, 0] - s * v[:, 1],
+                            p.centre[1] + s * v[:, 0] + c * v[:, 1],
+                        )
+                    ),
+                )
+            )
     return out
 
 
@@ -86,8 +104,9 @@ def _area_nodes(regions):
             r = r0 + (r1 - r0) * _G2X
             w = (r1 - r0) * _G2W * r * 2 * np.pi / nt
             rr, tt = np.meshgrid(r, th, indexing="ij")
-            pts.append(np.column_stack(((ox + rr * np.cos(tt)).ravel(),
-                                        (oy + rr * np.sin(tt)).ravel())))
+            pts.append(
+                np.column_stack(((ox + rr * np.cos(tt)).ravel(), (oy + rr * np.sin(tt)).ravel()))
+            )
             wts.append(np.repeat(w, nt))
     p = np.vstack(pts)
     w = np.concatenate(wts)
@@ -119,8 +138,10 @@ def reference_pressure(footprint, law, load=1.0):
     area = w.sum()
     cx, cy = (w @ x) / area, (w @ y) / area
     if law[0] == "uniform":
+
         def p(xx, yy):
             return np.full(np.shape(xx), load / area)
+
         return p, (cx, cy)
     if law[0] == "linear":
         jxx = w @ ((x - cx) ** 2)
@@ -130,6 +151,7 @@ def reference_pressure(footprint, law, load=1.0):
 
         def p(xx, yy):
             return load / area * (1.0 + g[0] * (np.asarray(xx) - cx) + g[1] * (np.asarray(yy) - cy))
+
         return p, (law[1], law[2])
     f = law[1]
     tot = w @ f(x, y)
@@ -138,6 +160,7 @@ def reference_pressure(footprint, law, load=1.0):
 
     def p(xx, yy):
         return load / tot * f(np.asarray(xx, dtype=float), np.asarray(yy, dtype=float))
+
     return p, (gx, gy)
 
 
@@ -211,8 +234,9 @@ def _breaks(regions, c):
     return np.array(br)
 
 
-def reference_wrench(footprint, law, tensor, vx, vy, omega, phi=0.0, frame="plane", load=1.0,
-                     tol=1e-13):
+def reference_wrench(
+    footprint, law, tensor, vx, vy, omega, phi=0.0, frame="plane", load=1.0, tol=1e-13
+):
     """(Fx, Fy, M): force in the fixed frame [N] and moment about G [N m].
 
     ``law`` as in :func:`reference_pressure`; ``tensor`` the 2×2 friction matrix in its own
@@ -225,8 +249,10 @@ def reference_wrench(footprint, law, tensor, vx, vy, omega, phi=0.0, frame="plan
     T = np.asarray(tensor, dtype=float)
     tb = T if frame == "body" else rot.T @ T @ rot
     vb = rot.T @ np.array([vx, vy], dtype=float)
-    size = max(np.max(np.abs(r[1])) if r[0] == "poly" else abs(r[1][0]) + abs(r[1][1]) + r[3]
-               for r in regions)
+    size = max(
+        np.max(np.abs(r[1])) if r[0] == "poly" else abs(r[1][0]) + abs(r[1][1]) + r[3]
+        for r in regions
+    )
     g = np.array([gx, gy])
     if omega == 0.0 or np.hypot(*vb) > FAR * size * abs(omega):
         pts, w = _area_nodes(regions)
@@ -262,8 +288,16 @@ def reference_wrench(footprint, law, tensor, vx, vy, omega, phi=0.0, frame="plan
         br = np.sort(np.mod(_breaks(regions, c), 2 * np.pi))
         start = br[0] if len(br) else 0.0
         pts_ = [b for b in br if start < b < start + 2 * np.pi]
-        res, _ = quad_vec(integrand, start, start + 2 * np.pi, points=pts_, epsabs=tol * load,
-                            epsrel=1e-13, norm="max", limit=20000)
+        res, _ = quad_vec(
+            integrand,
+            start,
+            start + 2 * np.pi,
+            points=pts_,
+            epsabs=tol * load,
+            epsrel=1e-13,
+            norm="max",
+            limit=20000,
+        )
         fb = res[:2]
         m = float(res[2])
     f = rot @ fb

@@ -63,8 +63,9 @@ def _q(f, lo, hi, **kw):
     """scipy.integrate.quad with tight tolerances; QUADPACK's roundoff flags (expected for the
     polynomial radial integrands, which are integrated exactly) are not turned into warnings,
     but a large error estimate is."""
-    res = quad(f, lo, hi, epsabs=_INNER_EPSABS, epsrel=_INNER_EPSREL, limit=_LIMIT,
-               full_output=1, **kw)
+    res = quad(
+        f, lo, hi, epsabs=_INNER_EPSABS, epsrel=_INNER_EPSREL, limit=_LIMIT, full_output=1, **kw
+    )
     val, err = res[0], res[1]
     # crude size of int |f w|: sampled max of |f| times the interval length (times its power
     # 2 alpha for the algebraic weight)
@@ -82,8 +83,9 @@ def _q(f, lo, hi, **kw):
 
 def _check(info, err, epsabs, what):
     if info.status != 0 and not err <= 10.0 * epsabs:
-        warnings.warn(f"reference: {what} quadrature status {info.status}, err {err:.2e}",
-                      stacklevel=3)
+        warnings.warn(
+            f"reference: {what} quadrature status {info.status}, err {err:.2e}", stacklevel=3
+        )
 
 
 class _State:
@@ -173,15 +175,29 @@ def _direct(st: _State, epsabs: float) -> np.ndarray:
     def outer(t):
         ct, st_ = math.cos(t), math.sin(t)
         res, err, info = quad_vec(
-            inner, 0.0, 0.5 * math.pi, epsabs=epsabs * 0.1, epsrel=_INNER_EPSREL,
-            norm="max", limit=_LIMIT, full_output=True, args=(ct, st_),
+            inner,
+            0.0,
+            0.5 * math.pi,
+            epsabs=epsabs * 0.1,
+            epsrel=_INNER_EPSREL,
+            norm="max",
+            limit=_LIMIT,
+            full_output=True,
+            args=(ct, st_),
         )
         _check(info, err, epsabs * 0.1, "inner direct")
         return res
 
     res, err, info = quad_vec(
-        outer, 0.0, 2.0 * math.pi, epsabs=epsabs, epsrel=_INNER_EPSREL, norm="max",
-        limit=_LIMIT, full_output=True, points=(0.5 * math.pi, math.pi, 1.5 * math.pi),
+        outer,
+        0.0,
+        2.0 * math.pi,
+        epsabs=epsabs,
+        epsrel=_INNER_EPSREL,
+        norm="max",
+        limit=_LIMIT,
+        full_output=True,
+        points=(0.5 * math.pi, math.pi, 1.5 * math.pi),
     )
     _check(info, err, epsabs, "outer direct")
     res[3] *= vs
@@ -322,16 +338,18 @@ def _compute(a, b, law, tensor_world, phi, vx, vy, omega, xi_c, eta_c, P, epsabs
     raise ValueError(method)
 
 
-def reference_wrench(a, b, law, tensor_world, phi, vx, vy, omega, xi_c=0.0, eta_c=0.0, P=1.0,
-                     epsabs=1e-13):
+def reference_wrench(
+    a, b, law, tensor_world, phi, vx, vy, omega, xi_c=0.0, eta_c=0.0, P=1.0, epsabs=1e-13
+):
     """Return (Fx, Fy, M): total friction force (world frame) and moment about the mass centre G
     (counter-clockwise positive)."""
     r = _compute(a, b, law, tensor_world, phi, vx, vy, omega, xi_c, eta_c, P, epsabs)
     return float(r[0]), float(r[1]), float(r[2])
 
 
-def reference_dissipation(a, b, law, tensor_world, phi, vx, vy, omega, xi_c=0.0, eta_c=0.0,
-                          P=1.0, epsabs=1e-13):
+def reference_dissipation(
+    a, b, law, tensor_world, phi, vx, vy, omega, xi_c=0.0, eta_c=0.0, P=1.0, epsabs=1e-13
+):
     """Return -int p (w . T . w)/|w| dS, the rate of work of friction, computed as its own
     integrand (not from the wrench)."""
     r = _compute(a, b, law, tensor_world, phi, vx, vy, omega, xi_c, eta_c, P, epsabs)

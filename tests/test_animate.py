@@ -12,8 +12,8 @@ import pytest
 from PIL import Image
 
 import slidespin as ss
-from slidespin import animate as anim
-from slidespin import animate_cli
+from slidespin.cli import animate as animate_cli
+from slidespin.viz import animate as anim
 
 ROOT = Path(__file__).resolve().parents[1]
 G = 9.81
@@ -21,7 +21,7 @@ G = 9.81
 
 @pytest.fixture(scope="module")
 def demo_traj():
-    from slidespin.cli import demo_case
+    from slidespin.cli.main import demo_case
 
     c = demo_case()
     return ss.simulate(c.body, c.friction, c.initial_state)
@@ -85,7 +85,7 @@ def test_interpolation_third_order_between_sparse_steps(demo_traj):
 
 
 def test_footprint_outlines_are_drawn(tmp_path):
-    from slidespin.footprint import Rectangle
+    from slidespin.contact.shapes import Rectangle
 
     body = ss.Body(Rectangle(0.1, 0.06), ss.UniformPressure(), mass=1.0)
     tr = ss.simulate(body, ss.FrictionTensor(0.3, 0.4), ss.State.from_speed(0.8, 6.0, 0.3))
@@ -95,14 +95,17 @@ def test_footprint_outlines_are_drawn(tmp_path):
         assert im.n_frames == 6
 
 
-@pytest.mark.parametrize("kwargs, match", [
-    ({"fps": 0}, "fps = 0"),
-    ({"fps": 51}, "fps = 51"),
-    ({"frames": 1}, "frames = 1"),
-    ({"frames": anim.MAX_FRAMES + 1}, "frames = 121"),
-    ({"frames": 2.5}, "frames = 2.5"),
-    ({"fps": True}, "fps = True"),
-])
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        ({"fps": 0}, "fps = 0"),
+        ({"fps": 51}, "fps = 51"),
+        ({"frames": 1}, "frames = 1"),
+        ({"frames": anim.MAX_FRAMES + 1}, "frames = 121"),
+        ({"frames": 2.5}, "frames = 2.5"),
+        ({"fps": True}, "fps = True"),
+    ],
+)
 def test_bad_numbers_refused(demo_traj, tmp_path, kwargs, match):
     out = tmp_path / "x.gif"
     with pytest.raises(ValueError, match=match):
@@ -115,9 +118,12 @@ def test_bad_paths_refused_before_any_drawing(demo_traj, tmp_path, monkeypatch):
         raise AssertionError("work started before the output path was checked")
 
     monkeypatch.setattr(anim, "frame_states", boom)
-    for bad, match in [(tmp_path / "x.png", r"\.gif"), (tmp_path, r"\.gif"),
-                       (tmp_path / "sub.gif", "directory"),
-                       (tmp_path / "missing" / "x.gif", "does not exist")]:
+    for bad, match in [
+        (tmp_path / "x.png", r"\.gif"),
+        (tmp_path, r"\.gif"),
+        (tmp_path / "sub.gif", "directory"),
+        (tmp_path / "missing" / "x.gif", "does not exist"),
+    ]:
         if bad.name == "sub.gif":
             bad.mkdir()
         with pytest.raises(ValueError, match=match):
@@ -137,21 +143,36 @@ def _cli(argv):
 
 def test_cli_writes_the_gif(tmp_path, capsys):
     out = tmp_path / "circle.gif"
-    assert _cli([str(ROOT / "examples" / "uniform_circle.toml"), "--out", str(out),
-                 "--frames", "8", "--fps", "10"]) == 0
+    assert (
+        _cli(
+            [
+                str(ROOT / "examples" / "uniform_circle.toml"),
+                "--out",
+                str(out),
+                "--frames",
+                "8",
+                "--fps",
+                "10",
+            ]
+        )
+        == 0
+    )
     with Image.open(out) as im:
         assert im.n_frames == 8 and im.info["duration"] == 100
     assert str(out) in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("argv, match", [
-    (["--out", "{d}/run.mp4"], "--out = .*unknown animation format '.mp4'"),
-    (["--out", "{d}/nodir/run.gif"], "--out = .*does not exist"),
-    (["--out", "{d}/run.gif", "--fps", "0"], "--fps = 0"),
-    (["--out", "{d}/run.gif", "--frames", "500"], "--frames = 500"),
-])
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["--out", "{d}/run.mp4"], "--out = .*unknown animation format '.mp4'"),
+        (["--out", "{d}/nodir/run.gif"], "--out = .*does not exist"),
+        (["--out", "{d}/run.gif", "--fps", "0"], "--fps = 0"),
+        (["--out", "{d}/run.gif", "--frames", "500"], "--frames = 500"),
+    ],
+)
 def test_cli_refuses_outputs_before_reading_the_case(tmp_path, monkeypatch, argv, match):
-    import slidespin.case
+    import slidespin.studies.case
 
     def boom(*a, **k):
         raise AssertionError("the case was read before the outputs were checked")
@@ -165,19 +186,27 @@ def test_cli_refuses_outputs_before_reading_the_case(tmp_path, monkeypatch, argv
 
 def test_main_cli_exit_status_2_and_nothing_written(tmp_path, capsys, monkeypatch):
     # through slidespin.cli.main, with the plugin registered as the lead registers it
-    from slidespin import cli
+    from slidespin.cli.main import main as cli
 
     if not any(name == "animate" for name, *_ in cli._PLUGINS):
-        monkeypatch.setattr(cli, "_PLUGINS", cli._PLUGINS + (
-            ("animate", "slidespin.animate_cli", "write an animated GIF of a case's motion"),))
+        monkeypatch.setattr(
+            cli,
+            "_PLUGINS",
+            cli._PLUGINS
+            + (("animate", "slidespin.cli.animate", "write an animated GIF of a case's motion"),),
+        )
     out = tmp_path / "run.txt"
     assert cli.main(["animate", str(ROOT / "examples" / "demo.toml"), "--out", str(out)]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "--out" in err and ".gif" in err
     assert not out.exists()
     gif = tmp_path / "run.gif"
-    assert cli.main(["animate", str(ROOT / "examples" / "demo.toml"), "--out", str(gif),
-                     "--frames", "5"]) == 0
+    assert (
+        cli.main(
+            ["animate", str(ROOT / "examples" / "demo.toml"), "--out", str(gif), "--frames", "5"]
+        )
+        == 0
+    )
     with Image.open(gif) as im:
         assert im.n_frames == 5
 
@@ -213,11 +242,12 @@ def test_cli_loaded_case_animates_up_to_t_end(tmp_path, capsys):
     with Image.open(out) as im:
         assert im.n_frames == 7
     # the frames span the whole run, 0 to t_end, sliding downhill (+x) while it spins
-    from slidespin.case import load_case
+    from slidespin.studies.case import load_case
 
     c = load_case(str(case))
-    tr = ss.simulate(c.body, c.friction, c.initial_state, load=c.load, incline=c.incline,
-                     t_end=c.t_end)
+    tr = ss.simulate(
+        c.body, c.friction, c.initial_state, load=c.load, incline=c.incline, t_end=c.t_end
+    )
     st = anim.frame_states(tr, 7)
     assert st.t[-1] == pytest.approx(1.0) and st.x[0] == 0.0
     assert np.all(np.diff(st.x) > 0) and abs(st.phi[-1]) > 0.1

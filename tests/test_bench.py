@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import os
 
-from slidespin.cli import main
+from slidespin.cli.main import main
 
 TINY = [
     "bench",

@@ -11,15 +11,20 @@ from pathlib import Path
 import pytest
 
 import slidespin as ss
-from slidespin.case import load_case
-from slidespin.cli import demo_case, main
+from slidespin.cli.main import demo_case, main
+from slidespin.studies.case import load_case
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 def run(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "slidespin", *args], capture_output=True,
-                          text=True, cwd=cwd, timeout=600)
+    return subprocess.run(
+        [sys.executable, "-m", "slidespin", *args],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        timeout=600,
+    )
 
 
 def test_demo_writes_figure_and_prints_the_stop(tmp_path):
@@ -43,8 +48,17 @@ def test_demo_toml_is_the_demo():
 
 def test_simulate_json_csv_plot(tmp_path, capsys):
     csv_path, png = tmp_path / "t.csv", tmp_path / "f.png"
-    code = main(["simulate", str(EXAMPLES / "demo.toml"), "--json", "--csv", str(csv_path),
-                 "--plot", str(png)])
+    code = main(
+        [
+            "simulate",
+            str(EXAMPLES / "demo.toml"),
+            "--json",
+            "--csv",
+            str(csv_path),
+            "--plot",
+            str(png),
+        ]
+    )
     assert code == 0
     data = json.loads(capsys.readouterr().out)
     assert data["status"] == "stopped" and data["ending"] == "mixed"
@@ -54,8 +68,7 @@ def test_simulate_json_csv_plot(tmp_path, capsys):
 
 
 # case files for `slidespin simulate` (sweep specs and the fit's body description are not)
-CASE_FILES = sorted(p for p in EXAMPLES.glob("*.toml")
-                    if not p.name.startswith(("sweep_", "fit_")))
+CASE_FILES = sorted(p for p in EXAMPLES.glob("*.toml") if not p.name.startswith(("sweep_", "fit_")))
 
 
 @pytest.mark.parametrize("path", CASE_FILES, ids=lambda p: p.name)
@@ -63,7 +76,7 @@ def test_every_example_case_runs(path, capsys):
     assert main(["simulate", str(path), "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
     if "phases" in data:  # a loaded case ([load], [incline], t_end): the loaded vocabulary
-        from slidespin.outcomes import LOADED_CONVERGED
+        from slidespin.motion.outcomes import LOADED_CONVERGED
 
         assert data["status"] in LOADED_CONVERGED
     else:
@@ -80,8 +93,11 @@ def test_uniform_disk_example_pins_the_published_ratio(capsys):
     "content, fragment",
     [
         ("[patch\na=1", "is not valid TOML"),
-        ("[patch]\na = 0.1\neccentricity = 2.0\n[pressure]\nlaw='uniform'\n[friction]\nfx=0.3\n"
-         "fy=0.3\n[body]\nmass=1.0\n[initial]\nspeed=1.0\n", "eccentricity = 2.0"),
+        (
+            "[patch]\na = 0.1\neccentricity = 2.0\n[pressure]\nlaw='uniform'\n[friction]\nfx=0.3\n"
+            "fy=0.3\n[body]\nmass=1.0\n[initial]\nspeed=1.0\n",
+            "eccentricity = 2.0",
+        ),
     ],
 )
 def test_bad_case_file_one_line_exit_2(tmp_path, content, fragment):
@@ -105,7 +121,7 @@ def test_missing_file_and_unwritable_output(tmp_path):
 def test_internal_error_is_reported_without_traceback(monkeypatch, capsys):
     import sys
 
-    sim = sys.modules["slidespin.simulate"]
+    sim = sys.modules["slidespin.motion.simulate"]
 
     def boom(*args, **kwargs):
         raise RuntimeError("kernel exploded")

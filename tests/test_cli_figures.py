@@ -14,17 +14,23 @@ import pytest
 matplotlib.use("Agg")
 
 import slidespin as ss  # noqa: E402
-from slidespin.case import load_case  # noqa: E402
-from slidespin.cli import CLI_MAX_STEP  # noqa: E402
-from slidespin.plotting import BETA_LIMIT, plot_trajectory  # noqa: E402
+from slidespin.cli.main import CLI_MAX_STEP  # noqa: E402
+from slidespin.studies.case import load_case  # noqa: E402
+from slidespin.viz.plotting import BETA_LIMIT, plot_trajectory  # noqa: E402
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
 
 def run(name):
     case = load_case(EXAMPLES / f"{name}.toml")
-    return case, ss.simulate(case.body, case.friction, case.initial_state, g=case.g,
-                             rtol=case.rtol, max_step=CLI_MAX_STEP)
+    return case, ss.simulate(
+        case.body,
+        case.friction,
+        case.initial_state,
+        g=case.g,
+        rtol=case.rtol,
+        max_step=CLI_MAX_STEP,
+    )
 
 
 def panels(traj):

@@ -27,8 +27,13 @@ SWEEP = (
 
 def run(*args, cwd=None, timeout=60):
     t0 = time.monotonic()
-    r = subprocess.run([sys.executable, "-m", "slidespin", *map(str, args)],
-                       capture_output=True, text=True, cwd=cwd, timeout=timeout)
+    r = subprocess.run(
+        [sys.executable, "-m", "slidespin", *map(str, args)],
+        capture_output=True,
+        text=True,
+        cwd=cwd,
+        timeout=timeout,
+    )
     return r, time.monotonic() - t0
 
 
@@ -57,16 +62,27 @@ def with_key(text: str, table: str, line: str) -> str:
 # ------------------------------------------------------------------------------ case files
 CASE_EDITS = [
     # (name, file text, fragments that must appear in the message)
-    ("max_steps 2**64", with_key(DEMO, "solver", "max_steps = 18446744073709551616"),
-     ("[solver] max_steps = 18446744073709551616", "64-bit")),
-    ("max_steps too large", DEMO + "max_steps = 10000000000\n",
-     ("[solver] max_steps = 10000000000", "<= 1000000000")),
-    ("huge integer mass", DEMO.replace("mass = 1.0", "mass = 100000000000000000000000"),
-     ("[body] mass = 100000000000000000000000", "64-bit")),
-    ("long name", DEMO.replace('name = "demo:', 'name = "' + "x" * 10_000 + ' demo:'),
-     ("name is 10", "at most 200 characters")),
-    ("deep nesting", DEMO + "[patch.deep]\nv = " + "[" * 50 + "]" * 50 + "\n",
-     ("nested",)),
+    (
+        "max_steps 2**64",
+        with_key(DEMO, "solver", "max_steps = 18446744073709551616"),
+        ("[solver] max_steps = 18446744073709551616", "64-bit"),
+    ),
+    (
+        "max_steps too large",
+        DEMO + "max_steps = 10000000000\n",
+        ("[solver] max_steps = 10000000000", "<= 1000000000"),
+    ),
+    (
+        "huge integer mass",
+        DEMO.replace("mass = 1.0", "mass = 100000000000000000000000"),
+        ("[body] mass = 100000000000000000000000", "64-bit"),
+    ),
+    (
+        "long name",
+        DEMO.replace('name = "demo:', 'name = "' + "x" * 10_000 + " demo:"),
+        ("name is 10", "at most 200 characters"),
+    ),
+    ("deep nesting", DEMO + "[patch.deep]\nv = " + "[" * 50 + "]" * 50 + "\n", ("nested",)),
     ("very deep nesting", "x = " + "[" * 5000 + "]" * 5000 + "\n", ("nested too deeply",)),
     ("not UTF-8", DEMO.replace("demo:", "d\udcffmo:"), ("not UTF-8 text", "offset")),
     # values the physics cannot honour: refused up front (not a hang), naming table and key
@@ -111,7 +127,7 @@ def test_ten_megabyte_case_file_is_refused_without_reading_it(tmp_path):
 
 
 def test_read_toml_caps_the_bytes_read(tmp_path):
-    from slidespin.case import read_toml
+    from slidespin.studies.case import read_toml
 
     p = tmp_path / "c.toml"
     p.write_text("a = 1\n" + "#" * 200 + "\n")
@@ -126,32 +142,59 @@ def spec_with(table: str, line: str) -> str:
 
 
 SPEC_EDITS = [
-    ("samples 10**12", SWEEP.replace("samples = 20", "samples = 1000000000000"),
-     ("[random] samples = 1000000000000", "<= 10000000")),
-    ("grid num 10**8", 'kind = "grid"\n[fixed]\na = 0.05\nfx = 0.3\n'
-     "[vary]\nmu = {start = 0.0, stop = 0.3, num = 100000000}\n",
-     ("[vary] mu.num = 100000000", "<= 1000000")),
-    ("grid of too many cases", 'kind = "grid"\n[fixed]\na = 0.05\nfx = 0.3\n'
-     "[vary]\nmu = {start = 0.0, stop = 0.3, num = 10000}\n"
-     "v0 = {start = 0.1, stop = 1.0, num = 10000}\n",
-     ("10000 x 10000 = 100000000 cases", "at most 10000000")),
-    ("log with low <= 0", SWEEP.replace("v0 = {low = 0.1, high = 1.0}",
-                                        "v0 = {low = 0.0, high = 1.0, log = true}"),
-     ("[vary] v0", "low > 0")),
-    ("low > high", SWEEP.replace("v0 = {low = 0.1, high = 1.0}", "v0 = {low = 1.0, high = 0.1}"),
-     ("[vary] v0", "low = 1.0 > high = 0.1")),
-    ("range overflows", SWEEP.replace("v0 = {low = 0.1, high = 1.0}",
-                                      "x0 = {low = -1e308, high = 1e308}"),
-     ("[vary] x0", "overflows")),
-    ("seed 2**64", SWEEP.replace("seed = 1", "seed = 18446744073709551616"),
-     ("[random] seed = 18446744073709551616", "64-bit")),
-    ("chunk_size too large", SWEEP.replace("chunk_size = 10", "chunk_size = 100000000"),
-     ("chunk_size = 100000000", "<= 1000000")),
-    ("long name", SWEEP.replace('name = "small"', 'name = "' + "y" * 5000 + '"'),
-     ("name is 5000 characters",)),
-    ("log flag not a bool", SWEEP.replace("v0 = {low = 0.1, high = 1.0}",
-                                          'v0 = {low = 0.1, high = 1.0, log = "yes"}'),
-     ("[vary] v0.log = 'yes'",)),
+    (
+        "samples 10**12",
+        SWEEP.replace("samples = 20", "samples = 1000000000000"),
+        ("[random] samples = 1000000000000", "<= 10000000"),
+    ),
+    (
+        "grid num 10**8",
+        'kind = "grid"\n[fixed]\na = 0.05\nfx = 0.3\n'
+        "[vary]\nmu = {start = 0.0, stop = 0.3, num = 100000000}\n",
+        ("[vary] mu.num = 100000000", "<= 1000000"),
+    ),
+    (
+        "grid of too many cases",
+        'kind = "grid"\n[fixed]\na = 0.05\nfx = 0.3\n'
+        "[vary]\nmu = {start = 0.0, stop = 0.3, num = 10000}\n"
+        "v0 = {start = 0.1, stop = 1.0, num = 10000}\n",
+        ("10000 x 10000 = 100000000 cases", "at most 10000000"),
+    ),
+    (
+        "log with low <= 0",
+        SWEEP.replace("v0 = {low = 0.1, high = 1.0}", "v0 = {low = 0.0, high = 1.0, log = true}"),
+        ("[vary] v0", "low > 0"),
+    ),
+    (
+        "low > high",
+        SWEEP.replace("v0 = {low = 0.1, high = 1.0}", "v0 = {low = 1.0, high = 0.1}"),
+        ("[vary] v0", "low = 1.0 > high = 0.1"),
+    ),
+    (
+        "range overflows",
+        SWEEP.replace("v0 = {low = 0.1, high = 1.0}", "x0 = {low = -1e308, high = 1e308}"),
+        ("[vary] x0", "overflows"),
+    ),
+    (
+        "seed 2**64",
+        SWEEP.replace("seed = 1", "seed = 18446744073709551616"),
+        ("[random] seed = 18446744073709551616", "64-bit"),
+    ),
+    (
+        "chunk_size too large",
+        SWEEP.replace("chunk_size = 10", "chunk_size = 100000000"),
+        ("chunk_size = 100000000", "<= 1000000"),
+    ),
+    (
+        "long name",
+        SWEEP.replace('name = "small"', 'name = "' + "y" * 5000 + '"'),
+        ("name is 5000 characters",),
+    ),
+    (
+        "log flag not a bool",
+        SWEEP.replace("v0 = {low = 0.1, high = 1.0}", 'v0 = {low = 0.1, high = 1.0, log = "yes"}'),
+        ("[vary] v0.log = 'yes'",),
+    ),
 ]
 
 

@@ -1,5 +1,5 @@
 """``slidespin simulate CASE.toml --plot`` for loaded cases (issue #13: [load], [incline],
-t_end), and the loaded outcome vocabulary of :mod:`slidespin.outcomes`.
+t_end), and the loaded outcome vocabulary of :mod:`slidespin.motion.outcomes`.
 
 The reference case is a closed form: a uniform disk (m = 1 kg, isotropic μ = 0.3, g = 9.81)
 pushed through G by a force that ramps linearly, F(t) = μ m g t for 0 ≤ t ≤ 2 s, then falls
@@ -23,11 +23,11 @@ import pytest
 
 matplotlib.use("Agg")
 
-from slidespin import outcomes  # noqa: E402
-from slidespin.case import load_case  # noqa: E402
-from slidespin.cli import main  # noqa: E402
-from slidespin.plotting import STICK_GID, plot_loaded_trajectory, plot_trajectory  # noqa: E402
-from slidespin.simulate import simulate  # noqa: E402
+from slidespin.cli.main import main  # noqa: E402
+from slidespin.motion import outcomes  # noqa: E402
+from slidespin.motion.simulate import simulate  # noqa: E402
+from slidespin.studies.case import load_case  # noqa: E402
+from slidespin.viz.plotting import STICK_GID, plot_loaded_trajectory, plot_trajectory  # noqa: E402
 
 MU, G, MASS = 0.3, 9.81, 1.0
 PEAK = 2.0 * MU * MASS * G  # the force at t = 2 s [N]
@@ -303,7 +303,7 @@ def test_every_outcome_the_loaded_engine_can_report_is_in_the_vocabulary():
     assert "ok" in statuses and "max_phases" in statuses and "no_onset" in statuses
     assert statuses <= set(outcomes.LOADED_STATUSES)
     assert endings <= set(outcomes.LOADED_ENDINGS)
-    import slidespin.loaded as loaded
+    import slidespin.motion.loaded as loaded
 
     assert tuple(loaded.LOADED_ENDINGS) == outcomes.LOADED_ENDINGS
 

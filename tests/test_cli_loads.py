@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from slidespin.cli import main
+from slidespin.cli.main import main
 
 BASE = """
 name = "t"

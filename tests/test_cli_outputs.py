@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from slidespin.cli import main
+from slidespin.cli.main import main
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 DEMO = str(EXAMPLES / "demo.toml")
@@ -31,7 +31,7 @@ def one_line_error(capsys, *fragments):
 @pytest.fixture
 def no_simulation(monkeypatch):
     """Fail the test if any trajectory is computed."""
-    sim = sys.modules["slidespin.simulate"]
+    sim = sys.modules["slidespin.motion.simulate"]
 
     def forbidden(*args, **kwargs):
         raise AssertionError("simulate() was called before the outputs were checked")
@@ -50,8 +50,7 @@ def test_csv_rows_do_not_depend_on_plot(tmp_path, capsys):
 
 
 @pytest.mark.parametrize("plot", ["x.jpgx", "out.xyz", "noextension"])
-def test_unknown_figure_format_is_refused_before_any_work(tmp_path, capsys, no_simulation,
-                                                          plot):
+def test_unknown_figure_format_is_refused_before_any_work(tmp_path, capsys, no_simulation, plot):
     csv = tmp_path / "x.csv"
     code = main(["simulate", DEMO, "--csv", str(csv), "--plot", str(tmp_path / plot)])
     assert code == 2
@@ -71,8 +70,9 @@ def test_same_file_for_two_outputs_is_refused(tmp_path, capsys, no_simulation):
     one_line_error(capsys, "same file")
 
 
-@pytest.mark.parametrize("code, words", [(errno.ENOSPC, "disk full"),
-                                         (errno.EACCES, "permission denied")])
+@pytest.mark.parametrize(
+    "code, words", [(errno.ENOSPC, "disk full"), (errno.EACCES, "permission denied")]
+)
 def test_failed_write_leaves_nothing(tmp_path, capsys, monkeypatch, code, words):
     """The second of two outputs fails (disk full, permission denied): the first is removed
     again, and the message says what happened to which file."""
@@ -118,7 +118,7 @@ def test_json_output_is_json_only(tmp_path, capsys):
 
 
 def test_write_outputs_is_all_or_nothing(tmp_path, monkeypatch):
-    from slidespin import cli
+    from slidespin.cli.main import main as cli
 
     good = tmp_path / "a.txt"
     bad = tmp_path / "missing-dir-is-a-file" / "b.txt"

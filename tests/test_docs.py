@@ -24,10 +24,21 @@ pytestmark = pytest.mark.docs
 
 DOCS = Path(__file__).resolve().parents[1] / "docs"
 PUBLIC_MODULES = (
-    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.sweep_loads",
-    "slidespin.terminal", "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
-    "slidespin.loaded", "slidespin.limit_surface", "slidespin.footprint",
-    "slidespin.footprint_pressure", "slidespin.footprint_wrench", "slidespin.animate",
+    "slidespin",
+    "slidespin.motion.batch",
+    "slidespin.studies.sweep",
+    "slidespin.studies.sweep_loads",
+    "slidespin.analysis.terminal",
+    "slidespin.motion.outcomes",
+    "slidespin.analysis.fit",
+    "slidespin.motion.loads",
+    "slidespin.contact.statics",
+    "slidespin.motion.loaded",
+    "slidespin.contact.limit_surface",
+    "slidespin.contact.shapes",
+    "slidespin.contact.pressure_map",
+    "slidespin.contact.footprint_wrench",
+    "slidespin.viz.animate",
 )
 
 
@@ -37,9 +48,25 @@ def site(tmp_path_factory):
     html, doctrees = out / "html", out / "doctrees"
     env = dict(os.environ, MPLBACKEND="Agg")
     proc = subprocess.run(
-        [sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b", "html",
-         "-d", str(doctrees), str(DOCS), str(html)],
-        env=env, capture_output=True, text=True, timeout=900, check=False,
+        [
+            sys.executable,
+            "-m",
+            "sphinx",
+            "-W",
+            "--keep-going",
+            "-q",
+            "-b",
+            "html",
+            "-d",
+            str(doctrees),
+            str(DOCS),
+            str(html),
+        ],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=900,
+        check=False,
     )
     assert proc.returncode == 0, f"the docs build failed:\n{proc.stderr[-6000:]}"
     return html
@@ -59,32 +86,55 @@ def _public(module: str) -> list[str]:
     mod = importlib.import_module(module)
     names = getattr(mod, "__all__", None)
     if names is None:
-        names = [n for n, obj in vars(mod).items() if not n.startswith("_")
-                 and getattr(obj, "__module__", None) == module]
+        names = [
+            n
+            for n, obj in vars(mod).items()
+            if not n.startswith("_") and getattr(obj, "__module__", None) == module
+        ]
     return [n for n in names if n != "__version__"]
 
 
 def test_every_public_name_is_in_the_api_reference(site):
     documented = _inventory(site)
-    missing = [f"{m}.{n}" for m in PUBLIC_MODULES for n in _public(m)
-               if f"{m}.{n}" not in documented]
+    missing = [
+        f"{m}.{n}" for m in PUBLIC_MODULES for n in _public(m) if f"{m}.{n}" not in documented
+    ]
     assert not missing, f"not in the API reference: {missing}"
     # a module hidden by a re-exported function of its name has no module entry of its own
-    hidden = {m for m in PUBLIC_MODULES if "." in m and getattr(
-        importlib.import_module("slidespin"), m.rpartition(".")[2]) is not
-        importlib.import_module(m)}
+    hidden = {
+        m
+        for m in PUBLIC_MODULES
+        if "." in m
+        and getattr(importlib.import_module("slidespin"), m.rpartition(".")[2])
+        is not importlib.import_module(m)
+    }
     assert all(m in documented for m in PUBLIC_MODULES if m not in hidden)
 
 
 def test_pages_of_the_site(site):
-    for page in ("index", "getting_started", "guide/index", "guide/simulation", "model",
-                 "paper", "benchmarks", "errors", "loads", "fit", "api/index", "development",
-                 "changelog", "auto_examples/index"):
+    for page in (
+        "index",
+        "getting_started",
+        "guide/index",
+        "guide/simulation",
+        "model",
+        "paper",
+        "benchmarks",
+        "errors",
+        "loads",
+        "fit",
+        "api/index",
+        "development",
+        "changelog",
+        "auto_examples/index",
+    ):
         assert (site / f"{page}.html").is_file(), page
     # the user guide links MODEL §9.1 by its heading anchor
     text = (site / "guide" / "simulation.html").read_text(encoding="utf-8")
-    assert "model.html#what-slidespin-reports-at-the-stop" in text or \
-        "model.html#91-what-slidespin-reports-at-the-stop" in text
+    assert (
+        "model.html#what-slidespin-reports-at-the-stop" in text
+        or "model.html#91-what-slidespin-reports-at-the-stop" in text
+    )
 
 
 def test_gallery_executed_with_figures(site):
@@ -123,8 +173,9 @@ def _undocumented(module: str) -> tuple[list[str], list[str]]:
                 top.append(f"{module}.{name}")
             if inspect.isclass(obj):
                 for k, member in vars(obj).items():
-                    if k.startswith("_") or not (inspect.isfunction(member)
-                                                 or isinstance(member, property)):
+                    if k.startswith("_") or not (
+                        inspect.isfunction(member) or isinstance(member, property)
+                    ):
                         continue
                     if not (member.__doc__ or "").strip():
                         rest.append(f"{module}.{name}.{k}")

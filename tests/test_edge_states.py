@@ -16,8 +16,19 @@ def check(body, fr, cx, cy, om=1.3, phi=0.4, tol=1e-10):
     vx, vy = state_with_icr(body, cx, cy, phi, om)
     w = ss.friction_wrench(body, fr, vx, vy, om, phi, g=1.0)
     xc, yc = body.mass_centre
-    r = reference_wrench(body.patch.a, body.patch.b, body.pressure.name, fr.world_matrix(phi),
-                         phi, vx, vy, om, xi_c=xc, eta_c=yc, P=body.mass)
+    r = reference_wrench(
+        body.patch.a,
+        body.patch.b,
+        body.pressure.name,
+        fr.world_matrix(phi),
+        phi,
+        vx,
+        vy,
+        om,
+        xi_c=xc,
+        eta_c=yc,
+        P=body.mass,
+    )
     a = body.patch.a
     got = np.array([w.force_x, w.force_y, w.moment / a]) / body.mass
     want = np.array([r[0], r[1], r[2] / a]) / body.mass
@@ -26,8 +37,9 @@ def check(body, fr, cx, cy, om=1.3, phi=0.4, tol=1e-10):
 
 
 @pytest.mark.parametrize("law", ["uniform", "boussinesq", "hertz"])
-@pytest.mark.parametrize("icr", [(0.2, 3e-4), (0.5, 0.0), (1.0, 0.0), (0.0, 1e-3), (0.3, 0.01),
-                                 (2.0, 0.1)])
+@pytest.mark.parametrize(
+    "icr", [(0.2, 3e-4), (0.5, 0.0), (1.0, 0.0), (0.0, 1e-3), (0.3, 0.01), (2.0, 0.1)]
+)
 def test_very_flat_ellipse(law, icr):
     """b/a = 1e-3 (a blade): ICR inside, on the rim, on the short axis's rim, outside."""
     a, b = 1.0, 1e-3
@@ -37,8 +49,12 @@ def test_very_flat_ellipse(law, icr):
 
 @pytest.mark.parametrize(
     "fr",
-    [ss.FrictionTensor(0.01, 1.0), ss.FrictionTensor(1.0, 0.01, angle=0.7),
-     ss.FrictionTensor(0.1, 0.2, f=0.5), ss.FrictionTensor(0.2, 0.3, f=-3.0, frame="body")],
+    [
+        ss.FrictionTensor(0.01, 1.0),
+        ss.FrictionTensor(1.0, 0.01, angle=0.7),
+        ss.FrictionTensor(0.1, 0.2, f=0.5),
+        ss.FrictionTensor(0.2, 0.3, f=-3.0, frame="body"),
+    ],
     ids=["fy/fx=100", "fx/fy=100", "|f|>fx", "|f|>>fx body"],
 )
 @pytest.mark.parametrize("icr", [(0.2, 0.1), (1.0, 0.0), (0.7, -0.36), (3.0, 1.0)])
@@ -73,8 +89,9 @@ def test_long_run_of_a_spinning_ellipse_stops():
     """An ellipse spinning thousands of times under a plane-fixed anisotropic tensor (the
     wrench oscillates with φ all the way) still stops, losing energy monotonically."""
     body = ss.Body(ss.Ellipse(0.1, 0.05), ss.UniformPressure(), 1.0)
-    tr = ss.simulate(body, ss.FrictionTensor(0.3, 0.5), ss.State(omega=1200.0, vx=0.01),
-                     max_steps=400_000)
+    tr = ss.simulate(
+        body, ss.FrictionTensor(0.3, 0.5), ss.State(omega=1200.0, vx=0.01), max_steps=400_000
+    )
     assert tr.status == "stopped"
     assert tr.stop_state.phi / (2 * math.pi) > 1000
     e = 0.5 * (tr.vx**2 + tr.vy**2) + 0.5 * body.moment_of_inertia * tr.omega**2
@@ -113,8 +130,9 @@ def test_wrench_is_homogeneous_of_degree_zero(scale):
     vx, vy, om, phi = 0.03, -0.02, 0.7, 0.3
     w = ss.friction_wrench(body, fr, vx * scale, vy * scale, om * scale, phi, g=1.0)
     xc, yc = body.mass_centre
-    r = reference_wrench(0.1, 0.06, "linear", fr.world_matrix(phi), phi, vx, vy, om,
-                         xi_c=xc, eta_c=yc, P=1.5)
+    r = reference_wrench(
+        0.1, 0.06, "linear", fr.world_matrix(phi), phi, vx, vy, om, xi_c=xc, eta_c=yc, P=1.5
+    )
     got = np.array([w.force_x, w.force_y, w.moment / 0.1])
     want = np.array([r[0], r[1], r[2] / 0.1])
     assert np.all(np.isfinite(got))
@@ -129,19 +147,28 @@ def test_arrays_of_mixed_magnitudes():
     vy = np.array([0.0, 1e-300, 0.0, 0.0, -0.2])
     om = np.array([1e300 / 0.05, 1.0 / 0.05, 0.0, 0.0, 4.0])
     w = ss.friction_wrench(body, fr, vx, vy, om)
-    one = [ss.friction_wrench(body, fr, 1.0, 0.0, 20.0), ss.friction_wrench(body, fr, 1.0, 0.0, 20.0)]
+    one = [
+        ss.friction_wrench(body, fr, 1.0, 0.0, 20.0),
+        ss.friction_wrench(body, fr, 1.0, 0.0, 20.0),
+    ]
     assert np.all(np.isfinite([w.force_x, w.force_y, w.moment]))
     for i in range(2):
-        assert (w.force_x[i], w.moment[i]) == pytest.approx((one[i].force_x, one[i].moment),
-                                                            rel=1e-12, abs=1e-14)
+        assert (w.force_x[i], w.moment[i]) == pytest.approx(
+            (one[i].force_x, one[i].moment), rel=1e-12, abs=1e-14
+        )
     assert (w.force_x[2], w.force_y[2], w.moment[2]) == (0.0, 0.0, 0.0)  # at rest
     assert w.force_x[3] == pytest.approx(-0.3 * 9.81, rel=1e-12)  # subnormal speed: sliding
 
 
 @pytest.mark.parametrize("bn", [1e-3, 30.0])
-@pytest.mark.parametrize("fr", [ss.FrictionTensor(5.0, 1e-6, f=5.0, angle=0.7),
-                                ss.FrictionTensor(1e-6, 5.0, f=-5.0, frame="body")],
-                         ids=["plane", "body"])
+@pytest.mark.parametrize(
+    "fr",
+    [
+        ss.FrictionTensor(5.0, 1e-6, f=5.0, angle=0.7),
+        ss.FrictionTensor(1e-6, 5.0, f=-5.0, frame="body"),
+    ],
+    ids=["plane", "body"],
+)
 def test_corners_of_the_valid_ranges(bn, fr):
     """The extreme patch and tensor the ranges allow, with the linear law's centroid on the
     rim of its core: the wrench meets the independent reference and terminal_states (which

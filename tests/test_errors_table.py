@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 import slidespin as ss
-from slidespin.cli import main
+from slidespin.cli.main import main
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "errors.md"
 
@@ -179,8 +179,12 @@ class Worker:
     def __init__(self):
         code = _WORKER.format(tests=str(Path(__file__).resolve().parent))
         self.proc = subprocess.Popen(
-            [sys.executable, "-c", code], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-            stderr=subprocess.DEVNULL, text=True, bufsize=1,
+            [sys.executable, "-c", code],
+            stdin=subprocess.PIPE,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.DEVNULL,
+            text=True,
+            bufsize=1,
         )
         first = self._read(START_SECONDS)
         if first != "ready":
@@ -219,8 +223,9 @@ def test_bad_input_row(where, text, fragment, tmp_path, worker):
     if line is None or line == "":
         worker["w"].close()
         worker["w"] = Worker()
-        pytest.fail(f"{where} row {text!r} did not finish within {ROW_SECONDS:g} s (or its "
-                    "worker died)")
+        pytest.fail(
+            f"{where} row {text!r} did not finish within {ROW_SECONDS:g} s (or its worker died)"
+        )
     result = json.loads(line)
     assert result["ok"], result["error"]
 

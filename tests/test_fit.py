@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.fit import (
+from slidespin.analysis.fit import (
     FitResult,
     FitWarning,
     IdentifiabilityWarning,
@@ -108,8 +108,9 @@ def test_pure_translation_fit_is_the_linear_regression():
     fx, v0, sig = 0.4, 1.0, 1e-3
     t = np.linspace(0.0, 0.9 * v0 / (fx * G), 70)
     x = 0.01 + v0 * t - 0.5 * fx * G * t**2 + rng.normal(0.0, sig, t.size)
-    res = fit({"t": t, "x": x}, plate(), ss.FrictionTensor(0.3, 0.3, 0.0), free=("fx",),
-              sigma={"x": sig})
+    res = fit(
+        {"t": t, "x": x}, plate(), ss.FrictionTensor(0.3, 0.3, 0.0), free=("fx",), sigma={"x": sig}
+    )
     X = np.column_stack([np.ones_like(t), t, -0.5 * G * t**2])
     beta = np.linalg.lstsq(X, x, rcond=None)[0]
     cov = sig**2 * np.linalg.inv(X.T @ X)
@@ -198,8 +199,7 @@ def test_moment_of_inertia_and_friction_together():
     body_true = ss.Body(plate().patch, ss.UniformPressure(), 1.0, moment_of_inertia=0.005)
     runs = synthetic(TRUE, STATES[:2], 100, SIGMA, rng, body=body_true)
     res = fit(runs, plate(), ss.FrictionTensor(0.42, 0.54, 0.04), free=("fx", "moment_of_inertia"))
-    assert abs(res.estimates["moment_of_inertia"] - 0.005) < 3 * res.std_errors[
-        "moment_of_inertia"]
+    assert abs(res.estimates["moment_of_inertia"] - 0.005) < 3 * res.std_errors["moment_of_inertia"]
     assert res.std_errors["moment_of_inertia"] < 5e-4
     assert abs(res.estimates["fx"] - 0.42) < 3 * res.std_errors["fx"]
 
@@ -211,8 +211,12 @@ def test_linear_law_centroid_and_tensor_angle():
     fr_true = ss.FrictionTensor(0.4, 0.6, 0.0, angle=0.5)
     runs = synthetic(fr_true, STATES[:2], 100, SIGMA, rng, body=body_true)
     guess_body = ss.Body(plate().patch, ss.LinearPressure(0.0, 0.0), 1.0, 0.003)
-    res = fit(runs, guess_body, ss.FrictionTensor(0.4, 0.6, 0.0, angle=0.3),
-              free=("xi_c", "eta_c", "angle"))
+    res = fit(
+        runs,
+        guess_body,
+        ss.FrictionTensor(0.4, 0.6, 0.0, angle=0.3),
+        free=("xi_c", "eta_c", "angle"),
+    )
     for name, truth in (("xi_c", 0.01), ("eta_c", -0.004), ("angle", 0.5)):
         assert abs(res.estimates[name] - truth) < 3 * res.std_errors[name], name
 
@@ -232,7 +236,7 @@ def test_robust_loss_resists_outliers():
 # -- identifiability ----------------------------------------------------------------------------
 
 
-@pytest.mark.filterwarnings("ignore:the fit ended at a bound:slidespin.fit.FitWarning")
+@pytest.mark.filterwarnings("ignore:the fit ended at a bound:slidespin.analysis.fit.FitWarning")
 def test_run_sliding_only_along_x_cannot_tell_fy():
     """Closed-form pure translation along x (y and phi measured as noise around 0)."""
     rng = np.random.default_rng(3)
@@ -240,8 +244,12 @@ def test_run_sliding_only_along_x_cannot_tell_fy():
     ts = v0 / (fx * G)
     t = np.linspace(0.0, 1.2 * ts, 80)
     tc = np.minimum(t, ts)
-    run = {"t": t, "x": v0 * tc - 0.5 * fx * G * tc**2 + rng.normal(0, 1e-3, t.size),
-           "y": rng.normal(0, 1e-3, t.size), "phi": rng.normal(0, 1e-2, t.size)}
+    run = {
+        "t": t,
+        "x": v0 * tc - 0.5 * fx * G * tc**2 + rng.normal(0, 1e-3, t.size),
+        "y": rng.normal(0, 1e-3, t.size),
+        "phi": rng.normal(0, 1e-2, t.size),
+    }
     with pytest.warns(IdentifiabilityWarning, match="fy"):
         res = fit(run, plate(), ss.FrictionTensor(0.3, 0.3), free=("fx", "fy"))
     assert res.std_errors["fy"] == math.inf
@@ -327,8 +335,12 @@ def test_bad_options(kwargs, match):
 
 def test_too_few_points():
     with pytest.raises(ValueError, match="too few measured values: 3 for 4"):
-        fit({"t": [0.0, 0.1, 0.2], "x": [0.0, 0.1, 0.15]}, plate(), ss.FrictionTensor(0.3, 0.3),
-            free=("fx", "fy"))
+        fit(
+            {"t": [0.0, 0.1, 0.2], "x": [0.0, 0.1, 0.15]},
+            plate(),
+            ss.FrictionTensor(0.3, 0.3),
+            free=("fx", "fy"),
+        )
 
 
 def test_known_start_is_not_fitted():
@@ -392,7 +404,7 @@ def test_read_runs_missing_file(tmp_path):
 def test_unfinished_quick_simulations_are_redone_in_full(monkeypatch):
     """Inside a fit a simulation first gets a small step budget; one that ends still moving
     must be run again with the full budget, so the result cannot depend on that budget."""
-    import slidespin.fit as fit_module
+    import slidespin.analysis.fit as fit_module
 
     rng = np.random.default_rng(12)
     runs = synthetic(TRUE, STATES[:1], 60, SIGMA, rng)
@@ -441,7 +453,7 @@ def test_table_with_columns_like_a_dataframe():
 def test_compare_frames_prefers_the_frame_the_data_were_made_with():
     from dataclasses import replace
 
-    from slidespin.fit import compare_frames, frame_score
+    from slidespin.analysis.fit import compare_frames, frame_score
 
     rng = np.random.default_rng(31)
     for frame in ("body", "plane"):
@@ -449,8 +461,9 @@ def test_compare_frames_prefers_the_frame_the_data_were_made_with():
         runs = synthetic(fr, STATES[:2], 80, SIGMA, rng)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", FitWarning)
-            best, scores, fits = compare_frames(runs, plate(), replace(fr, frame="plane"),
-                                                free=("fx", "fy"))
+            best, scores, fits = compare_frames(
+                runs, plate(), replace(fr, frame="plane"), free=("fx", "fy")
+            )
         assert best.friction.frame == frame
         assert scores[frame] < min(scores.values()) + 1e-12
         assert scores == {k: frame_score(v) for k, v in fits.items()}

@@ -1,6 +1,6 @@
-"""``slidespin fit`` (slidespin.fit_cli) and the shipped synthetic example.
+"""``slidespin fit`` (slidespin.cli.fit) and the shipped synthetic example.
 
-The plugin is registered here the way slidespin.cli registers its plugins, so the tests
+The plugin is registered here the way slidespin.cli.main registers its plugins, so the tests
 run through ``slidespin.cli.main`` (one-line errors, exit status 2) whether or not the
 line is already in ``cli._PLUGINS``.
 """
@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin import cli
+from slidespin.cli.main import main as cli
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = os.path.join(ROOT, "examples")
@@ -27,13 +27,18 @@ CASE = os.path.join(EXAMPLES, "fit_case.toml")
 @pytest.fixture(autouse=True)
 def fit_plugin(monkeypatch):
     if not any(name == "fit" for name, *_ in cli._PLUGINS):
-        monkeypatch.setattr(cli, "_PLUGINS", cli._PLUGINS + (
-            ("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion"),))
+        monkeypatch.setattr(
+            cli,
+            "_PLUGINS",
+            cli._PLUGINS
+            + (("fit", "slidespin.cli.fit", "fit friction parameters to tracked motion"),),
+        )
 
 
 def example_module():
-    spec = importlib.util.spec_from_file_location("fit_synthetic",
-                                                  os.path.join(EXAMPLES, "fit_synthetic.py"))
+    spec = importlib.util.spec_from_file_location(
+        "fit_synthetic", os.path.join(EXAMPLES, "fit_synthetic.py")
+    )
     mod = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(mod)
     return mod
@@ -69,8 +74,15 @@ def small_runs(rng, states, n=60, sigma=(1e-3, 1e-3, 1e-2)):
     for st in states:
         tr = ss.simulate(body, fr, st, max_step=0.002)
         t = np.linspace(0.0, 1.05 * tr.t_stop, n)
-        runs.append({"t": t, **{c: np.interp(t, tr.t, getattr(tr, c)) + rng.normal(0, s, n)
-                                for c, s in zip(("x", "y", "phi"), sigma)}})
+        runs.append(
+            {
+                "t": t,
+                **{
+                    c: np.interp(t, tr.t, getattr(tr, c)) + rng.normal(0, s, n)
+                    for c, s in zip(("x", "y", "phi"), sigma)
+                },
+            }
+        )
     return runs
 
 
@@ -108,13 +120,27 @@ def test_example_fit_json_recovers_the_truth(capsys):
 def test_table_and_figure(tmp_path, capsys):
     rng = np.random.default_rng(1)
     data = tmp_path / "d.csv"
-    write_csv(data, small_runs(rng, [ss.State.from_speed(1.0, 6.0, 0.6, 0.2),
-                                     ss.State.from_speed(0.9, -9.0, 2.0, 1.0)]))
+    write_csv(
+        data,
+        small_runs(
+            rng, [ss.State.from_speed(1.0, 6.0, 0.6, 0.2), ss.State.from_speed(0.9, -9.0, 2.0, 1.0)]
+        ),
+    )
     case = tmp_path / "c.toml"
     case.write_text(CASE_TEXT)
     png = tmp_path / "fit.png"
-    code = cli.main(["fit", str(data), "--case", str(case), "--plot", str(png),
-                     "--sigma", "x=1e-3,y=1e-3,phi=0.01"])
+    code = cli.main(
+        [
+            "fit",
+            str(data),
+            "--case",
+            str(case),
+            "--plot",
+            str(png),
+            "--sigma",
+            "x=1e-3,y=1e-3,phi=0.01",
+        ]
+    )
     out = capsys.readouterr().out
     assert code == 0
     assert "std error" in out and "fx" in out and "chi2 / dof" in out
@@ -127,8 +153,12 @@ def test_run_along_x_warns_on_stderr_and_reports_null(tmp_path, capsys):
     fx, v0, g = 0.4, 1.0, 9.81
     t = np.linspace(0.0, 1.2 * v0 / (fx * g), 80)
     tc = np.minimum(t, v0 / (fx * g))
-    run = {"t": t, "x": v0 * tc - 0.5 * fx * g * tc**2 + rng.normal(0, 1e-3, t.size),
-           "y": rng.normal(0, 1e-3, t.size), "phi": rng.normal(0, 1e-2, t.size)}
+    run = {
+        "t": t,
+        "x": v0 * tc - 0.5 * fx * g * tc**2 + rng.normal(0, 1e-3, t.size),
+        "y": rng.normal(0, 1e-3, t.size),
+        "phi": rng.normal(0, 1e-2, t.size),
+    }
     data = tmp_path / "x.csv"
     write_csv(data, [run])
     case = tmp_path / "c.toml"

@@ -1,4 +1,4 @@
-"""Fitting friction parameters on footprints (slidespin.fit on Rectangle, Polygon, Pads, ...).
+"""Fitting friction parameters on footprints (slidespin.analysis.fit on Rectangle, Polygon, Pads, ...).
 
 Independent truths: the known parameters of synthetic tracks (a dense simulation sampled by
 plain linear interpolation, not by the fit's Hermite interpolant, plus Gaussian noise), the
@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.fit import FitWarning, _core_scale, fit
+from slidespin.analysis.fit import FitWarning, _core_scale, fit
 
 L, W = 0.12, 0.06  # rectangle [m]
 TRUE = ss.FrictionTensor(0.42, 0.54)
@@ -175,14 +175,14 @@ def test_command_line_fit_on_a_rectangle_case(tmp_path, capsys, monkeypatch):
     """`slidespin fit DATA.csv --case BOX.toml --json` with a [patch] rectangle."""
     import json
 
-    from slidespin import cli
+    from slidespin.cli.main import main as cli
 
     if not any(name == "fit" for name, *_ in cli._PLUGINS):  # as tests/test_fit_cli.py
         monkeypatch.setattr(
             cli,
             "_PLUGINS",
             cli._PLUGINS
-            + (("fit", "slidespin.fit_cli", "fit friction parameters to tracked motion"),),
+            + (("fit", "slidespin.cli.fit", "fit friction parameters to tracked motion"),),
         )
     body = box()
     rng = np.random.default_rng(4)

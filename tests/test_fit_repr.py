@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.fit import IdentifiabilityWarning, fit
+from slidespin.analysis.fit import IdentifiabilityWarning, fit
 
 pd = pytest.importorskip("pandas")
 

@@ -19,16 +19,16 @@ from scipy.special import ellipe, ellipk
 
 import slidespin as ss
 from footprint_reference import reference_power, reference_pressure, reference_wrench
-from slidespin import _footprint_kernel as K
-from slidespin.footprint import Annulus, Disk, Pads, Polygon, Rectangle
-from slidespin.footprint_pressure import (
+from slidespin.contact import _kernel_footprint as K
+from slidespin.contact.footprint_wrench import footprint_wrench
+from slidespin.contact.pressure_map import (
     PressureMap,
     area_rule,
     kernel_geometry,
     mass_centre,
     pressure_coefficients,
 )
-from slidespin.footprint_wrench import footprint_wrench
+from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
 
 TOL = 1e-9  # agreement with the reference: units of P (force) and P × extent (moment)
 
@@ -43,8 +43,13 @@ FOOTPRINTS = {
     "arrow-cw": Polygon(ARROW[::-1]),
     "disk": Disk(0.1, centre=(0.01, 0.02)),
     "ring": Annulus(0.06, 0.1),
-    "pads": Pads([Disk(0.03, centre=(-0.15, 0.0)), Rectangle(0.06, 0.2, centre=(0.12, 0.0)),
-                  Polygon([(0.0, 0.1), (0.05, 0.15), (-0.05, 0.15)])]),
+    "pads": Pads(
+        [
+            Disk(0.03, centre=(-0.15, 0.0)),
+            Rectangle(0.06, 0.2, centre=(0.12, 0.0)),
+            Polygon([(0.0, 0.1), (0.05, 0.15), (-0.05, 0.15)]),
+        ]
+    ),
 }
 
 TENSORS = {
@@ -76,13 +81,15 @@ def _icr_points(fp):
     """Named ICR positions (body frame) for every motion regime of the footprint."""
     a = fp.to_arrays()
     ox, oy, ext = a.frame
-    pts = {"centroid-ish": (ox + 0.13 * ext, oy - 0.07 * ext),
-           "outside-near": (ox + 1.3 * ext, oy + 0.4 * ext),
-           "mid": (ox - 6.0 * ext, oy + 3.0 * ext),
-           "far": (ox + 300.0 * ext, oy - 200.0 * ext),
-           # either side of the kernel's switch from the exact fan to the far-field rule
-           "switch-fan": (ox + 0.99 * K.FAR_RATIO * ext, oy),
-           "switch-far": (ox, oy - 1.01 * K.FAR_RATIO * ext)}
+    pts = {
+        "centroid-ish": (ox + 0.13 * ext, oy - 0.07 * ext),
+        "outside-near": (ox + 1.3 * ext, oy + 0.4 * ext),
+        "mid": (ox - 6.0 * ext, oy + 3.0 * ext),
+        "far": (ox + 300.0 * ext, oy - 200.0 * ext),
+        # either side of the kernel's switch from the exact fan to the far-field rule
+        "switch-fan": (ox + 0.99 * K.FAR_RATIO * ext, oy),
+        "switch-far": (ox, oy - 1.01 * K.FAR_RATIO * ext),
+    }
     if len(a.edges):
         x0, y0, x1, y1 = a.edges[1]
         pts["vertex"] = (x0, y0)
@@ -97,12 +104,20 @@ def _icr_points(fp):
     return pts
 
 
-CASES = [(f, law, t, icr) for f in FOOTPRINTS for law in ("uniform", "linear")
-         for t in TENSORS for icr in _icr_points(FOOTPRINTS[f])]
+CASES = [
+    (f, law, t, icr)
+    for f in FOOTPRINTS
+    for law in ("uniform", "linear")
+    for t in TENSORS
+    for icr in _icr_points(FOOTPRINTS[f])
+]
 # a representative subset for the slow reference: every footprint × law × ICR regime, the
 # tensors cycled through
-REF_CASES = [c for i, c in enumerate(CASES) if list(TENSORS).index(c[2]) == i % len(TENSORS)
-             or c[3] in ("vertex", "edge", "hole", "rim")]
+REF_CASES = [
+    c
+    for i, c in enumerate(CASES)
+    if list(TENSORS).index(c[2]) == i % len(TENSORS) or c[3] in ("vertex", "edge", "hole", "rim")
+]
 
 
 def _compare(fp, lawname, tname, icr_name, phi=0.7, omega=-2.5):
@@ -113,11 +128,15 @@ def _compare(fp, lawname, tname, icr_name, phi=0.7, omega=-2.5):
     fr = TENSORS[tname]
     load = 3.0
     w = footprint_wrench(fp_obj, law, fr, vx, vy, omega, phi, load=load)
-    ref = reference_wrench(fp_obj, ref_law, fr.matrix, vx, vy, omega, phi=phi, frame=fr.frame,
-                           load=load)
+    ref = reference_wrench(
+        fp_obj, ref_law, fr.matrix, vx, vy, omega, phi=phi, frame=fr.frame, load=load
+    )
     ext = fp_obj.to_arrays().frame[2]
-    return (np.array([w.force_x, w.force_y, w.moment / ext]),
-            np.array([ref[0], ref[1], ref[2] / ext]), load)
+    return (
+        np.array([w.force_x, w.force_y, w.moment / ext]),
+        np.array([ref[0], ref[1], ref[2] / ext]),
+        load,
+    )
 
 
 @pytest.mark.parametrize("fp,law,tensor,icr", REF_CASES)
@@ -145,16 +164,32 @@ def test_ring_pure_spin_torque(inner):
     outer, mu, load = 0.1, 0.35, 7.0
     fp = Annulus(inner, outer, centre=(0.2, -0.1))
     for omega in (3.0, -0.5):
-        w = footprint_wrench(fp, ss.UniformPressure(), ss.FrictionTensor.isotropic(mu), 0.0,
-                             0.0, omega, 1.1, load=load)
-        exact = -math.copysign(1.0, omega) * 2.0 / 3.0 * mu * load * (outer**3 - inner**3) / (
-            outer**2 - inner**2)
+        w = footprint_wrench(
+            fp,
+            ss.UniformPressure(),
+            ss.FrictionTensor.isotropic(mu),
+            0.0,
+            0.0,
+            omega,
+            1.1,
+            load=load,
+        )
+        exact = (
+            -math.copysign(1.0, omega)
+            * 2.0
+            / 3.0
+            * mu
+            * load
+            * (outer**3 - inner**3)
+            / (outer**2 - inner**2)
+        )
         assert abs(w.moment - exact) <= 1e-13 * load * outer
         assert abs(w.force_x) + abs(w.force_y) <= 1e-13 * load
 
 
-@pytest.mark.parametrize("icr", [(0.02, 0.01), (0.045, 0.0), (0.07, 0.03), (0.1, 0.0),
-                                 (0.3, -0.2), (0.0, 0.0)])
+@pytest.mark.parametrize(
+    "icr", [(0.02, 0.01), (0.045, 0.0), (0.07, 0.03), (0.1, 0.0), (0.3, -0.2), (0.0, 0.0)]
+)
 def test_ring_is_disk_minus_disk(icr):
     """Uniform ring = outer disk (load ∝ its area) minus the hole (by linearity)."""
     r, big, load = 0.05, 0.1, 1.0
@@ -184,8 +219,16 @@ def test_disk_matches_ellipse_kernel(tensor, kind):
     fr = TENSORS[tensor]
     law = ss.UniformPressure() if kind == "uniform" else ss.LinearPressure(0.015, -0.01)
     disk = Disk(a)
-    for icr in [(0.0, 0.0), (0.03, -0.05), (0.1, 0.0), (0.0, -0.0999999), (0.06, 0.08),
-                (0.13, 0.02), (0.5, -0.7), (40.0, 3.0)]:
+    for icr in [
+        (0.0, 0.0),
+        (0.03, -0.05),
+        (0.1, 0.0),
+        (0.0, -0.0999999),
+        (0.06, 0.08),
+        (0.13, 0.02),
+        (0.5, -0.7),
+        (40.0, 3.0),
+    ]:
         for phi in (0.0, 1.2):
             vx, vy = _velocity(disk, law, icr, phi, 1.7)
             w = footprint_wrench(disk, law, fr, vx, vy, 1.7, phi, load=load)
@@ -197,8 +240,9 @@ def test_disk_matches_ellipse_kernel(tensor, kind):
 
 def test_disk_pure_spin_closed_form():
     """Pure spin of a uniform disk about its centre: M = −(2/3) f P a (MODEL §8)."""
-    w = footprint_wrench(Disk(0.2), ss.UniformPressure(), ss.FrictionTensor.isotropic(0.5),
-                         0.0, 0.0, 4.0, load=3.0)
+    w = footprint_wrench(
+        Disk(0.2), ss.UniformPressure(), ss.FrictionTensor.isotropic(0.5), 0.0, 0.0, 4.0, load=3.0
+    )
     assert abs(w.moment + 2.0 / 3.0 * 0.5 * 3.0 * 0.2) <= 1e-14
 
 
@@ -221,8 +265,12 @@ def test_polygon_tends_to_disk():
         for vx, vy, om in states:
             w = footprint_wrench(fp, law, fr, vx, vy, om)
             e = _ellipse_kernel(a, law, fr, vx, vy, om, 0.0, 1.0)
-            err = max(err, abs(w.force_x - e.force_x), abs(w.force_y - e.force_y),
-                      abs(w.moment - e.moment) / a)
+            err = max(
+                err,
+                abs(w.force_x - e.force_x),
+                abs(w.force_y - e.force_y),
+                abs(w.moment - e.moment) / a,
+            )
         errs.append(err)
     assert errs[2] < 2e-4
     assert 3.0 < errs[0] / errs[1] < 5.0 and 3.0 < errs[1] / errs[2] < 5.0
@@ -240,8 +288,13 @@ def test_ring_with_vanishing_hole_is_disk(icr):
     errs = []
     for r in (1e-3, 1e-4, 1e-5):  # hole radius [m]: the difference is O((r/R)²)
         ring = footprint_wrench(Annulus(r, 0.1), law, fr, vx, vy, 1.0)
-        errs.append(max(abs(ring.force_x - disk.force_x), abs(ring.force_y - disk.force_y),
-                        abs(ring.moment - disk.moment) / 0.1))
+        errs.append(
+            max(
+                abs(ring.force_x - disk.force_x),
+                abs(ring.force_y - disk.force_y),
+                abs(ring.moment - disk.moment) / 0.1,
+            )
+        )
     assert errs[2] < 2.0 * 0.6 * (1e-5 / 0.1) ** 2  # ‖𝔽‖ (r/R)² P, twice
     assert 80.0 < errs[0] / errs[1] < 120.0 and 80.0 < errs[1] / errs[2] < 120.0
 
@@ -333,6 +386,7 @@ def test_disk_moments_against_quad(m):
     for outside in (False, True):
         got = K.disk_moments(m, outside)
         for n in range(4):
+
             def f(t, n=n, outside=outside):
                 s2 = np.sin(t) ** 2
                 if outside:
@@ -340,9 +394,11 @@ def test_disk_moments_against_quad(m):
                 return s2**n * np.sqrt(1.0 - m * s2)
 
             # graded breaks towards π/2, where the integrand is near-singular as m → 1
-            brk = [0.5 * np.pi - 10.0 ** -k for k in range(1, 9)]
-            exact = sum(quad(f, a, b, epsabs=1e-17, epsrel=1e-14, limit=200)[0]
-                        for a, b in zip([0.0] + brk, brk + [0.5 * np.pi]))
+            brk = [0.5 * np.pi - 10.0**-k for k in range(1, 9)]
+            exact = sum(
+                quad(f, a, b, epsabs=1e-17, epsrel=1e-14, limit=200)[0]
+                for a, b in zip([0.0] + brk, brk + [0.5 * np.pi])
+            )
             assert abs(got[n] - exact) <= 2e-14, (n, outside, got[n], exact)
     if m < 1.0:  # U₀ = E(m), U₁ = ((1 − m)K − (1 − 2m)E)/(3m)
         e, k = ellipe(m), ellipk(m)
@@ -373,8 +429,7 @@ def test_polygon_properties_closed_form():
     assert np.allclose(Polygon(L_SHAPE[::-1]).second_moment, lsh.second_moment, atol=1e-18)
     ring = Annulus(0.05, 0.1, centre=(1.0, 2.0))
     assert abs(ring.area - math.pi * (0.01 - 0.0025)) < 1e-15
-    assert np.allclose(ring.second_moment, np.eye(2) * math.pi * (0.1**4 - 0.05**4) / 4,
-                       atol=1e-18)
+    assert np.allclose(ring.second_moment, np.eye(2) * math.pi * (0.1**4 - 0.05**4) / 4, atol=1e-18)
     assert abs(ring.plate_inertia(2.0) - 2.0 * (0.1**2 + 0.05**2) / 2) < 1e-13 * 0.0125
 
 
@@ -389,33 +444,37 @@ def test_arrays_layout():
     assert ring[:, 3].tolist() == [1.0, -1.0]
     # extent: the farthest vertex or disk rim from the area centroid
     ox, oy = fp.centroid
-    far = max(np.hypot(a.edges[:, 0] - ox, a.edges[:, 1] - oy).max(),
-              math.hypot(-0.15 - ox, oy) + 0.03)
+    far = max(
+        np.hypot(a.edges[:, 0] - ox, a.edges[:, 1] - oy).max(), math.hypot(-0.15 - ox, oy) + 0.03
+    )
     assert abs(a.frame[2] - far) < 1e-15 and np.allclose(a.frame[:2], (ox, oy), atol=1e-16)
     for o in fp.outlines():
         assert np.allclose(o[0], o[-1])
 
 
-@pytest.mark.parametrize("make,word", [
-    (lambda: Polygon([(0, 0), (1, 1), (1, 0), (0, 1)]), "intersect"),
-    (lambda: Polygon([(0, 0), (1, 0), (2, 0)]), "vertices"),  # collinear: no area
-    (lambda: Polygon([(0, 0), (1, 0), (1, 0), (0, 1)]), "repeats"),
-    (lambda: Polygon([(0, 0), (1, 0)]), "at least 3"),
-    (lambda: Polygon([(0, 0), (1, 0), (float("nan"), 1)]), "vertices[2]"),
-    (lambda: Polygon([(0, 0), (2, 0), (1, 0), (1, 1)]), "fold back"),
-    (lambda: Rectangle(0.0, 1.0), "length"),
-    (lambda: Rectangle(1.0, 1.0, centre=(1.0,)), "centre"),
-    (lambda: Annulus(0.2, 0.1), "outer_radius"),
-    (lambda: Annulus(-0.1, 0.1), "inner_radius"),
-    (lambda: Disk(-1.0), "radius"),
-    (lambda: Pads([]), "patches"),
-    (lambda: Pads([Rectangle(1, 1), Rectangle(1, 1, centre=(0.5, 0.5))]), "overlap"),
-    (lambda: Pads([Rectangle(2, 1), Rectangle(2, 1, centre=(1.0, 0.0))]), "overlap"),
-    (lambda: Pads([Disk(1.0), Rectangle(1, 1, centre=(1.2, 0.0))]), "overlap"),
-    (lambda: Pads([Annulus(0.5, 1.0), Disk(0.6)]), "overlap"),
-    (lambda: Pads([Annulus(0.5, 1.0), Annulus(0.8, 1.2, centre=(0.1, 0.0))]), "overlap"),
-    (lambda: Pads([Disk(1.0), "square"]), "patches[1]"),
-])
+@pytest.mark.parametrize(
+    "make,word",
+    [
+        (lambda: Polygon([(0, 0), (1, 1), (1, 0), (0, 1)]), "intersect"),
+        (lambda: Polygon([(0, 0), (1, 0), (2, 0)]), "vertices"),  # collinear: no area
+        (lambda: Polygon([(0, 0), (1, 0), (1, 0), (0, 1)]), "repeats"),
+        (lambda: Polygon([(0, 0), (1, 0)]), "at least 3"),
+        (lambda: Polygon([(0, 0), (1, 0), (float("nan"), 1)]), "vertices[2]"),
+        (lambda: Polygon([(0, 0), (2, 0), (1, 0), (1, 1)]), "fold back"),
+        (lambda: Rectangle(0.0, 1.0), "length"),
+        (lambda: Rectangle(1.0, 1.0, centre=(1.0,)), "centre"),
+        (lambda: Annulus(0.2, 0.1), "outer_radius"),
+        (lambda: Annulus(-0.1, 0.1), "inner_radius"),
+        (lambda: Disk(-1.0), "radius"),
+        (lambda: Pads([]), "patches"),
+        (lambda: Pads([Rectangle(1, 1), Rectangle(1, 1, centre=(0.5, 0.5))]), "overlap"),
+        (lambda: Pads([Rectangle(2, 1), Rectangle(2, 1, centre=(1.0, 0.0))]), "overlap"),
+        (lambda: Pads([Disk(1.0), Rectangle(1, 1, centre=(1.2, 0.0))]), "overlap"),
+        (lambda: Pads([Annulus(0.5, 1.0), Disk(0.6)]), "overlap"),
+        (lambda: Pads([Annulus(0.5, 1.0), Annulus(0.8, 1.2, centre=(0.1, 0.0))]), "overlap"),
+        (lambda: Pads([Disk(1.0), "square"]), "patches[1]"),
+    ],
+)
 def test_invalid_footprints(make, word):
     with pytest.raises(ValueError, match=None) as e:
         make()
@@ -481,8 +540,9 @@ def test_negative_linear_pressure_is_an_error():
     with pytest.raises(ValueError, match="xi_c"):
         pressure_coefficients(Rectangle(0.2, 0.1), ss.LinearPressure(0.05, 0.0))
     with pytest.raises(ValueError, match="negative"):
-        footprint_wrench(Annulus(0.05, 0.1), ss.LinearPressure(0.0, 0.04), TENSORS["isotropic"],
-                         1.0, 0.0, 1.0)
+        footprint_wrench(
+            Annulus(0.05, 0.1), ss.LinearPressure(0.0, 0.04), TENSORS["isotropic"], 1.0, 0.0, 1.0
+        )
     # the limit of the core is accepted: a rectangle's linear law vanishes at an edge when the
     # centroid lies at a sixth of the length
     pressure_coefficients(Rectangle(0.3, 0.1), ss.LinearPressure(0.05, 0.0))
@@ -535,8 +595,9 @@ def test_pressure_map_errors():
     with pytest.raises(ValueError, match="function"):
         PressureMap(3.0)
     with pytest.raises(ValueError, match="p = "):
-        footprint_wrench(Rectangle(0.2, 0.1), PressureMap(lambda x, y: x), TENSORS["isotropic"],
-                         1.0, 0.0, 1.0)
+        footprint_wrench(
+            Rectangle(0.2, 0.1), PressureMap(lambda x, y: x), TENSORS["isotropic"], 1.0, 0.0, 1.0
+        )
     with pytest.raises(ValueError, match="xi"):
         PressureMap.from_grid([0, 1, 1, 2], [0, 1, 2, 3], np.ones((4, 4)))
     with pytest.raises(ValueError, match="shape"):
@@ -550,21 +611,25 @@ def test_area_rule_exact_for_polynomials():
         j = fp.second_moment
         c = np.array(fp.centroid)
         d = pts - c
-        assert np.allclose([(w * d[:, 0] ** 2).sum(), (w * d[:, 0] * d[:, 1]).sum()],
-                           [j[0, 0], j[0, 1]], rtol=1e-12, atol=1e-18)
+        assert np.allclose(
+            [(w * d[:, 0] ** 2).sum(), (w * d[:, 0] * d[:, 1]).sum()],
+            [j[0, 0], j[0, 1]],
+            rtol=1e-12,
+            atol=1e-18,
+        )
 
 
 def test_kernel_geometry_layout():
     fp = FOOTPRINTS["rectangle"]
     geo = kernel_geometry(fp, ss.LinearPressure(0.03, -0.02))
     assert geo.shape == (K.NGEO,)
-    assert tuple(geo[K.GEO_XG:K.GEO_YG + 1]) == (0.03, -0.02)
+    assert tuple(geo[K.GEO_XG : K.GEO_YG + 1]) == (0.03, -0.02)
     assert geo[K.GEO_LOAD] == 1.0
 
 
 def test_kernel_in_scaled_units():
     """The kernel reads any length unit: natural units (lengths in ℓ) give F and M/ℓ."""
-    from slidespin.footprint_pressure import scaled_arrays
+    from slidespin.contact.pressure_map import scaled_arrays
 
     fp = FOOTPRINTS["pads"]
     law, _ = _law(fp, "linear")
@@ -576,8 +641,9 @@ def test_kernel_in_scaled_units():
     geo2 = kernel_geometry(fp, law, a, length=ell)
     for vx, vy, om in [(0.1, -0.05, 1.0), (0.0, 0.0, 2.0), (1.0, 0.2, 0.0), (30.0, 5.0, 1.0)]:
         f1 = K.wrench_world(a.edges, a.circles, geo, *t.ravel(), False, 0.3, vx, vy, om)
-        f2 = K.wrench_world(a2.edges, a2.circles, geo2, *t.ravel(), False, 0.3, vx / ell,
-                            vy / ell, om)
+        f2 = K.wrench_world(
+            a2.edges, a2.circles, geo2, *t.ravel(), False, 0.3, vx / ell, vy / ell, om
+        )
         assert np.allclose(f2, (f1[0], f1[1], f1[2] / ell), rtol=0, atol=1e-14)
 
 
@@ -585,8 +651,9 @@ def _star(rng, n):
     """A random star-shaped (generally non-convex) simple polygon around the origin."""
     t = (np.arange(n) + rng.uniform(0.0, 0.4, n)) * 2.0 * np.pi / n  # gaps < π: simple
     r = rng.uniform(0.3, 1.0, n) * 0.1
-    return Polygon(np.column_stack((r * np.cos(t), r * np.sin(t))),
-                   centre=tuple(rng.normal(size=2) * 0.02))
+    return Polygon(
+        np.column_stack((r * np.cos(t), r * np.sin(t))), centre=tuple(rng.normal(size=2) * 0.02)
+    )
 
 
 def test_random_polygons_against_reference():
@@ -597,16 +664,23 @@ def test_random_polygons_against_reference():
         fp = _star(rng, int(rng.integers(3, 9)))
         a = fp.to_arrays()
         ext = a.frame[2]
-        fr = ss.FrictionTensor(*rng.uniform(0.2, 0.8, 2), f=rng.normal() * 0.1,
-                               angle=rng.uniform(0, 3), frame=("plane", "body")[k % 2])
+        fr = ss.FrictionTensor(
+            *rng.uniform(0.2, 0.8, 2),
+            f=rng.normal() * 0.1,
+            angle=rng.uniform(0, 3),
+            frame=("plane", "body")[k % 2],
+        )
         kind = ("uniform", "linear")[k % 2]
         law, ref_law = _law(fp, kind)
         i = int(rng.integers(len(a.edges)))
         x0, y0, x1, y1 = a.edges[i]
         t = rng.uniform()
-        icrs = [(x0, y0), (x0 + t * (x1 - x0), y0 + t * (y1 - y0)),
-                tuple(a.frame[:2] + rng.normal(size=2) * ext),
-                tuple(a.frame[:2] + rng.normal(size=2) * 8 * ext)]
+        icrs = [
+            (x0, y0),
+            (x0 + t * (x1 - x0), y0 + t * (y1 - y0)),
+            tuple(a.frame[:2] + rng.normal(size=2) * ext),
+            tuple(a.frame[:2] + rng.normal(size=2) * 8 * ext),
+        ]
         for icr in icrs:
             phi = rng.uniform(0, 6)
             om = rng.choice([-1.0, 1.0]) * rng.uniform(0.5, 3.0)
@@ -640,9 +714,9 @@ def test_kernel_runs_as_python():
     code = (
         "import numpy as np\n"
         "from slidespin import _footprint_kernel as K\n"
-        "from slidespin.footprint import Annulus, Pads, Polygon, Rectangle\n"
-        "from slidespin.footprint_pressure import kernel_geometry\n"
-        "from slidespin.pressure import LinearPressure\n"
+        "from slidespin.contact.shapes import Annulus, Pads, Polygon, Rectangle\n"
+        "from slidespin.contact.pressure_map import kernel_geometry\n"
+        "from slidespin.contact.pressure import LinearPressure\n"
         "fp = Pads([Polygon([(0, 0), (0.3, 0), (0.3, 0.1), (0.1, 0.1), (0.1, 0.25), (0, 0.25)]),"
         " Annulus(0.03, 0.06, centre=(0.4, 0.1)), Rectangle(0.1, 0.05, centre=(-0.2, 0))])\n"
         "a = fp.to_arrays()\n"
@@ -655,8 +729,9 @@ def test_kernel_runs_as_python():
     res = {}
     for jit in ("0", "1"):
         env = dict(os.environ, NUMBA_DISABLE_JIT=jit)
-        out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
-                             text=True, check=True)
+        out = subprocess.run(
+            [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+        )
         res[jit] = np.array(eval(out.stdout))  # our own output
     assert np.allclose(res["0"], res["1"], rtol=0, atol=1e-15)
 
@@ -708,8 +783,9 @@ def test_collinear_vertices_change_nothing():
 def _inertia_for_ratio(fp, beta, radius):
     """J(β) = β M_paper/F_τ in units of radius (MODEL §6): the I* = I/(m R²) whose terminal
     ratio v/(Rω) is β, for an axisymmetric footprint under isotropic friction (ϑ = 0)."""
-    w = footprint_wrench(fp, ss.UniformPressure(), ss.FrictionTensor.isotropic(0.3),
-                         beta * radius, 0.0, 1.0)
+    w = footprint_wrench(
+        fp, ss.UniformPressure(), ss.FrictionTensor.isotropic(0.3), beta * radius, 0.0, 1.0
+    )
     return beta * w.moment_paper / (w.tangential * radius)
 
 
@@ -720,8 +796,9 @@ def test_published_terminal_ratios():
 
     beta = brentq(lambda b: _inertia_for_ratio(Disk(0.2), b, 0.2) - 0.5, 0.3, 1.0, xtol=1e-12)
     assert abs(beta - 0.653) < 5e-4
-    gaps = [1.0 - _inertia_for_ratio(Annulus(1.0 - eps, 1.0), 1.0, 1.0)
-            for eps in (1e-2, 1e-3, 1e-4)]
+    gaps = [
+        1.0 - _inertia_for_ratio(Annulus(1.0 - eps, 1.0), 1.0, 1.0) for eps in (1e-2, 1e-3, 1e-4)
+    ]
     assert 0.0 < gaps[2] < 1e-3 and gaps[0] > gaps[1] > gaps[2]
 
 
@@ -737,12 +814,17 @@ def test_scale_invariance(scale):
     """Lengths × λ and velocities × λ: the same force, the moment × λ (mm to km footprints)."""
     fr = TENSORS["skew"]
     base = Pads([Polygon(L_SHAPE), Annulus(0.02, 0.05, centre=(0.4, 0.1))])
-    big = Pads([Polygon([(scale * x, scale * y) for x, y in L_SHAPE]),
-                Annulus(0.02 * scale, 0.05 * scale, centre=(0.4 * scale, 0.1 * scale))])
+    big = Pads(
+        [
+            Polygon([(scale * x, scale * y) for x, y in L_SHAPE]),
+            Annulus(0.02 * scale, 0.05 * scale, centre=(0.4 * scale, 0.1 * scale)),
+        ]
+    )
     for kind in ("uniform", "linear"):
         law, _ = _law(base, kind)
-        law_big = law if kind == "uniform" else ss.LinearPressure(law.xi_c * scale,
-                                                                  law.eta_c * scale)
+        law_big = (
+            law if kind == "uniform" else ss.LinearPressure(law.xi_c * scale, law.eta_c * scale)
+        )
         for vx, vy, om in [(0.1, 0.05, 1.0), (0.0, 0.0, 1.0), (3.0, -1.0, 1.0), (1.0, 0.0, 0.0)]:
             a = footprint_wrench(base, law, fr, vx, vy, om)
             b = footprint_wrench(big, law_big, fr, vx * scale, vy * scale, om)
@@ -756,8 +838,9 @@ def test_triangulations_cover_the_polygons():
     comb = Polygon([(0, 0), (4, 0), (4, 1), (3, 1), (2, 0.5), (1, 1), (0, 1)])
     for fp in [comb, _ngon(256, 1.0), Polygon(L_SHAPE), Polygon(ARROW[::-1])]:
         t = fp.triangles()
-        cr = ((t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1])
-              - (t[:, 1, 1] - t[:, 0, 1]) * (t[:, 2, 0] - t[:, 0, 0]))
+        cr = (t[:, 1, 0] - t[:, 0, 0]) * (t[:, 2, 1] - t[:, 0, 1]) - (t[:, 1, 1] - t[:, 0, 1]) * (
+            t[:, 2, 0] - t[:, 0, 0]
+        )
         assert np.all(cr > 0) and abs(0.5 * cr.sum() - fp.area) < 1e-14 * max(fp.area, 1.0)
 
 

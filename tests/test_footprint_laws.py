@@ -24,10 +24,10 @@ import pytest
 from scipy.integrate import quad
 
 import slidespin as ss
-from slidespin._blade_kernel import NEAR
-from slidespin.footprint import Annulus, Blade, Disk, Pads, Polygon, Rectangle
-from slidespin.footprint_pressure import PressureMap, density, mass_centre
-from slidespin.footprint_wrench import footprint_wrench
+from slidespin.contact._kernel_blade import NEAR
+from slidespin.contact.footprint_wrench import footprint_wrench
+from slidespin.contact.pressure_map import PressureMap, density, mass_centre
+from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle
 
 ROUND_LAWS = {"hertz": ss.HertzPressure(), "boussinesq": ss.BoussinesqPressure()}
 #: pure-spin torque of a centred disk under isotropic friction, in units of μ P R (MODEL §8)
@@ -187,7 +187,7 @@ def test_disk_round_law_simulate_equals_circle(law):
 
 def test_disk_round_law_batch_and_terminal_equal_circle():
     """simulate_many, simulate_bodies and the terminal analysis: the Circle body's numbers."""
-    from slidespin.batch import simulate_bodies, simulate_many
+    from slidespin.motion.batch import simulate_bodies, simulate_many
 
     pressure = ss.HertzPressure()
     friction = ss.FrictionTensor(0.3, 0.4, 0.02)
@@ -471,8 +471,6 @@ def test_blade_body():
         Blade(1e-3, centre=(1e4, 0.0))
 
 
-
-
 def test_blade_simulate_closed_forms():
     """Pure spin about the centre: I ω̇ = −μ m g L/4 with I = m L²/12, so t = L ω₀/(3 μ g);
     pure sliding: t = v₀/(μ g) (isotropic friction)."""
@@ -520,13 +518,20 @@ def test_disk_under_elliptic_laws_has_table2_inertia_intervals(law):
     """A Disk (any radius and centre) under Boussinesq or Hertz pressure has the printed Table
     2 boundaries (MODEL §6–7; isotropic and orthotropic with μ = fy − fx)."""
     printed = {
-        "boussinesq": lambda fx, mu: ((fx + mu) / (3 * fx), (4 * fx + 3 * mu) / (8 * fx),
-                                      (2 * fx + mu) / (2 * fx)),
-        "hertz": lambda fx, mu: ((fx + mu) / (5 * fx), (6 * fx + 5 * mu) / (24 * fx),
-                                 (2 * fx + mu) / (4 * fx)),
+        "boussinesq": lambda fx, mu: (
+            (fx + mu) / (3 * fx),
+            (4 * fx + 3 * mu) / (8 * fx),
+            (2 * fx + mu) / (2 * fx),
+        ),
+        "hertz": lambda fx, mu: (
+            (fx + mu) / (5 * fx),
+            (6 * fx + 5 * mu) / (24 * fx),
+            (2 * fx + mu) / (4 * fx),
+        ),
     }[law]
     pressure = ss.HertzPressure() if law == "hertz" else ss.BoussinesqPressure()
     for fx, fy in ((0.3, 0.3), (0.25, 0.4)):
-        got = ss.inertia_intervals(pressure, ss.FrictionTensor(fx, fy),
-                                   patch=Disk(0.07, centre=(0.02, -0.01)))
+        got = ss.inertia_intervals(
+            pressure, ss.FrictionTensor(fx, fy), patch=Disk(0.07, centre=(0.02, -0.01))
+        )
         np.testing.assert_allclose(tuple(got), printed(fx, fy - fx), rtol=1e-8)

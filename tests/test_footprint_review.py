@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.footprint import MAX_VERTICES, Disk, Pads, Polygon, Rectangle
+from slidespin.contact.shapes import MAX_VERTICES, Disk, Pads, Polygon, Rectangle
 
 # ---------------------------------------------------------------------------------------------
 # P1-6: polygon simplicity, vectorised

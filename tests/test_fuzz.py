@@ -68,11 +68,59 @@ def time_limit(soft=SOFT_SECONDS, hard=HARD_SECONDS):
 # inputs
 # ------------------------------------------------------------------------------------------
 SPECIAL = [
-    0, 0.0, -0.0, 1, -1, -1.0, 5e-324, 1e-320, 1e-300, 1e-200, 1e-13, 1e-12, 1e-9, 1e-8,
-    1e-6, 1e-3, 0.05, 0.25, 0.3, 0.9999999, 1.0, 5.0, 30.0, 1e3, 1e6, 1e8, 1e12, 1e15, 1e200,
-    1e300, 1.7976931348623157e308, -1e300, -1.7976931348623157e308, math.inf, -math.inf,
-    math.nan, True, False, "1", "nan", "", None, 10**400, -(10**400), 2**64, 2**63, 1j,
-    [1.0, 2.0], (0.1,), np.float32(0.25), np.int64(7), np.float64("nan"), np.bool_(True),
+    0,
+    0.0,
+    -0.0,
+    1,
+    -1,
+    -1.0,
+    5e-324,
+    1e-320,
+    1e-300,
+    1e-200,
+    1e-13,
+    1e-12,
+    1e-9,
+    1e-8,
+    1e-6,
+    1e-3,
+    0.05,
+    0.25,
+    0.3,
+    0.9999999,
+    1.0,
+    5.0,
+    30.0,
+    1e3,
+    1e6,
+    1e8,
+    1e12,
+    1e15,
+    1e200,
+    1e300,
+    1.7976931348623157e308,
+    -1e300,
+    -1.7976931348623157e308,
+    math.inf,
+    -math.inf,
+    math.nan,
+    True,
+    False,
+    "1",
+    "nan",
+    "",
+    None,
+    10**400,
+    -(10**400),
+    2**64,
+    2**63,
+    1j,
+    [1.0, 2.0],
+    (0.1,),
+    np.float32(0.25),
+    np.int64(7),
+    np.float64("nan"),
+    np.bool_(True),
 ]
 numbers = st.one_of(
     st.sampled_from(SPECIAL),
@@ -110,14 +158,20 @@ def laws(draw, patch=None):
         r = draw(st.floats(0.0, 0.25))
         t = draw(st.floats(0.0, 2.0 * math.pi))
         return ss.LinearPressure(r * a * math.cos(t), r * b * math.sin(t))
-    return {"uniform": ss.UniformPressure(), "boussinesq": ss.BoussinesqPressure(),
-            "hertz": ss.HertzPressure()}[kind]
+    return {
+        "uniform": ss.UniformPressure(),
+        "boussinesq": ss.BoussinesqPressure(),
+        "hertz": ss.HertzPressure(),
+    }[kind]
 
 
 coefficients = st.one_of(st.sampled_from([1e-6, 5.0, 0.3]), log_uniform(1e-6, 5.0))
 frictions = st.builds(
-    ss.FrictionTensor, coefficients, coefficients,
-    st.one_of(st.just(0.0), st.floats(-5.0, 5.0)), st.sampled_from(["plane", "body"]),
+    ss.FrictionTensor,
+    coefficients,
+    coefficients,
+    st.one_of(st.just(0.0), st.floats(-5.0, 5.0)),
+    st.sampled_from(["plane", "body"]),
     st.floats(-10.0, 10.0),
 )
 
@@ -205,8 +259,11 @@ def arg(data, valid, label):
 LENGTH = st.one_of(st.sampled_from([1e-9, 1e6, 0.05, 1.0]), log_uniform(1e-9, 1e6))
 ASPECT = st.one_of(st.sampled_from([1e-3, 30.0, 1.0]), log_uniform(1e-3, 30.0))
 FINITE = st.floats(allow_nan=False, allow_infinity=False)
-finite_arrays = st.one_of(FINITE, st.lists(FINITE, min_size=1, max_size=4),
-                          st.sampled_from([0.0, 5e-324, 1e-300, 1e300, -1.7976931348623157e308]))
+finite_arrays = st.one_of(
+    FINITE,
+    st.lists(FINITE, min_size=1, max_size=4),
+    st.sampled_from([0.0, 5e-324, 1e-300, 1e300, -1.7976931348623157e308]),
+)
 
 
 # ------------------------------------------------------------------------------------------
@@ -223,8 +280,12 @@ def test_ellipse(data):
         finite_everywhere((e.a, e.b, e.aspect, e.eccentricity, e.area, e.plate_inertia_ratio()))
         assert 1e-3 <= e.b / e.a <= 30.0
     ecc = arg(data, st.one_of(st.sampled_from([0.0, 0.999999]), st.floats(0.0, 0.999999)), "e")
-    p = call(ss.Ellipse.from_eccentricity, ("a =", "a must", "eccentricity =", "eccentricity must"),
-             a, ecc)
+    p = call(
+        ss.Ellipse.from_eccentricity,
+        ("a =", "a must", "eccentricity =", "eccentricity must"),
+        a,
+        ecc,
+    )
     if p is not None:
         finite_everywhere((p.a, p.b, p.eccentricity, p.area))
 
@@ -251,8 +312,14 @@ def test_pressure_laws(data, kind):
         eta_c = arg(data, st.just(r * patch.b * math.sin(t)), "eta_c")
         p = call(ss.LinearPressure, ("xi_c", "eta_c"), xi_c, eta_c)
     else:
-        p = call({"uniform": ss.UniformPressure, "boussinesq": ss.BoussinesqPressure,
-                  "hertz": ss.HertzPressure}[kind], ())
+        p = call(
+            {
+                "uniform": ss.UniformPressure,
+                "boussinesq": ss.BoussinesqPressure,
+                "hertz": ss.HertzPressure,
+            }[kind],
+            (),
+        )
         assert p is not None
     if p is None:
         return
@@ -276,11 +343,20 @@ def test_friction_tensor(data):
     frame = arg(data, st.sampled_from(["plane", "body", "Body", "world"]), "frame")
     angle = arg(data, st.one_of(st.just(0.0), FINITE), "angle")
     angle_deg = data.draw(st.one_of(st.none(), FINITE, numbers), label="angle_deg")
-    t = call(ss.FrictionTensor, ("fx", "fy", "f =", "f must", "frame", "angle"),
-             fx, fy, f, frame, angle, angle_deg=angle_deg)
+    t = call(
+        ss.FrictionTensor,
+        ("fx", "fy", "f =", "f must", "frame", "angle"),
+        fx,
+        fy,
+        f,
+        frame,
+        angle,
+        angle_deg=angle_deg,
+    )
     if t is not None:
-        finite_everywhere((t.fx, t.fy, t.f, t.angle, t.mu, t.matrix, t.world_matrix(1.0),
-                           t.norm, t.angle_deg))
+        finite_everywhere(
+            (t.fx, t.fy, t.f, t.angle, t.mu, t.matrix, t.world_matrix(1.0), t.norm, t.angle_deg)
+        )
     c = call(ss.FrictionTensor.isotropic, ("coefficient",), fx)
     if c is not None:
         finite_everywhere(c.matrix)
@@ -291,8 +367,9 @@ def test_friction_tensor(data):
 def test_body(data):
     patch = arg(data, patches(), "patch")
     law = arg(data, laws(patch if isinstance(patch, ss.Ellipse) else None), "law")
-    mass = arg(data, st.one_of(st.sampled_from([1e-12, 1e12, 1.0]), log_uniform(1e-12, 1e12)),
-               "mass")
+    mass = arg(
+        data, st.one_of(st.sampled_from([1e-12, 1e12, 1.0]), log_uniform(1e-12, 1e12)), "mass"
+    )
     i_star = arg(data, st.one_of(st.sampled_from([1e-8, 1e8]), log_uniform(1e-8, 1e8)), "I*")
     inertia = None
     if data.draw(st.booleans(), label="explicit inertia"):
@@ -301,8 +378,9 @@ def test_body(data):
     names = ("patch", "pressure", "mass", "moment_of_inertia", "core of the patch")
     b = call(ss.Body, names, patch, law, mass, inertia)
     if b is not None:
-        finite_everywhere((b.mass, b.moment_of_inertia, b.inertia_ratio, b.radius_of_gyration,
-                           b.mass_centre))
+        finite_everywhere(
+            (b.mass, b.moment_of_inertia, b.inertia_ratio, b.radius_of_gyration, b.mass_centre)
+        )
         assert 1e-8 * (1 - 1e-12) <= b.inertia_ratio <= 1e8 * (1 + 1e-12)
     b = call(ss.Body.from_inertia_ratio, names + ("inertia_ratio",), patch, law, mass, i_star)
     if b is not None:
@@ -320,14 +398,30 @@ def test_state(data):
     x, y = arg(data, POSITIONS, "x"), arg(data, POSITIONS, "y")
     phi = arg(data, FINITE, "phi")
     vx, vy, omega = arg(data, SPEEDS, "vx"), arg(data, SPEEDS, "vy"), arg(data, SPINS, "omega")
-    s = call(ss.State, ("x =", "x must", "y =", "y must", "phi", "vx", "vy", "omega"),
-             x, y, phi, vx, vy, omega)
+    s = call(
+        ss.State,
+        ("x =", "x must", "y =", "y must", "phi", "vx", "vy", "omega"),
+        x,
+        y,
+        phi,
+        vx,
+        vy,
+        omega,
+    )
     if s is not None:
         finite_everywhere((s.as_array(), s.speed))
     speed = arg(data, st.floats(0.0, 1e8), "speed")
     theta = arg(data, FINITE, "theta")
-    s = call(ss.State.from_speed, ("speed", "omega", "theta", "phi", "x =", "x must", "y =",
-                                   "y must"), speed, omega, theta, phi, x, y)
+    s = call(
+        ss.State.from_speed,
+        ("speed", "omega", "theta", "phi", "x =", "x must", "y =", "y must"),
+        speed,
+        omega,
+        theta,
+        phi,
+        x,
+        y,
+    )
     if s is not None:
         finite_everywhere(s.as_array())
 
@@ -344,8 +438,7 @@ def test_friction_wrench(data):
     phi = arg(data, st.one_of(st.just(0.0), finite_arrays), "phi")
     g = arg(data, st.one_of(st.just(9.81), log_uniform(1e-6, 1e6)), "g")
     tol = arg(data, st.one_of(st.just(1e-12), log_uniform(1e-13, 1e-2)), "tol")
-    names = ("body", "friction", "vx", "vy", "omega", "phi", "g =", "g must", "tol",
-             "broadcast")
+    names = ("body", "friction", "vx", "vy", "omega", "phi", "g =", "g must", "tol", "broadcast")
     w = call(ss.friction_wrench, names, body, friction, vx, vy, omega, phi, g, tol=tol)
     if w is not None:
         finite_everywhere(w)
@@ -368,10 +461,16 @@ def test_terminal_ratio(data):
     body = arg(data, bodies(), "body")
     friction = arg(data, frictions, "friction")
     phi, theta = arg(data, FINITE, "phi"), arg(data, FINITE, "theta")
-    bracket = data.draw(st.one_of(st.none(), st.none(), BRACKETS, numbers,
-                                  st.tuples(numbers, numbers)), label="bracket")
-    if isinstance(bracket, tuple) and isinstance(body, ss.Body) and len(bracket) == 2 \
-            and all(isinstance(x, float) for x in bracket):
+    bracket = data.draw(
+        st.one_of(st.none(), st.none(), BRACKETS, numbers, st.tuples(numbers, numbers)),
+        label="bracket",
+    )
+    if (
+        isinstance(bracket, tuple)
+        and isinstance(body, ss.Body)
+        and len(bracket) == 2
+        and all(isinstance(x, float) for x in bracket)
+    ):
         bracket = tuple(x * body.patch.a for x in bracket)
     names = ("body", "friction", "phi", "theta", "bracket")
     r = call(ss.terminal_ratio, names, body, friction, phi, theta, bracket=bracket)
@@ -403,11 +502,20 @@ def test_terminal_states(data):
             assert math.isinf(s.beta) and (s.continuum or math.isfinite(s.theta))
 
 
-table2_laws = st.sampled_from([ss.UniformPressure(), ss.BoussinesqPressure(),
-                               ss.HertzPressure(), ss.LinearPressure(0.0, 0.0),
-                               ss.LinearPressure(0.01, 0.0)])
-orthotropic = st.builds(lambda fx, k: ss.FrictionTensor(fx, min(fx * k, 5.0)), coefficients,
-                        st.one_of(st.just(1.0), log_uniform(1.0, 1e6)))
+table2_laws = st.sampled_from(
+    [
+        ss.UniformPressure(),
+        ss.BoussinesqPressure(),
+        ss.HertzPressure(),
+        ss.LinearPressure(0.0, 0.0),
+        ss.LinearPressure(0.01, 0.0),
+    ]
+)
+orthotropic = st.builds(
+    lambda fx, k: ss.FrictionTensor(fx, min(fx * k, 5.0)),
+    coefficients,
+    st.one_of(st.just(1.0), log_uniform(1.0, 1e6)),
+)
 
 
 @FUZZ
@@ -415,9 +523,11 @@ orthotropic = st.builds(lambda fx, k: ss.FrictionTensor(fx, min(fx * k, 5.0)), c
 def test_table2_functions(data):
     law = arg(data, table2_laws, "law")
     friction = arg(data, st.one_of(orthotropic, orthotropic, frictions), "friction")
-    ratio = arg(data, st.one_of(log_uniform(1e-9, 1e9),
-                                st.lists(log_uniform(1e-9, 1e9), min_size=1, max_size=3)),
-                "ratio")
+    ratio = arg(
+        data,
+        st.one_of(log_uniform(1e-9, 1e9), st.lists(log_uniform(1e-9, 1e9), min_size=1, max_size=3)),
+        "ratio",
+    )
     i_star = arg(data, log_uniform(1e-8, 1e8), "I*")
     names = ("pressure", "friction", "mu =", "ratio", "inertia_ratio")
     for fn in (ss.inertia_intervals, ss.paper_inertia_intervals):
@@ -448,20 +558,40 @@ def test_simulate(data):
     g = arg(data, st.one_of(st.just(9.81), log_uniform(1e-6, 1e6)), "g")
     rtol = arg(data, st.one_of(st.just(1e-10), log_uniform(1e-14, 1e-3)), "rtol")
     max_steps = arg(data, st.integers(1, 2000), "max_steps")
-    max_step = data.draw(st.one_of(st.none(), st.none(), log_uniform(1e-6, 1e6), numbers),
-                         label="max_step")
+    max_step = data.draw(
+        st.one_of(st.none(), st.none(), log_uniform(1e-6, 1e6), numbers), label="max_step"
+    )
     if isinstance(max_steps, int) and not isinstance(max_steps, bool) and max_steps > 2000:
         max_steps = 2000  # a budget, not a test of patience
-    names = ("body", "friction", "initial_state", "g =", "g must", "rtol", "max_steps",
-             "max_step")
-    tr = call(ss.simulate, names, body, friction, state, g=g, rtol=rtol, max_steps=max_steps,
-              max_step=max_step)
+    names = ("body", "friction", "initial_state", "g =", "g must", "rtol", "max_steps", "max_step")
+    tr = call(
+        ss.simulate,
+        names,
+        body,
+        friction,
+        state,
+        g=g,
+        rtol=rtol,
+        max_steps=max_steps,
+        max_step=max_step,
+    )
     if tr is None:
         return
     # documented non-finite values: beta (inf pure sliding, NaN at rest / spiral), theta_stop
     # and beta_stop likewise (README, "How a motion ends")
-    for name in ("t", "x", "y", "phi", "vx", "vy", "omega", "speed", "tangential", "normal",
-                 "moment_paper"):
+    for name in (
+        "t",
+        "x",
+        "y",
+        "phi",
+        "vx",
+        "vy",
+        "omega",
+        "speed",
+        "tangential",
+        "normal",
+        "moment_paper",
+    ):
         arr = getattr(tr, name)
         assert np.all(np.isfinite(arr)), (name, arr)
     assert math.isfinite(tr.t_stop) and tr.t_stop >= 0.0
@@ -472,11 +602,13 @@ def test_simulate(data):
 # process, so that a hang or a crash cannot take this module down: each must be refused up
 # front naming the parameter, or give finite results.
 _SETUP = (
-    "import json, math, sys, slidespin as ss, slidespin.batch as sb\n"
+    "import json, math, sys, slidespin as ss, slidespin.motion.batch as sb\n"
     "B = ss.Body(ss.Circle(0.05), ss.UniformPressure(), 1.0)\n"
     "F = ss.FrictionTensor(0.3, 0.4)\n"
 )
-_PROBE = _SETUP + r"""
+_PROBE = (
+    _SETUP
+    + r"""
 try:
     r = eval(sys.argv[1])
 except ValueError as err:
@@ -488,6 +620,7 @@ else:
     ok = t is not None and bool(__import__("numpy").all(__import__("numpy").isfinite(t)))
     print(json.dumps(["result", "finite" if ok else repr(t)[:300]]))
 """
+)
 LEAD_INPUTS = [
     ("ss.simulate(B, F, ss.State(vx=1.0), g=5e-324)", "g ="),
     ("ss.simulate(B, F, ss.State(vx=1.0), max_steps=2**64)", "max_steps ="),
@@ -502,8 +635,13 @@ def test_integrator_issue_inputs(expr, name):
     import subprocess
     import sys
 
-    r = subprocess.run([sys.executable, "-c", _PROBE, expr], capture_output=True, text=True,
-                       timeout=300, check=False)
+    r = subprocess.run(
+        [sys.executable, "-c", _PROBE, expr],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=False,
+    )
     kind, text = json.loads(r.stdout.strip().splitlines()[-1])
     if kind == "ValueError":
         assert name in text, text

@@ -20,8 +20,15 @@ G = 9.81
 def run(name: str, label: str, tmp_path) -> float:
     """Run a gallery script in a fresh interpreter; return the number printed after label."""
     env = dict(os.environ, MPLBACKEND="Agg")
-    proc = subprocess.run([sys.executable, str(GALLERY / name)], cwd=tmp_path, env=env,
-                          capture_output=True, text=True, timeout=600, check=False)
+    proc = subprocess.run(
+        [sys.executable, str(GALLERY / name)],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        check=False,
+    )
     assert proc.returncode == 0, proc.stderr[-3000:]
     m = re.search(r"^" + re.escape(label) + r" = ([-+0-9.eE]+)", proc.stdout, re.MULTILINE)
     assert m, f"{name} printed no '{label} = <number>':\n{proc.stdout}"
@@ -31,8 +38,12 @@ def run(name: str, label: str, tmp_path) -> float:
 
 def test_every_script_is_tested():
     scripts = sorted(p.name for p in GALLERY.glob("plot_*.py"))
-    tested = sorted(re.findall(r'"(plot_\d\d_\w+\.py)"', "".join(
-        p.read_text() for p in Path(__file__).parent.glob("test_gallery*.py"))))
+    tested = sorted(
+        re.findall(
+            r'"(plot_\d\d_\w+\.py)"',
+            "".join(p.read_text() for p in Path(__file__).parent.glob("test_gallery*.py")),
+        )
+    )
     assert scripts and scripts == sorted(set(tested))
 
 
@@ -44,7 +55,8 @@ def test_demo(tmp_path):
 def test_animation(tmp_path):
     # the last frame is the stop: the README's rotation of the demo plate
     assert run("plot_02_animation.py", "rotation at the stop", tmp_path) == pytest.approx(
-        0.641471622, abs=2e-9)
+        0.641471622, abs=2e-9
+    )
 
 
 def test_sweep_against_the_printed_table2(tmp_path):
@@ -61,9 +73,9 @@ def test_puck_on_slope(tmp_path):
     d = run("plot_04_puck_on_slope.py", "distance after 1 s", tmp_path)
     alpha, mu = math.radians(20.0), 0.3
     block = G * (math.sin(alpha) - mu * math.cos(alpha)) / 2  # no spin: 0.295 m
-    frictionless = G * math.sin(alpha) / 2                     # 1.68 m
+    frictionless = G * math.sin(alpha) / 2  # 1.68 m
     assert block < d < frictionless
-    assert d == pytest.approx(0.666402206, rel=1e-6)           # measured
+    assert d == pytest.approx(0.666402206, rel=1e-6)  # measured
 
 
 def test_pushed_puck(tmp_path):
@@ -75,7 +87,7 @@ def test_pushed_puck(tmp_path):
     f_max = mu * m * G
     f_hull = 1.0 / (1.0 / f_max + 0.02 / (2.0 / 3.0 * mu * m * G * R))
     assert f_hull / 5.0 < t < f_max / 5.0
-    assert t == pytest.approx(0.475084855, rel=1e-6)           # measured; docs/loads.md
+    assert t == pytest.approx(0.475084855, rel=1e-6)  # measured; docs/loads.md
 
 
 def test_fit(tmp_path):

@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from reference import reference_wrench
-from slidespin import _kernel as K
+from slidespin.contact import _kernel_ellipse as K
 
 TOL = 1e-10  # the contract, absolute, unit load and a = 1
 LAW = {"uniform": 0, "linear": 1, "boussinesq": 2, "hertz": 3}
@@ -29,8 +29,9 @@ def kernel(bn, law, cx, cy, om=1.3, tol=1e-12, tensor=TENSOR):
     """Kernel wrench and quadrature for the ICR at body point (cx, cy), φ = 0."""
     xg, yg = centroid(law, bn)
     vx, vy = (cy - yg) * om, -(cx - xg) * om
-    fx, fy, m, status, method, nodes = K.wrench_body_info(bn, LAW[law], xg, yg, *tensor,
-                                                          vx, vy, om, tol)
+    fx, fy, m, status, method, nodes = K.wrench_body_info(
+        bn, LAW[law], xg, yg, *tensor, vx, vy, om, tol
+    )
     return np.array([fx, fy, m]), status, K.METHOD_NAMES[method], nodes
 
 
@@ -38,8 +39,9 @@ def reference(bn, law, cx, cy, om=1.3, tensor=TENSOR):
     xg, yg = centroid(law, bn)
     vx, vy = (cy - yg) * om, -(cx - xg) * om
     t = np.array([[tensor[0], tensor[1]], [tensor[2], tensor[3]]])
-    return np.array(reference_wrench(1.0, bn, law, t, 0.0, vx, vy, om, xi_c=xg, eta_c=yg,
-                                     P=1.0)[:3])
+    return np.array(
+        reference_wrench(1.0, bn, law, t, 0.0, vx, vy, om, xi_c=xg, eta_c=yg, P=1.0)[:3]
+    )
 
 
 def rim(bn, t, r):
@@ -86,8 +88,11 @@ def test_approach_to_the_rim_crosses_every_switch(law, side):
         assert status == K.STATUS_OK
         assert np.max(np.abs(got - reference(bn, law, cx, cy))) < TOL, (k, method)
     if law in ("uniform", "linear"):
-        want = ({"clenshaw-curtis-inside", "adaptive-inside"} if side < 0
-                else {"sine-trapezoid", "adaptive-outside"})
+        want = (
+            {"clenshaw-curtis-inside", "adaptive-inside"}
+            if side < 0
+            else {"sine-trapezoid", "adaptive-outside"}
+        )
         assert want <= set(methods), methods
     else:  # no branch point at tangent lines: one rule all the way to the rim
         assert len(set(methods)) == 1, methods
@@ -129,15 +134,21 @@ def test_outside_map_threshold(law):
         seen.add(method)
         assert np.max(np.abs(got - reference(bn, law, cx, cy))) < TOL, (dist, method)
     assert any(m.endswith("-mapped") for m in seen) and any(
-        not m.endswith("-mapped") for m in seen), seen
+        not m.endswith("-mapped") for m in seen
+    ), seen
 
 
 @pytest.mark.parametrize("tol", [1e-6, 1e-9, 1e-12, 1e-14])
 def test_tolerance_is_honoured(tol):
     """Looser targets need fewer nodes and still meet them; tighter ones double the rules
     or fall back to the adaptive quadrature (both are exercised here)."""
-    states = [(0.5, "uniform", 0.3, 0.1), (0.5, "hertz", 2.0, 0.5), (0.2, "linear", 0.9, 0.05),
-              (0.5, "boussinesq", *rim(0.5, 0.4, 1 - 1e-5)), (0.5, "uniform", 30.0, -4.0)]
+    states = [
+        (0.5, "uniform", 0.3, 0.1),
+        (0.5, "hertz", 2.0, 0.5),
+        (0.2, "linear", 0.9, 0.05),
+        (0.5, "boussinesq", *rim(0.5, 0.4, 1 - 1e-5)),
+        (0.5, "uniform", 30.0, -4.0),
+    ]
     for bn, law, cx, cy in states:
         got, status, method, _ = kernel(bn, law, cx, cy, tol=tol)
         assert status == K.STATUS_OK
@@ -159,8 +170,29 @@ def test_trapezoid_converges_at_the_predicted_rate():
     W = K.workspace()
 
     def T(n):
-        return np.array(K._run_rule(W, K.METHOD_TRAPEZOID, n, 0, 1 / bn**2, 1 / bn, 0.0, 0.0,
-                                    0.0, 0.0, *TENSOR, cx, cy, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)[:3])
+        return np.array(
+            K._run_rule(
+                W,
+                K.METHOD_TRAPEZOID,
+                n,
+                0,
+                1 / bn**2,
+                1 / bn,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                *TENSOR,
+                cx,
+                cy,
+                1.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+                0.0,
+            )[:3]
+        )
 
     exact = T(256)
     ns = np.array([8, 12, 16, 24, 32])
@@ -191,9 +223,9 @@ def test_clenshaw_curtis_tables_are_exact_for_polynomials():
     for n in K.CC_SIZES:
         o = K._CC_OFFSETS[K._CC_INDEX[n]]
         on = K._NODE_OFFSETS[K._NODE_INDEX[n]]
-        x = K._COS[on:on + n + 1]
+        x = K._COS[on : on + n + 1]
         for w, m in ((K._CC_W1, n), (K._CC_W2, n // 2), (K._CC_W4, n // 4)):
-            ww = w[o:o + n + 1]
+            ww = w[o : o + n + 1]
             for p in range(0, m + 1, 3):
                 exact = 0.0 if p % 2 else 2.0 / (p + 1)
                 assert abs(ww @ x**p - exact) < 1e-14, (n, m, p)
@@ -203,8 +235,8 @@ def test_node_tables():
     for n in K.NODE_SIZES:
         o = K._NODE_OFFSETS[K._NODE_INDEX[n]]
         t = np.arange(n + 1) * math.pi / n
-        assert np.max(np.abs(K._COS[o:o + n + 1] - np.cos(t))) < 1e-15
-        assert np.max(np.abs(K._SIN[o:o + n + 1] - np.sin(t))) < 1e-15
+        assert np.max(np.abs(K._COS[o : o + n + 1] - np.cos(t))) < 1e-15
+        assert np.max(np.abs(K._SIN[o : o + n + 1] - np.sin(t))) < 1e-15
         assert K._SIN[o] == 0.0 and K._SIN[o + n] == 0.0
 
 
@@ -231,8 +263,19 @@ def test_workspace_entry_points_agree():
             fast = K.wrench_fast(law, kc, *t, vx, vy, om, 1e-12, W)
             assert one == fast
             w1 = K.wrench_world(bn, law, xg, yg, *t, False, phi, vx, vy, om, 1e-12)
-            w2 = K.wrench_array(bn, law, xg, yg, *t, False, np.array([phi]), np.array([vx]),
-                                np.array([vy]), np.array([om]), 1e-12)
+            w2 = K.wrench_array(
+                bn,
+                law,
+                xg,
+                yg,
+                *t,
+                False,
+                np.array([phi]),
+                np.array([vx]),
+                np.array([vy]),
+                np.array([om]),
+                1e-12,
+            )
             assert w1 == tuple(x[0] for x in w2)
 
 
@@ -262,8 +305,9 @@ def test_every_rule_as_plain_python():
         "print(json.dumps(out))\n"
     )
     env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
-                       timeout=600)
+    r = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=600
+    )
     assert r.returncode == 0, r.stderr
     for (bn, law, cx, cy), got in zip(states, json.loads(r.stdout)):
         name = [k for k, v in LAW.items() if v == law][0]

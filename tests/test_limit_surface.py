@@ -34,8 +34,8 @@ import pytest
 from scipy.special import ellipe, ellipk
 
 import slidespin as ss
-from slidespin.limit_surface import QUARTIC_EXPONENTS, limit_surface, sphere_directions
-from slidespin.statics import load_factor
+from slidespin.contact.limit_surface import QUARTIC_EXPONENTS, limit_surface, sphere_directions
+from slidespin.contact.statics import load_factor
 
 matplotlib.use("Agg")
 G = 9.81
@@ -52,8 +52,10 @@ def _series(q, terms=90):
     at = lambda n: a[n] if n >= 0 else 0.0
     bt = lambda n: b[n] if n >= 0 else 0.0
     f = sum((bt(n) + bt(n - 1) - at(n) + at(n - 1)) * q ** (n - 1) for n in range(1, terms))
-    m = sum((4 * bt(n - 1) - 2 * bt(n) + 2 * at(n) - 5 * at(n - 1) + 3 * at(n - 2)) * q ** (n - 2)
-            for n in range(2, terms))
+    m = sum(
+        (4 * bt(n - 1) - 2 * bt(n) + 2 * at(n) - 5 * at(n - 1) + 3 * at(n - 2)) * q ** (n - 2)
+        for n in range(2, terms)
+    )
     return math.pi / 2 * f, math.pi / 2 * m
 
 
@@ -102,8 +104,10 @@ def test_uniform_disk_follows_contensou():
 
 @pytest.mark.parametrize(
     "body",
-    [ss.Body(ss.Ellipse(0.1, 0.05), ss.LinearPressure(0.01, -0.005), 1.0),
-     ss.Body(ss.Circle(0.05), ss.HertzPressure(), 2.0)],
+    [
+        ss.Body(ss.Ellipse(0.1, 0.05), ss.LinearPressure(0.01, -0.005), 1.0),
+        ss.Body(ss.Circle(0.05), ss.HertzPressure(), 2.0),
+    ],
 )
 def test_isotropic_twist_is_normal_to_the_limit_surface(body):
     fr = ss.FrictionTensor.isotropic(0.4)
@@ -118,8 +122,13 @@ def test_isotropic_twist_is_normal_to_the_limit_surface(body):
             h = 1e-4
             tw = np.array([u + h * e, u - h * e])
             w = ss.friction_wrench(body, fr, tw[:, 0], tw[:, 1], tw[:, 2] / ell, 0.3, g=G)
-            dw = np.array([w.force_x[0] - w.force_x[1], w.force_y[0] - w.force_y[1],
-                           (w.moment[0] - w.moment[1]) / ell])
+            dw = np.array(
+                [
+                    w.force_x[0] - w.force_x[1],
+                    w.force_y[0] - w.force_y[1],
+                    (w.moment[0] - w.moment[1]) / ell,
+                ]
+            )
             # the tangent of the surface at W(u) is orthogonal to the twist u
             assert abs(dw @ u) < 1e-6 * np.linalg.norm(dw)
 
@@ -143,10 +152,12 @@ def test_fits_report_their_own_errors_and_the_quartic_is_convex():
     w = ls.wrenches
     q2 = np.einsum("ni,ij,nj->n", w, ls.ellipsoid, w)
     assert ls.ellipsoid_error == pytest.approx(np.max(np.abs(np.sqrt(q2) - 1)), rel=1e-12)
-    feats = np.column_stack([w[:, 0] ** i * w[:, 1] ** j * w[:, 2] ** k
-                             for i, j, k in QUARTIC_EXPONENTS])
-    assert ls.quartic_error == pytest.approx(np.max(np.abs((feats @ ls.quartic) ** 0.25 - 1)),
-                                             rel=1e-12)
+    feats = np.column_stack(
+        [w[:, 0] ** i * w[:, 1] ** j * w[:, 2] ** k for i, j, k in QUARTIC_EXPONENTS]
+    )
+    assert ls.quartic_error == pytest.approx(
+        np.max(np.abs((feats @ ls.quartic) ** 0.25 - 1)), rel=1e-12
+    )
     # a disk's surface is axially symmetric: A has equal force entries and no coupling
     a = ls.ellipsoid
     assert a[0, 0] == pytest.approx(a[1, 1], rel=1e-2)
@@ -164,7 +175,7 @@ def test_fits_report_their_own_errors_and_the_quartic_is_convex():
                     coef *= ee[q]
                     ee[q] -= 1
                     if coef and (ee >= 0).all():
-                        hess[p, q] += c * coef * np.prod(x ** ee)
+                        hess[p, q] += c * coef * np.prod(x**ee)
         assert np.linalg.eigvalsh(hess).min() >= -1e-12 * np.abs(hess).max()
 
 
@@ -184,7 +195,7 @@ def test_exports_and_figure(tmp_path):
 def test_cli_plugin(tmp_path, capsys):
     import argparse
 
-    from slidespin import ls_cli
+    from slidespin.cli import limit_surface as ls_cli
 
     case = tmp_path / "case.toml"
     case.write_text(

@@ -20,8 +20,9 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 import slidespin as ss
-from slidespin.loaded import simulate_loaded
-from slidespin.loads import Incline, Load, applied_wrench
+from slidespin.motion.loaded import simulate_loaded
+from slidespin.contact.incline import Incline
+from slidespin.motion.loads import Load, applied_wrench
 
 G = 9.81
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -75,13 +76,13 @@ def test_validation(build, match):
 
 def test_simulate_loaded_validation():
     with pytest.raises(ValueError, match="t_end"):
-        simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(),
-                        load=Load(force=lambda t: (t, 0.0)))
+        simulate_loaded(
+            disk(), ss.FrictionTensor(0.3, 0.3), ss.State(), load=Load(force=lambda t: (t, 0.0))
+        )
     with pytest.raises(ValueError, match="load"):
         simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(), load=(1, 0), t_end=1)
     with pytest.raises(ValueError, match="never stop"):
-        simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(vx=1.0),
-                        incline=Incline(0.5))
+        simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(vx=1.0), incline=Incline(0.5))
 
 
 # ------------------------------------------------------------------------------------------
@@ -89,8 +90,14 @@ def test_simulate_loaded_validation():
 # ------------------------------------------------------------------------------------------
 @pytest.mark.parametrize("mu, alpha, delta", [(0.3, 0.29, 0.0), (0.3, math.atan(0.3), 0.4)])
 def test_block_on_slope_sticks_up_to_the_friction_angle(mu, alpha, delta):
-    tr = simulate_loaded(disk(), ss.FrictionTensor.isotropic(mu), ss.State(),
-                         incline=Incline(alpha, delta), t_end=1.0, g=G)
+    tr = simulate_loaded(
+        disk(),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(),
+        incline=Incline(alpha, delta),
+        t_end=1.0,
+        g=G,
+    )
     assert tr.ending == "at_rest_throughout"
     assert tr.x[-1] == 0.0 and tr.y[-1] == 0.0
 
@@ -98,8 +105,14 @@ def test_block_on_slope_sticks_up_to_the_friction_angle(mu, alpha, delta):
 @pytest.mark.parametrize("law", [ss.UniformPressure(), ss.HertzPressure()])
 def test_block_on_slope_slides_with_the_closed_form_acceleration(law):
     mu, alpha, delta, t_end = 0.3, 0.45, 0.7, 0.8
-    tr = simulate_loaded(disk(law), ss.FrictionTensor.isotropic(mu), ss.State(x=0.1),
-                         incline=Incline(alpha, delta), t_end=t_end, g=G)
+    tr = simulate_loaded(
+        disk(law),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(x=0.1),
+        incline=Incline(alpha, delta),
+        t_end=t_end,
+        g=G,
+    )
     acc = G * (math.sin(alpha) - mu * math.cos(alpha))
     dist = 0.5 * acc * t_end**2
     assert tr.ending == "moving_at_t_end"
@@ -116,12 +129,12 @@ def test_orthotropic_slope_along_a_principal_axis(axis):
     friction = ss.FrictionTensor(fx, fy, angle=turn)
     mu, delta = (fx, turn) if axis == "x" else (fy, turn + math.pi / 2)
     body = ss.Body(ss.Circle(0.05), ss.UniformPressure(), 1.0)
-    below = simulate_loaded(body, friction, ss.State(), incline=Incline(math.atan(mu) - 1e-6, delta),
-                            t_end=0.5, g=G)
+    below = simulate_loaded(
+        body, friction, ss.State(), incline=Incline(math.atan(mu) - 1e-6, delta), t_end=0.5, g=G
+    )
     assert below.ending == "at_rest_throughout"
     alpha = math.atan(mu) + 0.1
-    tr = simulate_loaded(body, friction, ss.State(), incline=Incline(alpha, delta), t_end=0.5,
-                         g=G)
+    tr = simulate_loaded(body, friction, ss.State(), incline=Incline(alpha, delta), t_end=0.5, g=G)
     dist = 0.5 * G * (math.sin(alpha) - mu * math.cos(alpha)) * 0.25
     assert math.hypot(tr.x[-1], tr.y[-1]) == pytest.approx(dist, abs=1e-9)
     assert math.atan2(tr.y[-1], tr.x[-1]) == pytest.approx(delta, abs=1e-8)
@@ -129,8 +142,14 @@ def test_orthotropic_slope_along_a_principal_axis(axis):
 
 def test_steady_sliding_at_the_friction_angle():
     mu = 0.3
-    tr = simulate_loaded(disk(), ss.FrictionTensor.isotropic(mu), ss.State(vx=0.5),
-                         incline=Incline(math.atan(mu)), t_end=1.0, g=G)
+    tr = simulate_loaded(
+        disk(),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(vx=0.5),
+        incline=Incline(math.atan(mu)),
+        t_end=1.0,
+        g=G,
+    )
     assert tr.ending == "steady_sliding"
     assert tr.x[-1] == pytest.approx(0.5, abs=1e-9)
 
@@ -142,12 +161,24 @@ def test_steady_sliding_at_the_friction_angle():
 def test_disk_pushed_above_threshold_accelerates(excess):
     mu, m, t_end = 0.3, 1.0, 0.5
     p = mu * m * G * (1 + excess)
-    tr = simulate_loaded(disk(m=m), ss.FrictionTensor.isotropic(mu), ss.State(),
-                         load=Load(force=(0.0, p)), t_end=t_end, g=G)
+    tr = simulate_loaded(
+        disk(m=m),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(),
+        load=Load(force=(0.0, p)),
+        t_end=t_end,
+        g=G,
+    )
     assert tr.ending == "moving_at_t_end"
     assert tr.y[-1] == pytest.approx(0.5 * (p / m - mu * G) * t_end**2, rel=1e-8, abs=1e-14)
-    below = simulate_loaded(disk(m=m), ss.FrictionTensor.isotropic(mu), ss.State(),
-                            load=Load(force=(0.0, mu * m * G * (1 - 1e-9))), t_end=t_end, g=G)
+    below = simulate_loaded(
+        disk(m=m),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(),
+        load=Load(force=(0.0, mu * m * G * (1 - 1e-9))),
+        t_end=t_end,
+        g=G,
+    )
     assert below.ending == "at_rest_throughout"
 
 
@@ -160,13 +191,26 @@ def test_disk_twisted_above_threshold_spins_up(law, constant):
     body = disk(law, r, m)
     t_c = constant * mu * m * G * r
     torque = 1.3 * t_c
-    tr = simulate_loaded(body, ss.FrictionTensor.isotropic(mu), ss.State(),
-                         load=Load(torque=torque), t_end=t_end, g=G)
-    assert tr.phi[-1] == pytest.approx(0.5 * (torque - t_c) / body.moment_of_inertia * t_end**2,
-                                       rel=1e-8)
+    tr = simulate_loaded(
+        body,
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(),
+        load=Load(torque=torque),
+        t_end=t_end,
+        g=G,
+    )
+    assert tr.phi[-1] == pytest.approx(
+        0.5 * (torque - t_c) / body.moment_of_inertia * t_end**2, rel=1e-8
+    )
     assert abs(tr.x[-1]) + abs(tr.y[-1]) < 1e-12
-    below = simulate_loaded(body, ss.FrictionTensor.isotropic(mu), ss.State(),
-                            load=Load(torque=t_c * (1 - 1e-9)), t_end=t_end, g=G)
+    below = simulate_loaded(
+        body,
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(),
+        load=Load(torque=t_c * (1 - 1e-9)),
+        t_end=t_end,
+        g=G,
+    )
     assert below.ending == "at_rest_throughout"
 
 
@@ -202,8 +246,10 @@ def _ramp_truth(f0, t1, fc, m):
         return (impulse(t) - impulse(ta) - fc * (t - ta)) / m
 
     tb = brentq(vel, t1, 2 * t1 + 10.0, xtol=1e-15, rtol=1e-15)
-    x = quad(vel, ta, t1, epsabs=1e-14, epsrel=1e-14)[0] + quad(
-        vel, t1, tb, epsabs=1e-14, epsrel=1e-14, points=[2 * t1] if tb > 2 * t1 else None)[0]
+    x = (
+        quad(vel, ta, t1, epsabs=1e-14, epsrel=1e-14)[0]
+        + quad(vel, t1, tb, epsabs=1e-14, epsrel=1e-14, points=[2 * t1] if tb > 2 * t1 else None)[0]
+    )
     return ta, tb, x
 
 
@@ -211,8 +257,9 @@ def test_ramped_push_sticks_slips_and_sticks_again():
     mu, m, f0, t1 = 0.3, 1.0, 5.0, 1.0
     fc = mu * m * G
     load = Load(force=lambda t: (f0 * max(0.0, 1.0 - abs(t - t1) / t1), 0.0))
-    tr = simulate_loaded(disk(m=m), ss.FrictionTensor.isotropic(mu), ss.State(), load=load,
-                         t_end=3.0, g=G)
+    tr = simulate_loaded(
+        disk(m=m), ss.FrictionTensor.isotropic(mu), ss.State(), load=load, t_end=3.0, g=G
+    )
     ta, tb, x = _ramp_truth(f0, t1, fc, m)
     assert [k for k, _, _ in tr.phases] == ["stick", "slip", "stick"]
     (_, _, s1), (_, p0, p1), (_, _, q1) = tr.phases
@@ -229,8 +276,9 @@ def test_energy_balance_and_gravity_work_on_a_slope():
     body = ss.Body(ss.Ellipse(0.06, 0.03), ss.LinearPressure(0.005, 0.002), 0.5)
     friction = ss.FrictionTensor(0.25, 0.4, 0.03)
     slope = Incline(0.35, downhill=1.0)
-    tr = simulate_loaded(body, friction, ss.State(vx=-1.0, vy=0.3, omega=15.0), incline=slope,
-                         t_end=1.0, g=G)
+    tr = simulate_loaded(
+        body, friction, ss.State(vx=-1.0, vy=0.3, omega=15.0), incline=slope, t_end=1.0, g=G
+    )
     ke0 = tr.kinetic_energy[0]
     assert tr.energy_error < 1e-9 * ke0
     assert tr.load_work[-1] == pytest.approx(tr.gravity_work, rel=1e-9)
@@ -245,9 +293,11 @@ def test_example_pushed_puck_starts_when_the_push_leaves_c(tmp_path):
     t_start = ns["main"](str(tmp_path / "pushed.png"))
     assert (tmp_path / "pushed.png").stat().st_size > 0
     # at the start the push (5 t N at (0, 2 cm)) lies on the boundary of C
-    from slidespin.statics import load_factor
+    from slidespin.contact.statics import load_factor
 
-    lam = load_factor(disk(), ss.FrictionTensor.isotropic(0.3), (5 * t_start, 0.0, -0.02 * 5 * t_start))
+    lam = load_factor(
+        disk(), ss.FrictionTensor.isotropic(0.3), (5 * t_start, 0.0, -0.02 * 5 * t_start)
+    )
     assert lam == pytest.approx(1.0, abs=1e-9)
 
 
@@ -261,40 +311,59 @@ def test_example_puck_on_slope_outruns_a_block(tmp_path):
 
 def test_thrown_up_a_steep_slope_stops_and_slides_back():
     mu, alpha, v0, t_end = 0.3, 0.5, 1.5, 1.0
-    tr = simulate_loaded(disk(), ss.FrictionTensor.isotropic(mu), ss.State(vx=-v0),
-                         incline=Incline(alpha), t_end=t_end, g=G)
+    tr = simulate_loaded(
+        disk(),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(vx=-v0),
+        incline=Incline(alpha),
+        t_end=t_end,
+        g=G,
+    )
     up = G * (math.sin(alpha) + mu * math.cos(alpha))
     down = G * (math.sin(alpha) - mu * math.cos(alpha))
     t_top = v0 / up
     assert [k for k, _, _ in tr.phases] == ["slip", "slip"]
     assert tr.phases[0][2] == pytest.approx(t_top, abs=1e-10)
-    x_end = -v0**2 / (2 * up) + 0.5 * down * (t_end - t_top) ** 2
+    x_end = -(v0**2) / (2 * up) + 0.5 * down * (t_end - t_top) ** 2
     assert tr.x[-1] == pytest.approx(x_end, abs=1e-9)
     assert tr.vx[-1] == pytest.approx(down * (t_end - t_top), abs=1e-9)
 
 
 def test_tables_of_a_case_file():
-    from slidespin.loads import incline_from_table, load_from_table
+    from slidespin.studies.load_tables import incline_from_table, load_from_table
 
-    load = load_from_table({"fx": 1.0, "fy": -2.0, "torque": 0.5, "frame": "body",
-                            "at": [0.01, 0.0]})
+    load = load_from_table(
+        {"fx": 1.0, "fy": -2.0, "torque": 0.5, "frame": "body", "at": [0.01, 0.0]}
+    )
     assert load.force == (1.0, -2.0) and load.torque == 0.5 and load.at == (0.01, 0.0)
-    ramp = load_from_table({"times": [0.0, 1.0, 2.0], "profile_fx": [0.0, 5.0, 0.0],
-                            "profile_fy": [0.0, 0.0, 0.0], "profile_torque": [0.0, 1.0, 0.0]})
+    ramp = load_from_table(
+        {
+            "times": [0.0, 1.0, 2.0],
+            "profile_fx": [0.0, 5.0, 0.0],
+            "profile_fy": [0.0, 0.0, 0.0],
+            "profile_torque": [0.0, 1.0, 0.0],
+        }
+    )
     assert ramp.wrench(0.25) == pytest.approx((1.25, 0.0, 0.25))
     assert ramp.wrench(5.0) == (0.0, 0.0, 0.0) and not ramp.is_constant
     slope = incline_from_table({"angle_deg": 30.0, "downhill_deg": 90.0})
-    assert slope.angle == pytest.approx(math.pi / 6) and slope.downhill == pytest.approx(math.pi / 2)
-    for bad, match in [({"fx": 1.0, "force": 2.0}, "both 'force' and 'fx'"),
-                       ({"fx": 1.0, "times": [0.0, 1.0]}, "not both"),
-                       ({"times": [0.0, 1.0], "profile_fx": [0.0, 1.0]}, "profile_fy"),
-                       ({"times": [1.0, 0.0], "profile_fx": [0, 1], "profile_fy": [0, 1]},
-                        r"\[load\] times"),
-                       ({"frame": "world"}, r"\[load\] frame")]:
+    assert slope.angle == pytest.approx(math.pi / 6) and slope.downhill == pytest.approx(
+        math.pi / 2
+    )
+    for bad, match in [
+        ({"fx": 1.0, "force": 2.0}, "both 'force' and 'fx'"),
+        ({"fx": 1.0, "times": [0.0, 1.0]}, "not both"),
+        ({"times": [0.0, 1.0], "profile_fx": [0.0, 1.0]}, "profile_fy"),
+        ({"times": [1.0, 0.0], "profile_fx": [0, 1], "profile_fy": [0, 1]}, r"\[load\] times"),
+        ({"frame": "world"}, r"\[load\] frame"),
+    ]:
         with pytest.raises(ValueError, match=match):
             load_from_table(bad)
-    for bad, match in [({"downhill": 0.1}, "angle"), ({"angle": 2.0}, r"\[incline\] angle"),
-                       ({"angle": 0.1, "angle_deg": 5.0}, "both")]:
+    for bad, match in [
+        ({"downhill": 0.1}, "angle"),
+        ({"angle": 2.0}, r"\[incline\] angle"),
+        ({"angle": 0.1, "angle_deg": 5.0}, "both"),
+    ]:
         with pytest.raises(ValueError, match=match):
             incline_from_table(bad)
 
@@ -302,8 +371,15 @@ def test_tables_of_a_case_file():
 def test_piecewise_linear_ramp_matches_the_closed_form():
     mu, m, f0, t1 = 0.3, 1.0, 5.0, 1.0
     load = Load.piecewise_linear([0.0, t1, 2 * t1], [0.0, f0, 0.0], [0.0, 0.0, 0.0])
-    tr = simulate_loaded(disk(m=m), ss.FrictionTensor.isotropic(mu), ss.State(), load=load,
-                         t_end=2.5, g=G, scan_step=0.05)
+    tr = simulate_loaded(
+        disk(m=m),
+        ss.FrictionTensor.isotropic(mu),
+        ss.State(),
+        load=load,
+        t_end=2.5,
+        g=G,
+        scan_step=0.05,
+    )
     ta, tb, x = _ramp_truth(f0, t1, mu * m * G, m)
     assert tr.slip_intervals[0] == pytest.approx((ta, tb), abs=1e-8)
     assert tr.x[-1] == pytest.approx(x, rel=1e-8)
@@ -313,11 +389,18 @@ def test_piecewise_linear_ramp_matches_the_closed_form():
 # a push off G through the threshold (regression: "no onset direction found; please report")
 # ------------------------------------------------------------------------------------------
 def _off_centre_pushes():
-    profile = Load.piecewise_linear([0.0, 1.0, 2.0], [0.0, 5.0, 0.0], [0.0, 0.0, 0.0],
-                                    at=(0.0, 0.02))
+    profile = Load.piecewise_linear(
+        [0.0, 1.0, 2.0], [0.0, 5.0, 0.0], [0.0, 0.0, 0.0], at=(0.0, 0.02)
+    )
     written = Load(force=lambda t: (5.0 * max(0.0, 1.0 - abs(t - 1.0)), 0.0), at=(0.0, 0.02))
-    table = ss.loads.load_from_table({"times": [0.0, 1.0, 2.0], "profile_fx": [0.0, 5.0, 0.0],
-                                      "profile_fy": [0.0, 0.0, 0.0], "at": [0.0, 0.02]})
+    table = ss.loads.load_from_table(
+        {
+            "times": [0.0, 1.0, 2.0],
+            "profile_fx": [0.0, 5.0, 0.0],
+            "profile_fy": [0.0, 0.0, 0.0],
+            "at": [0.0, 0.02],
+        }
+    )
     return profile, written, table
 
 
@@ -329,8 +412,10 @@ def test_off_centre_ramp_starts_at_the_independent_threshold_however_written():
     from test_statics import off_centre_push_threshold
 
     f_c, _ = off_centre_push_threshold(0.05, 0.3, 1.0, 0.02)
-    runs = [ss.simulate(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(), load=load, t_end=3.0,
-                        g=G) for load in _off_centre_pushes()]
+    runs = [
+        ss.simulate(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(), load=load, t_end=3.0, g=G)
+        for load in _off_centre_pushes()
+    ]
     for tr in runs:
         assert tr.status == "ok" and tr.message == "" and tr.ending == "stopped_stuck"
         assert [k for k, _, _ in tr.phases] == ["stick", "slip", "stick"]
@@ -350,13 +435,19 @@ def test_an_onset_that_cannot_be_found_ends_the_run_honestly(monkeypatch):
     """No input may reach a RuntimeError: a failed onset solve (a slip direction always
     exists beyond C, so this is a solver failure, forced here) ends the run at that time,
     at rest, with status "no_onset" and a message."""
-    import slidespin.statics as st
+    import slidespin.contact.statics as st
     from test_statics import off_centre_push_threshold
 
     f_c, _ = off_centre_push_threshold(0.05, 0.3, 1.0, 0.02)
     monkeypatch.setattr(st, "_onset_nat", lambda *args, **kwargs: None)
-    tr = simulate_loaded(disk(), ss.FrictionTensor(0.3, 0.3), ss.State(),
-                         load=_off_centre_pushes()[0], t_end=3.0, g=G)
+    tr = simulate_loaded(
+        disk(),
+        ss.FrictionTensor(0.3, 0.3),
+        ss.State(),
+        load=_off_centre_pushes()[0],
+        t_end=3.0,
+        g=G,
+    )
     assert tr.status == "no_onset"
     assert "could not be started" in tr.message and "load factor" in tr.message
     assert [k for k, _, _ in tr.phases] == ["stick"]
@@ -376,14 +467,16 @@ def test_a_profile_that_reaches_the_threshold_at_a_kink_or_stays_on_it():
 
     f_c, _ = off_centre_push_threshold(0.05, 0.3, 1.0, 0.02)
     fr = ss.FrictionTensor(0.3, 0.3)
-    rise = Load.piecewise_linear([0.0, 1.0, 2.0], [0.0, f_c, 2 * f_c], [0.0, 0.0, 0.0],
-                                 at=(0.0, 0.02))
+    rise = Load.piecewise_linear(
+        [0.0, 1.0, 2.0], [0.0, f_c, 2 * f_c], [0.0, 0.0, 0.0], at=(0.0, 0.02)
+    )
     tr = simulate_loaded(disk(), fr, ss.State(), load=rise, t_end=2.0, g=G)
     assert tr.status == "ok" and [k for k, _, _ in tr.phases] == ["stick", "slip"]
     assert tr.phases[1][1] == pytest.approx(1.0, abs=5e-12)
     for top in (f_c, f_c * (1 + 4.4e-16)):
-        hold = Load.piecewise_linear([0.0, 1.0, 3.0], [0.0, top, top], [0.0, 0.0, 0.0],
-                                     at=(0.0, 0.02))
+        hold = Load.piecewise_linear(
+            [0.0, 1.0, 3.0], [0.0, top, top], [0.0, 0.0, 0.0], at=(0.0, 0.02)
+        )
         tr = simulate_loaded(disk(), fr, ss.State(), load=hold, t_end=3.0, g=G)
         assert tr.status == "ok" and tr.ending == "at_rest_throughout"
         assert tr.phases == (("stick", 0.0, 3.0),)
@@ -392,7 +485,7 @@ def test_a_profile_that_reaches_the_threshold_at_a_kink_or_stays_on_it():
 def test_an_integrator_that_gives_up_ends_the_run_with_a_status(monkeypatch):
     """An integrator failure (forced here) ends the run with status "step_too_small", the
     values as reached and the integrator's message, in the slow start and in a slip."""
-    import slidespin.loaded as lo
+    import slidespin.motion.loaded as lo
 
     real = lo.solve_ivp
 
@@ -403,8 +496,10 @@ def test_an_integrator_that_gives_up_ends_the_run_with_a_status(monkeypatch):
 
     monkeypatch.setattr(lo, "solve_ivp", failing)
     fr = ss.FrictionTensor(0.3, 0.3)
-    for state, load, where in [(ss.State(vx=1.2), None, "slip integrator"),
-                               (ss.State(), _off_centre_pushes()[0], "slow start")]:
+    for state, load, where in [
+        (ss.State(vx=1.2), None, "slip integrator"),
+        (ss.State(), _off_centre_pushes()[0], "slow start"),
+    ]:
         tr = simulate_loaded(disk(), fr, state, load=load, t_end=3.0, g=G)
         assert tr.status == "step_too_small"
         assert where in tr.message and "forced failure" in tr.message

@@ -24,11 +24,12 @@ from footprint_reference import (
     reference_wrench,
     regions_of,
 )
-from slidespin import statics
-from slidespin.footprint import Annulus, Disk, Pads, Polygon, Rectangle
-from slidespin.limit_surface import limit_surface
-from slidespin.loaded import simulate_loaded
-from slidespin.loads import Incline, Load
+from slidespin.contact import statics
+from slidespin.contact.limit_surface import limit_surface
+from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
+from slidespin.motion.loaded import simulate_loaded
+from slidespin.contact.incline import Incline
+from slidespin.motion.loads import Load
 
 G = 9.81
 MU = 0.35
@@ -426,7 +427,7 @@ vx = 0.0
 
 
 def test_cli_simulate_footprint_with_load(tmp_path, capsys):
-    from slidespin.cli import main
+    from slidespin.cli.main import main
 
     path = tmp_path / "case.toml"
     force = 1.2 * MU * 5.0 * G
@@ -437,7 +438,7 @@ def test_cli_simulate_footprint_with_load(tmp_path, capsys):
 
 
 def test_cli_limit_surface_footprint_on_incline(tmp_path, capsys):
-    from slidespin.cli import main
+    from slidespin.cli.main import main
 
     path = tmp_path / "case.toml"
     path.write_text(CASE + "[incline]\nangle_deg = 10.0\n")

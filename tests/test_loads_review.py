@@ -19,11 +19,13 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 import slidespin as ss
-from slidespin.case import load_case
-from slidespin.footprint import Rectangle
-from slidespin.limit_surface import limit_surface
-from slidespin.loaded import SCAN_STEP_MAX, default_scan_step, simulate_loaded
-from slidespin.loads import Incline, Load, incline_from_table, load_from_table
+from slidespin.contact.limit_surface import limit_surface
+from slidespin.contact.shapes import Rectangle
+from slidespin.motion.loaded import SCAN_STEP_MAX, default_scan_step, simulate_loaded
+from slidespin.contact.incline import Incline
+from slidespin.motion.loads import Load
+from slidespin.studies.load_tables import incline_from_table, load_from_table
+from slidespin.studies.case import load_case
 
 G = 9.81
 MU = 0.3

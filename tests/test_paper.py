@@ -14,9 +14,9 @@ import re
 import numpy as np
 import pytest
 
-from slidespin.cli import main as cli_main
+from slidespin.analysis.terminal import terminal_states
+from slidespin.cli.main import main as cli_main
 from slidespin.paper import errata, fig2, fig3, fig4, phase, report, table1, table2
-from slidespin.terminal import terminal_states
 
 # cells where our value, with the least-squares fx, does not round to the printed one:
 # (φ label, μ) -> our β − printed β, measured (units of a); documented in docs/paper.md
@@ -142,8 +142,11 @@ def test_table2_boundary(paper_table2, mu, law, k):
     fx = row.fx
     printed = {
         "uniform": ((fx + mu) / (4 * fx), (5 * fx + 4 * mu) / (15 * fx), (2 * fx + mu) / (3 * fx)),
-        "Boussinesq": ((fx + mu) / (3 * fx), (4 * fx + 3 * mu) / (8 * fx),
-                       (2 * fx + mu) / (2 * fx)),
+        "Boussinesq": (
+            (fx + mu) / (3 * fx),
+            (4 * fx + 3 * mu) / (8 * fx),
+            (2 * fx + mu) / (2 * fx),
+        ),
         "Hertz": ((fx + mu) / (5 * fx), (6 * fx + 5 * mu) / (24 * fx), (2 * fx + mu) / (4 * fx)),
     }[law]
     assert row.numeric[k] == pytest.approx(printed[k], abs=1e-10)
@@ -155,8 +158,9 @@ def test_table2_simulations_end_as_stated(paper_table2):
         assert r.agrees, (r.law, r.mu, r.regime, r.observed)
         if r.ending == "mixed":  # simulation vs J⁻¹: two independent routes to k
             assert r.k == pytest.approx(r.k_theory, rel=1e-7)
-    published = next(r for r in paper_table2.runs
-                     if r.law == "uniform" and r.mu == 0.0 and r.regime == 3)
+    published = next(
+        r for r in paper_table2.runs if r.law == "uniform" and r.mu == 0.0 and r.regime == 3
+    )
     assert published.inertia_ratio == pytest.approx(0.5, abs=1e-12)
     assert round(published.k, 3) == 0.653
 
@@ -175,10 +179,18 @@ def test_figure_runs_stop_at_terminal_states(figure2, figure3):
         for tr in res.runs:
             assert tr.status == "stopped" and tr.ending == "mixed"
             assert abs(tr.normal[-1]) < 1e-8  # F_n → 0 (Figure 4, eq. 14)
-            states = [s for s in terminal_states(tr.body, tr.friction, tr.stop_state.phi)
-                      if s.stable and s.ending == "mixed"]
-            best = min(states, key=lambda s: abs(s.beta - tr.beta_stop)
-                       + abs(math.remainder(s.theta - tr.theta_stop, 2 * math.pi)))
+            states = [
+                s
+                for s in terminal_states(tr.body, tr.friction, tr.stop_state.phi)
+                if s.stable and s.ending == "mixed"
+            ]
+            best = min(
+                states,
+                key=lambda s: (
+                    abs(s.beta - tr.beta_stop)
+                    + abs(math.remainder(s.theta - tr.theta_stop, 2 * math.pi))
+                ),
+            )
             assert best.beta == pytest.approx(tr.beta_stop, abs=1e-7)
             assert best.theta == pytest.approx(tr.theta_stop, abs=1e-7)
 
@@ -291,7 +303,8 @@ def test_report_writes_a_self_contained_folder(tmp_path, capsys):
     page = (folder / "index.html").read_text(encoding="utf-8")
     images = re.findall(r'<img src="([^"]+)"', page)
     assert sorted(images) == sorted(
-        ["table1.png", "table2.png", "fig2.png", "fig3.png", "fig4.png", "phase.png"])
+        ["table1.png", "table2.png", "fig2.png", "fig3.png", "fig4.png", "phase.png"]
+    )
     for name in images:
         assert "/" not in name and _png_ok(folder / name)
     for name in re.findall(r'<a href="([^"#]+)"', page):
@@ -310,11 +323,14 @@ def test_cli_table1_json(capsys):
     assert {"phi", "mu", "beta", "paper", "true_beta", "true_theta"} <= set(d["cells"][5])
 
 
-@pytest.mark.parametrize("argv, match", [
-    (["reproduce", "phase", "--mu", "0.1"], "--mu"),
-    (["reproduce", "table2", "--fx", "-1"], "--fx"),
-    (["reproduce", "table2", "--mu", "-0.2"], "--mu"),
-])
+@pytest.mark.parametrize(
+    "argv, match",
+    [
+        (["reproduce", "phase", "--mu", "0.1"], "--mu"),
+        (["reproduce", "table2", "--fx", "-1"], "--fx"),
+        (["reproduce", "table2", "--mu", "-0.2"], "--mu"),
+    ],
+)
 def test_cli_bad_input(argv, match, capsys):
     assert cli_main(argv) == 2
     err = capsys.readouterr().err

@@ -9,8 +9,8 @@ from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
 import slidespin as ss
-from slidespin.outcomes import UNCONVERGED
 from reference import reference_wrench
+from slidespin.motion.outcomes import UNCONVERGED
 
 finite = dict(allow_nan=False, allow_infinity=False)
 LAWS = st.sampled_from(["uniform", "linear", "boussinesq", "hertz"])
@@ -26,12 +26,17 @@ def setups(draw, min_aspect=0.05, max_aspect=5.0):
         t = draw(st.floats(0.0, 2 * math.pi, **finite))
         law = ss.LinearPressure(r * a * math.cos(t), r * b * math.sin(t))
     else:
-        law = {"uniform": ss.UniformPressure(), "boussinesq": ss.BoussinesqPressure(),
-               "hertz": ss.HertzPressure()}[name]
+        law = {
+            "uniform": ss.UniformPressure(),
+            "boussinesq": ss.BoussinesqPressure(),
+            "hertz": ss.HertzPressure(),
+        }[name]
     body = ss.Body(ss.Ellipse(a, b), law, mass=draw(st.floats(0.01, 100.0, **finite)))
     fr = ss.FrictionTensor(
-        draw(st.floats(0.01, 2.0, **finite)), draw(st.floats(0.01, 2.0, **finite)),
-        f=draw(st.floats(-2.0, 2.0, **finite)), frame=draw(st.sampled_from(["plane", "body"])),
+        draw(st.floats(0.01, 2.0, **finite)),
+        draw(st.floats(0.01, 2.0, **finite)),
+        f=draw(st.floats(-2.0, 2.0, **finite)),
+        frame=draw(st.sampled_from(["plane", "body"])),
         angle=draw(st.floats(-math.pi, math.pi, **finite)),
     )
     return body, fr
@@ -90,8 +95,9 @@ def test_rotation_and_mirror_equivariance(data):
     vec, _ = wrench_vec(body, fr, vx, vy, om, phi)
     alpha = data.draw(st.floats(-math.pi, math.pi, **finite))
     c, s = math.cos(alpha), math.sin(alpha)
-    fr_rot = ss.FrictionTensor(fr.fx, fr.fy, fr.f, fr.frame,
-                               fr.angle + (alpha if fr.frame == "plane" else 0.0))
+    fr_rot = ss.FrictionTensor(
+        fr.fx, fr.fy, fr.f, fr.frame, fr.angle + (alpha if fr.frame == "plane" else 0.0)
+    )
     rot, _ = wrench_vec(body, fr_rot, c * vx - s * vy, s * vx + c * vy, om, phi + alpha)
     want = np.array([c * vec[0] - s * vec[1], s * vec[0] + c * vec[1], vec[2]])
     tol = 1e-10 * max(1.0, np.linalg.norm(fr.matrix, 2))
@@ -113,8 +119,19 @@ def test_compiled_kernel_agrees_with_reference(data):
     vx, vy, om, phi = data.draw(motions(body))
     vec, _ = wrench_vec(body, fr, vx, vy, om, phi)
     xc, yc = body.mass_centre
-    ref = reference_wrench(body.patch.a, body.patch.b, body.pressure.name,
-                           fr.world_matrix(phi), phi, vx, vy, om, xi_c=xc, eta_c=yc, P=1.0)
+    ref = reference_wrench(
+        body.patch.a,
+        body.patch.b,
+        body.pressure.name,
+        fr.world_matrix(phi),
+        phi,
+        vx,
+        vy,
+        om,
+        xi_c=xc,
+        eta_c=yc,
+        P=1.0,
+    )
     want = np.array([ref[0], ref[1], ref[2] / body.patch.a])  # P = 1
     assert np.max(np.abs(vec - want)) < 1e-10 * max(1.0, np.linalg.norm(fr.matrix, 2))
 

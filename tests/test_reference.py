@@ -69,8 +69,9 @@ def test_pure_spin_circle(law, omega):
     a, f, P = 0.7, 0.35, 1.7
     Fx, Fy, M = reference_wrench(a, a, law, f * np.eye(2), 0.3, 0.0, 0.0, omega, P=P)
     assert abs(Fx) < 1e-14 and abs(Fy) < 1e-14
-    assert M == pytest.approx(-math.copysign(1.0, omega) * f * P * a * SPIN_FACTOR[law],
-                              rel=1e-13, abs=1e-14)
+    assert M == pytest.approx(
+        -math.copysign(1.0, omega) * f * P * a * SPIN_FACTOR[law], rel=1e-13, abs=1e-14
+    )
 
 
 def test_pure_spin_linear_is_uniform_when_centroid_at_centre():
@@ -99,10 +100,14 @@ def test_power_equals_dissipation(law):
     xc, yc = centroid(law, A, B)
     phi = -0.6
     states = [(0.37, -0.55, 0.0), (0.0, 0.0, -1.9)]
-    for rad, ang, om in [(0.4, 1.0, 1.1), (1.0, 2.2, -0.7), (1 + 1e-7, 0.3, 2.0), (2.5, -1.0, 0.8),
-                         (40.0, 0.5, -0.05)]:
-        vx, vy = velocity_for_icr(A * rad * math.cos(ang), B * rad * math.sin(ang), om, phi,
-                                  xc, yc)
+    for rad, ang, om in [
+        (0.4, 1.0, 1.1),
+        (1.0, 2.2, -0.7),
+        (1 + 1e-7, 0.3, 2.0),
+        (2.5, -1.0, 0.8),
+        (40.0, 0.5, -0.05),
+    ]:
+        vx, vy = velocity_for_icr(A * rad * math.cos(ang), B * rad * math.sin(ang), om, phi, xc, yc)
         states.append((vx, vy, om))
     for vx, vy, om in states:
         Fx, Fy, M = reference_wrench(A, B, law, T_GEN, phi, vx, vy, om, xc, yc)
@@ -118,13 +123,18 @@ def test_rotation_equivariance(law):
     xc, yc = centroid(law, A, B)
     alpha = 1.234
     Ra = rot(alpha)
-    for phi, v, om in [(0.3, (0.2, -0.4), 1.5), (2.0, (1.0, 0.3), -0.2), (-1.0, (0.1, 0.0), 0.0),
-                       (0.0, (0.0, 0.0), 1.0)]:
+    for phi, v, om in [
+        (0.3, (0.2, -0.4), 1.5),
+        (2.0, (1.0, 0.3), -0.2),
+        (-1.0, (0.1, 0.0), 0.0),
+        (0.0, (0.0, 0.0), 1.0),
+    ]:
         v = np.asarray(v, dtype=float)
         base = np.array(reference_wrench(A, B, law, T_GEN, phi, v[0], v[1], om, xc, yc))
         v2 = Ra @ v
-        turned = np.array(reference_wrench(A, B, law, Ra @ T_GEN @ Ra.T, phi + alpha, v2[0], v2[1],
-                                           om, xc, yc))
+        turned = np.array(
+            reference_wrench(A, B, law, Ra @ T_GEN @ Ra.T, phi + alpha, v2[0], v2[1], om, xc, yc)
+        )
         assert np.abs(turned[:2] - Ra @ base[:2]).max() < 1e-13
         assert abs(turned[2] - base[2]) < 1e-13
 
@@ -167,8 +177,7 @@ def test_line_and_direct_methods_agree(law):
     xc, yc = centroid(law, A, B)
     phi = 0.7
     for rad, ang, om in [(1.5, 0.4, 1.3), (3.0, 2.5, -0.8), (1.02, -1.2, 0.6)]:
-        vx, vy = velocity_for_icr(A * rad * math.cos(ang), B * rad * math.sin(ang), om, phi,
-                                  xc, yc)
+        vx, vy = velocity_for_icr(A * rad * math.cos(ang), B * rad * math.sin(ang), om, phi, xc, yc)
         args = (A, B, law, T_GEN, phi, vx, vy, om, xc, yc, 1.0, 1e-13)
         line = _compute(*args, method="polar")
         direct = _compute(*args, method="direct")

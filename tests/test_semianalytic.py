@@ -2,7 +2,7 @@
 
 Independent truths: scipy's adaptive quadrature of the η-integrals, the compiled wrench of
 slidespin (a different method: polar integration about the centre of rotation), and
-slidespin.simulate (a different integrator in a different time variable).
+slidespin.motion.simulate (a different integrator in a different time variable).
 """
 
 import math
@@ -19,20 +19,22 @@ from slidespin import (
     State,
     UniformPressure,
     friction_wrench,
-    simulate,
 )
+from slidespin.motion import simulate
 from slidespin.paper import semianalytic as sa
 
 KAPPA = 0.5
 RNG = np.random.default_rng(20240601)
 # β from deep inside the patch (ICR inside) to far outside, random directions and angles
-STATES = [(b, RNG.uniform(-math.pi, math.pi), RNG.uniform(-math.pi, math.pi))
-          for b in (0.02, 0.2, 0.45, 0.7, 0.95, 1.3, 3.0, 40.0) for _ in range(3)]
+STATES = [
+    (b, RNG.uniform(-math.pi, math.pi), RNG.uniform(-math.pi, math.pi))
+    for b in (0.02, 0.2, 0.45, 0.7, 0.95, 1.3, 3.0, 40.0)
+    for _ in range(3)
+]
 
 
 def _reference(body, fr, beta, theta, phi):
-    w = friction_wrench(body, fr, beta * math.cos(theta), beta * math.sin(theta), 1.0, phi,
-                        g=1.0)
+    w = friction_wrench(body, fr, beta * math.cos(theta), beta * math.sin(theta), 1.0, phi, g=1.0)
     return np.array([w.tangential, w.normal, w.moment_paper])
 
 
@@ -43,8 +45,9 @@ def test_uniform_wrench_equals_compiled_wrench(f, nodes, tol):
     model = sa.PaperModel(KAPPA, 0.42, 0.54, f, nodes=nodes)
     body = Body(Ellipse(1.0, KAPPA), UniformPressure(), 1.0)
     fr = FrictionTensor(0.42, 0.54, f)
-    err = max(np.abs(np.array(sa.wrench(model, *s)) - _reference(body, fr, *s)).max()
-              for s in STATES)
+    err = max(
+        np.abs(np.array(sa.wrench(model, *s)) - _reference(body, fr, *s)).max() for s in STATES
+    )
     assert err < tol
 
 
@@ -53,8 +56,9 @@ def test_linear_wrench_equals_compiled_wrench_about_g():
     model = sa.PaperModel(KAPPA, 0.3, 0.5, 0.05, xi_c=xc, eta_c=ec, nodes=128)
     body = Body(Ellipse(1.0, KAPPA), LinearPressure(xc, ec), 1.0)
     fr = FrictionTensor(0.3, 0.5, 0.05)
-    err = max(np.abs(np.array(sa.wrench(model, *s)) - _reference(body, fr, *s)).max()
-              for s in STATES)
+    err = max(
+        np.abs(np.array(sa.wrench(model, *s)) - _reference(body, fr, *s)).max() for s in STATES
+    )
     assert err < 1e-12  # the accuracy of friction_wrench
 
 
@@ -68,8 +72,9 @@ def test_linear_wrench_about_the_patch_centre():
         c, s = math.cos(ph), math.sin(ph)
         gx, gy = c * xc - s * ec, s * xc + c * ec  # G − C in the plane
         # v_G = v_C + ω ẑ × (G − C), ω = 1
-        w = friction_wrench(body, fr, beta * math.cos(th) - gy, beta * math.sin(th) + gx, 1.0,
-                            ph, g=1.0)
+        w = friction_wrench(
+            body, fr, beta * math.cos(th) - gy, beta * math.sin(th) + gx, 1.0, ph, g=1.0
+        )
         m_c = w.moment + gx * w.force_y - gy * w.force_x
         f_tau = -(w.force_x * math.cos(th) + w.force_y * math.sin(th))
         f_n = -(-w.force_x * math.sin(th) + w.force_y * math.cos(th))
@@ -83,8 +88,10 @@ def test_quadrature_converges_with_the_icr_inside():
     model = sa.PaperModel(KAPPA, 0.42, 0.54)
     body = Body(Ellipse(1.0, KAPPA), UniformPressure(), 1.0)
     ref = _reference(body, FrictionTensor(0.42, 0.54), 0.3, 0.4, 1.1)
-    errs = [np.abs(np.array(sa.wrench(model.with_(nodes=n), 0.3, 0.4, 1.1)) - ref).max()
-            for n in (4, 8, 16)]
+    errs = [
+        np.abs(np.array(sa.wrench(model.with_(nodes=n), 0.3, 0.4, 1.1)) - ref).max()
+        for n in (4, 8, 16)
+    ]
     assert errs[0] > errs[1] > errs[2]
     assert errs[2] < 1e-6
 
@@ -99,9 +106,14 @@ def test_eta_integrals_against_adaptive_quadrature(seed):
     d = abs(xi + beta * math.sin(ang))
     got = sa.eta_integrals(lo, hi, d1, d0, d)
     for n in range(4):
-        want = quad(lambda e, n=n: e**n / math.sqrt(e * e + d1 * e + d0), lo, hi,
-                    points=[-d1 / 2] if lo < -d1 / 2 < hi else None, epsabs=1e-13,
-                    limit=200)[0]
+        want = quad(
+            lambda e, n=n: e**n / math.sqrt(e * e + d1 * e + d0),
+            lo,
+            hi,
+            points=[-d1 / 2] if lo < -d1 / 2 < hi else None,
+            epsabs=1e-13,
+            limit=200,
+        )[0]
         assert float(got[n]) == pytest.approx(want, abs=1e-10)
 
 
@@ -111,8 +123,10 @@ def test_printed_i1_is_the_printed_formula_and_is_wrong():
     H = KAPPA * h
     d1, d0, d = -0.8, 0.5, math.sqrt(0.5 - 0.16)
     qp, qm = d0 + d1 * H + H * H, d0 - d1 * H + H * H
-    printed = math.log((2 * math.sqrt(qp) + 2 * KAPPA * H + d1 * KAPPA)
-                       / (2 * math.sqrt(qm) - 2 * KAPPA * H + d1 * KAPPA))
+    printed = math.log(
+        (2 * math.sqrt(qp) + 2 * KAPPA * H + d1 * KAPPA)
+        / (2 * math.sqrt(qm) - 2 * KAPPA * H + d1 * KAPPA)
+    )
     corrected = math.log((2 * math.sqrt(qp) + 2 * H + d1) / (2 * math.sqrt(qm) - 2 * H + d1))
     k0p = sa.eta_integrals(-H, H, d1, d0, d, i1="printed", kappa=KAPPA)[0]
     k0c = sa.eta_integrals(-H, H, d1, d0, d)[0]
@@ -120,8 +134,10 @@ def test_printed_i1_is_the_printed_formula_and_is_wrong():
     assert float(k0c) == pytest.approx(corrected, rel=1e-13)
     # ... changes the wrench by O(1)
     model = sa.PaperModel(KAPPA, 0.42, 0.54)
-    diff = np.abs(np.array(sa.wrench(model.with_(i1="printed"), 0.6, 0.0, math.pi / 3))
-                  - np.array(sa.wrench(model, 0.6, 0.0, math.pi / 3)))
+    diff = np.abs(
+        np.array(sa.wrench(model.with_(i1="printed"), 0.6, 0.0, math.pi / 3))
+        - np.array(sa.wrench(model, 0.6, 0.0, math.pi / 3))
+    )
     assert diff.max() > 0.05
 
 
@@ -140,8 +156,9 @@ def test_vectorised_over_states():
     beta = np.array([0.1, 0.5, 2.0])
     w = sa.wrench(model, beta[:, None], np.array([0.0, 1.0]), 0.3)
     assert w.tangential.shape == (3, 2)
-    assert w.moment_paper[1, 1] == pytest.approx(sa.wrench(model, 0.5, 1.0, 0.3).moment_paper,
-                                                 abs=1e-15)
+    assert w.moment_paper[1, 1] == pytest.approx(
+        sa.wrench(model, 0.5, 1.0, 0.3).moment_paper, abs=1e-15
+    )
 
 
 def test_uniform_rhs_with_solve_ivp_reproduces_simulate():
@@ -149,16 +166,29 @@ def test_uniform_rhs_with_solve_ivp_reproduces_simulate():
     a, g = 1.0, 9.81
     body = Body(Ellipse(a, KAPPA), UniformPressure(), 1.0)
     fr = FrictionTensor(0.42, 0.54)
-    v_unit, w_unit, t_unit = (math.sqrt(a * g / math.pi), math.sqrt(g / (a * math.pi)),
-                              math.sqrt(a * math.pi / g))
+    v_unit, w_unit, t_unit = (
+        math.sqrt(a * g / math.pi),
+        math.sqrt(g / (a * math.pi)),
+        math.sqrt(a * math.pi / g),
+    )
     y0 = [0.0, 0.0, 0.5, 1.0, math.pi / 4, 1.0]  # paper units: v0 = ω0 = 1
-    sol = solve_ivp(sa.uniform_rhs, (0.0, 0.4), y0, args=(KAPPA, 0.42, 0.54), rtol=1e-10,
-                    atol=1e-12, method="DOP853")
-    tr = simulate(body, fr, State.from_speed(v_unit, w_unit, math.pi / 4, 0.5), g=g,
-                  max_step=0.02)
+    sol = solve_ivp(
+        sa.uniform_rhs,
+        (0.0, 0.4),
+        y0,
+        args=(KAPPA, 0.42, 0.54),
+        rtol=1e-10,
+        atol=1e-12,
+        method="DOP853",
+    )
+    tr = simulate(body, fr, State.from_speed(v_unit, w_unit, math.pi / 4, 0.5), g=g, max_step=0.02)
     t1 = tr.t / t_unit
-    for name, row, ours in (("v", 3, tr.speed / v_unit), ("theta", 4, tr.theta),
-                            ("omega", 5, tr.omega / w_unit), ("phi", 2, tr.phi)):
+    for name, row, ours in (
+        ("v", 3, tr.speed / v_unit),
+        ("theta", 4, tr.theta),
+        ("omega", 5, tr.omega / w_unit),
+        ("phi", 2, tr.phi),
+    ):
         assert sol.y[row, -1] == pytest.approx(np.interp(0.4, t1, ours), abs=2e-6), name
     run = sa.integrate(sa.PaperModel(KAPPA, 0.42, 0.54), phi0=0.5, stop=1e-7)
     assert run.status == 1
@@ -182,14 +212,17 @@ def test_rhs_uses_the_spin_reversal_symmetry():
     assert sa.rhs(0.0, neg, model)[5] == pytest.approx(d[5], abs=1e-14)
 
 
-@pytest.mark.parametrize("kw, match", [
-    (dict(kappa=0.0), "kappa"),
-    (dict(fx=-0.1), "fx"),
-    (dict(xi_c=0.2, eta_c=0.1), "xi_c"),
-    (dict(i1="typo"), "i1"),
-    (dict(reference="G"), "reference"),
-    (dict(nodes=2), "nodes"),
-])
+@pytest.mark.parametrize(
+    "kw, match",
+    [
+        (dict(kappa=0.0), "kappa"),
+        (dict(fx=-0.1), "fx"),
+        (dict(xi_c=0.2, eta_c=0.1), "xi_c"),
+        (dict(i1="typo"), "i1"),
+        (dict(reference="G"), "reference"),
+        (dict(nodes=2), "nodes"),
+    ],
+)
 def test_model_validation(kw, match):
     base = dict(kappa=KAPPA, fx=0.3, fy=0.5)
     with pytest.raises(ValueError, match=match):

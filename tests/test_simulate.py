@@ -33,8 +33,15 @@ def plain_stop(body, fr, st, g=9.81, cut=1e-9):
         return math.sqrt(y[3] ** 2 + y[4] ** 2 + k2 * y[5] ** 2) - cut * s0
 
     stop.terminal = True
-    sol = solve_ivp(rhs, (0.0, 100.0), [st.x, st.y, st.phi, st.vx, st.vy, st.omega],
-                    method="DOP853", rtol=1e-12, atol=1e-14, events=stop)
+    sol = solve_ivp(
+        rhs,
+        (0.0, 100.0),
+        [st.x, st.y, st.phi, st.vx, st.vy, st.omega],
+        method="DOP853",
+        rtol=1e-12,
+        atol=1e-14,
+        events=stop,
+    )
     assert sol.status == 1
     return sol.t[-1], sol.y[:, -1]
 
@@ -186,15 +193,20 @@ def test_skew_tensor_spiral_stop_closed_form():
     assert tr.t_stop == pytest.approx(v0 / (c * g), rel=1e-10)
     assert tr.distance == pytest.approx(v0**2 / (2 * c * g), rel=1e-10)
     assert math.hypot(tr.stop_state.x, tr.stop_state.y) == pytest.approx(
-        v0**2 / (g * math.sqrt(4 * c * c + f * f)), rel=1e-9)
+        v0**2 / (g * math.sqrt(4 * c * c + f * f)), rel=1e-9
+    )
 
 
 @pytest.mark.parametrize("mu, i_star", [(0.2030, 0.5118), (0.006153846153846176, 0.16101694915)])
 def test_slow_approaches_are_not_spirals(mu, i_star):
     """Near a Table 2 boundary the direction converges slowly (algebraically), or lingers by a
     saddle before leaving it: that is not a spiral stop (found in examples/sweep_quick.toml)."""
-    body = ss.Body.from_inertia_ratio(ss.Ellipse.from_eccentricity(0.1, 0.866),
-                                      ss.UniformPressure(), 1.0, i_star)
-    tr = ss.simulate(body, ss.FrictionTensor(0.42, 0.42 + mu),
-                     ss.State.from_speed(1.0, 5.0, math.pi / 4, math.pi / 4))
+    body = ss.Body.from_inertia_ratio(
+        ss.Ellipse.from_eccentricity(0.1, 0.866), ss.UniformPressure(), 1.0, i_star
+    )
+    tr = ss.simulate(
+        body,
+        ss.FrictionTensor(0.42, 0.42 + mu),
+        ss.State.from_speed(1.0, 5.0, math.pi / 4, math.pi / 4),
+    )
     assert tr.status == "stopped" and tr.ending in ("mixed", "pure_spinning")

@@ -19,8 +19,8 @@ from scipy.integrate import dblquad, quad
 from scipy.optimize import minimize_scalar
 
 import slidespin as ss
-from slidespin.loads import Incline
-from slidespin.statics import OnsetNotFound, can_stick, load_factor, onset, support_function
+from slidespin.contact.statics import OnsetNotFound, can_stick, load_factor, onset, support_function
+from slidespin.contact.incline import Incline
 
 G = 9.81
 
@@ -38,7 +38,9 @@ def h_dblquad(body, friction, d, phi):
         p = float(body.pressure.density(body.patch, xi, eta, load))
         x, y = c * (xi - xg) - s * (eta - yg), s * (xi - xg) + c * (eta - yg)
         cx, cy = d[0] - d[2] * y, d[1] + d[2] * x
-        return p * math.hypot(fw[0, 0] * cx + fw[1, 0] * cy, fw[0, 1] * cx + fw[1, 1] * cy) * a * b * r
+        return (
+            p * math.hypot(fw[0, 0] * cx + fw[1, 0] * cy, fw[0, 1] * cx + fw[1, 1] * cy) * a * b * r
+        )
 
     return dblquad(f, 0.0, 2.0 * math.pi, 0.0, 1.0, epsabs=1e-11, epsrel=1e-11)[0]
 
@@ -49,8 +51,10 @@ def disk_distance_integral(c, r):
     the direction ψ meets the circle at ρ± = −c cos ψ ± √(r² − c² sin² ψ), so the integral
     is ∫ (ρ₊³ − ρ₋³)/3 dψ (with ρ₋ replaced by 0 when P is inside)."""
     if c <= r:
+
         def f(psi):
             return (-c * math.cos(psi) + math.sqrt(r * r - (c * math.sin(psi)) ** 2)) ** 3 / 3.0
+
         return quad(f, 0.0, 2.0 * math.pi, epsabs=0.0, epsrel=1e-13, limit=200)[0]
     # P outside: rays within asin(r/c) of the centre; ρ₊³ − ρ₋³ = (ρ₊ − ρ₋)(4c² cos²ψ − c² + r²)
     # and sin ψ = (r/c) sin χ removes the square-root end points
@@ -58,8 +62,16 @@ def disk_distance_integral(c, r):
 
     def f(chi):
         cp = math.sqrt(1.0 - (q * math.sin(chi)) ** 2)
-        return 2.0 * r * math.cos(chi) * (4 * c * c * cp * cp - c * c + r * r) / 3.0 \
-            * q * math.cos(chi) / cp
+        return (
+            2.0
+            * r
+            * math.cos(chi)
+            * (4 * c * c * cp * cp - c * c + r * r)
+            / 3.0
+            * q
+            * math.cos(chi)
+            / cp
+        )
 
     return 2.0 * quad(f, 0.0, math.pi / 2, epsabs=0.0, epsrel=1e-13, limit=200)[0]
 
@@ -83,8 +95,12 @@ def off_centre_push_threshold(r, mu, m, e, g=G):
         return mu * p * abs(s) / r * disk_distance_integral(abs(r * c / s), r) / den
 
     edge = math.atan(e / r)
-    res = minimize_scalar(ratio, bounds=(-math.pi / 2 - edge + 1e-6, math.pi / 2 - edge - 1e-6),
-                          method="bounded", options={"xatol": 1e-12})
+    res = minimize_scalar(
+        ratio,
+        bounds=(-math.pi / 2 - edge + 1e-6, math.pi / 2 - edge - 1e-6),
+        method="bounded",
+        options={"xatol": 1e-12},
+    )
     return float(res.fun), np.array([math.cos(res.x), 0.0, math.sin(res.x) / r])
 
 
@@ -92,7 +108,8 @@ def test_disk_distance_integral_limits():
     r = 0.05
     assert disk_distance_integral(0.0, r) == pytest.approx(2 * math.pi * r**3 / 3, rel=1e-13)
     assert disk_distance_integral(r * (1 - 1e-12), r) == pytest.approx(
-        disk_distance_integral(r * (1 + 1e-12), r), rel=1e-10)
+        disk_distance_integral(r * (1 + 1e-12), r), rel=1e-10
+    )
     far = 1e4 * r  # a distant point sees the disk as its area at distance ≈ c (+ O(r²/c))
     assert disk_distance_integral(far, r) == pytest.approx(math.pi * r * r * far, rel=1e-8)
 
@@ -134,7 +151,7 @@ def test_onset_at_the_threshold_exists_whatever_the_rounding():
 
 
 def test_onset_failure_is_a_clear_error(monkeypatch):
-    import slidespin.statics as st
+    import slidespin.contact.statics as st
 
     monkeypatch.setattr(st, "_onset_nat", lambda *args, **kwargs: None)
     disk = ss.Body(ss.Circle(0.05), ss.UniformPressure(), 1.0)
@@ -145,10 +162,18 @@ def test_onset_failure_is_a_clear_error(monkeypatch):
 @pytest.mark.parametrize(
     "law, friction, d, phi",
     [
-        (ss.LinearPressure(0.015, -0.008), ss.FrictionTensor(0.3, 0.5, 0.1, angle=0.4),
-         (1.0, 0.3, 5.0), 0.7),
-        (ss.HertzPressure(), ss.FrictionTensor(0.2, 0.6, frame="body", angle=-0.3),
-         (0.2, -1.0, 20.0), -1.2),
+        (
+            ss.LinearPressure(0.015, -0.008),
+            ss.FrictionTensor(0.3, 0.5, 0.1, angle=0.4),
+            (1.0, 0.3, 5.0),
+            0.7,
+        ),
+        (
+            ss.HertzPressure(),
+            ss.FrictionTensor(0.2, 0.6, frame="body", angle=-0.3),
+            (0.2, -1.0, 20.0),
+            -1.2,
+        ),
     ],
 )
 def test_support_function_matches_direct_quadrature(law, friction, d, phi):
@@ -183,8 +208,11 @@ def test_disk_push_threshold_is_mu_m_g(mu):
 
 @pytest.mark.parametrize(
     "law, constant",
-    [(ss.UniformPressure(), 2.0 / 3.0), (ss.HertzPressure(), 3.0 * math.pi / 16.0),
-     (ss.BoussinesqPressure(), math.pi / 4.0)],
+    [
+        (ss.UniformPressure(), 2.0 / 3.0),
+        (ss.HertzPressure(), 3.0 * math.pi / 16.0),
+        (ss.BoussinesqPressure(), math.pi / 4.0),
+    ],
 )
 def test_disk_torque_threshold(law, constant):
     r, m, mu = 0.05, 2.0, 0.35
@@ -224,7 +252,8 @@ def test_set_is_symmetric():
     fr = ss.FrictionTensor(0.3, 0.45, 0.08, angle=0.2)
     w = np.array([1.2, -0.4, 0.07])
     assert load_factor(body, fr, w, 0.3, g=G) == pytest.approx(
-        load_factor(body, fr, -w, 0.3, g=G), rel=1e-10)
+        load_factor(body, fr, -w, 0.3, g=G), rel=1e-10
+    )
 
 
 def test_zero_load_sticks():
@@ -245,10 +274,18 @@ def test_pure_push_starts_along_the_push():
 @pytest.mark.parametrize(
     "body, friction, wrench, phi",
     [
-        (ss.Body(ss.Circle(0.05), ss.UniformPressure(), 2.0), ss.FrictionTensor(0.3, 0.3),
-         (5.0, 1.0, -0.4), 0.0),
-        (ss.Body(ss.Ellipse(0.1, 0.05), ss.LinearPressure(0.01, 0.005), 2.0),
-         ss.FrictionTensor(0.2, 0.5, 0.05, angle=0.3), (10.0, 0.0, 0.3), 0.4),
+        (
+            ss.Body(ss.Circle(0.05), ss.UniformPressure(), 2.0),
+            ss.FrictionTensor(0.3, 0.3),
+            (5.0, 1.0, -0.4),
+            0.0,
+        ),
+        (
+            ss.Body(ss.Ellipse(0.1, 0.05), ss.LinearPressure(0.01, 0.005), 2.0),
+            ss.FrictionTensor(0.2, 0.5, 0.05, angle=0.3),
+            (10.0, 0.0, 0.3),
+            0.4,
+        ),
     ],
 )
 def test_onset_solves_the_distributed_coulomb_start(body, friction, wrench, phi):
@@ -257,11 +294,11 @@ def test_onset_solves_the_distributed_coulomb_start(body, friction, wrench, phi)
     vx, vy, om = o.twist
     w = ss.friction_wrench(body, friction, vx, vy, om, phi, g=G)
     m, inertia = body.mass, body.moment_of_inertia
-    acc = np.array([(wrench[0] + w.force_x) / m, (wrench[1] + w.force_y) / m,
-                    (wrench[2] + w.moment) / inertia])
+    acc = np.array(
+        [(wrench[0] + w.force_x) / m, (wrench[1] + w.force_y) / m, (wrench[2] + w.moment) / inertia]
+    )
     twist = np.array([vx, vy, om])
-    lam = float(acc @ (twist * [1, 1, inertia / m])) / float(
-        twist @ (twist * [1, 1, inertia / m]))
+    lam = float(acc @ (twist * [1, 1, inertia / m])) / float(twist @ (twist * [1, 1, inertia / m]))
     np.testing.assert_allclose(acc, lam * twist, rtol=0, atol=1e-10 * np.abs(acc).max())
     assert lam > 0 and o.acceleration == pytest.approx(lam, rel=1e-9)
     # a force with a torque starts a mixed motion, not along the load
@@ -282,11 +319,12 @@ def test_validation_messages():
 
 
 def test_critical_tilt_is_the_friction_angle_of_the_downhill_direction():
-    from slidespin.statics import critical_tilt
+    from slidespin.contact.statics import critical_tilt
 
     body = ss.Body(ss.Ellipse(0.1, 0.06), ss.HertzPressure(), 1.0)
     assert critical_tilt(body, ss.FrictionTensor.isotropic(0.35), 1.1, 0.4) == pytest.approx(
-        math.atan(0.35), rel=1e-12)
+        math.atan(0.35), rel=1e-12
+    )
     # orthotropic, principal axes turned by 0.3: the force ellipse gives
     # tan α_c = 1/√((cos δ′/fx)² + (sin δ′/fy)²), δ′ = δ − 0.3
     fx, fy = 0.2, 0.5

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.sweep import SweepError, load_spec, read_sweep, sweep
+from slidespin.studies.sweep import SweepError, load_spec, read_sweep, sweep
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 
@@ -31,10 +31,20 @@ def small_spec(**over):
         "name": "test",
         "kind": "grid",
         "chunk_size": 7,
-        "fixed": {"a": 0.05, "e": 0.6, "fx": 0.3, "mass": 1.0,
-                  "v0": 0.5, "theta0": 0.3, "omega0": 6.0},
-        "vary": {"mu": [0.0, 0.1, 0.2], "I_star": {"start": 0.2, "stop": 0.8, "num": 4},
-                 "law": ["uniform", "hertz"]},
+        "fixed": {
+            "a": 0.05,
+            "e": 0.6,
+            "fx": 0.3,
+            "mass": 1.0,
+            "v0": 0.5,
+            "theta0": 0.3,
+            "omega0": 6.0,
+        },
+        "vary": {
+            "mu": [0.0, 0.1, 0.2],
+            "I_star": {"start": 0.2, "stop": 0.8, "num": 4},
+            "law": ["uniform", "hertz"],
+        },
     }
     spec.update(over)
     return spec
@@ -49,8 +59,11 @@ def test_grid_cases_are_the_cartesian_product():
 
 
 def test_random_cases_do_not_depend_on_chunking():
-    data = small_spec(kind="random", random={"samples": 50, "seed": 3},
-                      vary={"fx": {"low": 0.1, "high": 0.5}, "law": ["uniform", "hertz"]})
+    data = small_spec(
+        kind="random",
+        random={"samples": 50, "seed": 3},
+        vary={"fx": {"low": 0.1, "high": 0.5}, "law": ["uniform", "hertz"]},
+    )
     data["fixed"] = dict(data["fixed"], fy=0.6)
     del data["fixed"]["fx"]
     spec = load_spec(data)
@@ -91,10 +104,23 @@ def test_local_sweep_stores_everything_and_matches_simulate(tmp_path):
     assert res.chunks_computed == 4 and res.cases_computed == 24
     table = read_sweep(tmp_path / "s")
     assert np.array_equal(table["case_id"], np.arange(24))
-    for col in ("t_stop", "beta_stop", "theta_stop", "phi_stop", "x_stop", "y_stop",
-                "path_length", "ending", "status", "fx", "fy", "I_star", "law"):
+    for col in (
+        "t_stop",
+        "beta_stop",
+        "theta_stop",
+        "phi_stop",
+        "x_stop",
+        "y_stop",
+        "path_length",
+        "ending",
+        "status",
+        "fx",
+        "fy",
+        "I_star",
+        "law",
+    ):
         assert col in table
-    from slidespin.outcomes import CONVERGED, FLAGGED
+    from slidespin.motion.outcomes import CONVERGED, FLAGGED
 
     assert set(table["status"]) <= CONVERGED | FLAGGED  # read_sweep leaves out the others
     man = json.loads((tmp_path / "s" / "manifest.json").read_text())
@@ -103,8 +129,9 @@ def test_local_sweep_stores_everything_and_matches_simulate(tmp_path):
     # two cases recomputed one by one with the public simulate()
     for i in (5, 18):
         law = ss.HertzPressure() if table["law"][i] == "hertz" else ss.UniformPressure()
-        body = ss.Body.from_inertia_ratio(ss.Ellipse.from_eccentricity(0.05, 0.6), law, 1.0,
-                                          table["I_star"][i])
+        body = ss.Body.from_inertia_ratio(
+            ss.Ellipse.from_eccentricity(0.05, 0.6), law, 1.0, table["I_star"][i]
+        )
         fr = ss.FrictionTensor(0.3, table["fy"][i])
         tr = ss.simulate(body, fr, ss.State.from_speed(0.5, 6.0, 0.3))
         assert table["t_stop"][i] == pytest.approx(tr.t_stop, rel=1e-12)
@@ -139,8 +166,13 @@ def test_foreign_directory_is_refused(tmp_path):
 
 
 def run_cli(*args, **kw):
-    return subprocess.run([sys.executable, "-m", "slidespin", *args], capture_output=True,
-                          text=True, timeout=600, **kw)
+    return subprocess.run(
+        [sys.executable, "-m", "slidespin", *args],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        **kw,
+    )
 
 
 def test_sigkill_then_resume_loses_nothing(tmp_path):
@@ -153,9 +185,11 @@ def test_sigkill_then_resume_loses_nothing(tmp_path):
         "omega0 = {low = -20.0, high = 20.0}\nI_star = {low = 0.2, high = 1.0}\n"
     )
     out = tmp_path / "run"
-    proc = subprocess.Popen([sys.executable, "-m", "slidespin", "sweep", str(spec_path),
-                             "--out", str(out), "--quiet"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "slidespin", "sweep", str(spec_path), "--out", str(out), "--quiet"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
     deadline = time.monotonic() + 300
     while time.monotonic() < deadline:
         n = len(list((out / "chunks").glob("chunk-*.parquet"))) if out.exists() else 0
@@ -182,8 +216,9 @@ def test_dask_local_cluster_gives_exactly_the_local_results(tmp_path):
     distributed = pytest.importorskip("distributed")
     data = small_spec(chunk_size=12)
     sweep(data, tmp_path / "local")
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, host="127.0.0.1",
-                                  dashboard_address=None, processes=True) as cluster:
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, host="127.0.0.1", dashboard_address=None, processes=True
+    ) as cluster:
         with distributed.Client(cluster) as client:
             sweep(data, tmp_path / "dask", executor=client, task_cases=6)  # 2 tasks
     a, b = read_sweep(tmp_path / "local"), read_sweep(tmp_path / "dask")
@@ -218,8 +253,9 @@ def test_sweep_cli_read_and_plot(tmp_path):
     lines = (tmp_path / "s.csv").read_text().splitlines()
     assert len(lines) == 10 and "beta_stop" in lines[0]
     png = tmp_path / "s.png"
-    r = run_cli("sweep-plot", str(out), "--x", "mu", "--y", "I_star", "--value", "t_stop",
-                "--out", str(png))
+    r = run_cli(
+        "sweep-plot", str(out), "--x", "mu", "--y", "I_star", "--value", "t_stop", "--out", str(png)
+    )
     assert r.returncode == 0, r.stderr
     assert png.stat().st_size > 10_000
     r = run_cli("sweep-plot", str(out), "--x", "nope", "--out", str(png))

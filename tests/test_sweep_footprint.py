@@ -1,6 +1,6 @@
 """Sweeps over patch parameters (issue #12 item 4) and a sweep as a pandas table (#15 item 4).
 
-Truth: single :func:`slidespin.simulate` calls on bodies built by hand from the footprint
+Truth: single :func:`slidespin.motion.simulate` calls on bodies built by hand from the footprint
 classes (the sweep must give the same numbers, to the last bit), the pure-spin closed form of
 a uniform ring, the thin-ring limit β* → R, pure translation of any footprint (t = v0/(μ g),
 distance v0²/(2 μ g)), and the messages of bad keys.
@@ -28,9 +28,9 @@ from slidespin import (
     Rectangle,
     State,
     UniformPressure,
-    simulate,
 )
-from slidespin.sweep import (
+from slidespin.motion import simulate
+from slidespin.studies.sweep import (
     CHUNK_COLUMNS,
     SweepError,
     chunk_columns,
@@ -494,8 +494,8 @@ def test_random_footprint_sweep_is_independent_of_chunking(tmp_path):
 
 def test_sweep_patch_keys_are_those_of_the_case_file():
     """The footprint keys of a TOML [patch] table are sweep keys of the same shape."""
-    from slidespin._cases import SHAPE_KEYS
-    from slidespin.case import _FOOTPRINT_KEYS
+    from slidespin.motion._cases import SHAPE_KEYS
+    from slidespin.studies.case import _FOOTPRINT_KEYS
 
     for shape, keys in _FOOTPRINT_KEYS.items():
         assert set(keys) <= set(SHAPE_KEYS[shape]), shape

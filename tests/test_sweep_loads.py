@@ -15,7 +15,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from slidespin.sweep import SweepError, SweepResult, load_spec, read_sweep, split_unconverged, sweep
+from slidespin.studies.sweep import (
+    SweepError,
+    SweepResult,
+    load_spec,
+    read_sweep,
+    split_unconverged,
+    sweep,
+)
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 G = 9.81
@@ -295,7 +302,7 @@ def test_footprint_threshold_along_a_principal_axis(tmp_path, patch):
 
 
 def test_a_case_failing_mid_sweep_is_named_and_the_sweep_resumes(tmp_path, monkeypatch):
-    import slidespin.statics as statics
+    import slidespin.contact.statics as statics
 
     real = statics.critical_tilt
 

@@ -13,16 +13,21 @@ import os
 import socket
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from slidespin import sweep as sw
-from slidespin.cli import main
-from slidespin.sweep import (SweepError, count_outcomes, load_spec, read_sweep,
-                             split_unconverged, sweep)
+from slidespin.cli.main import main
+from slidespin.studies import sweep as sw
+from slidespin.studies.sweep import (
+    SweepError,
+    count_outcomes,
+    load_spec,
+    read_sweep,
+    split_unconverged,
+    sweep,
+)
 
 
 class FakeResults:
@@ -39,18 +44,27 @@ def fake_engine(fields, rtol=1e-10):
     fx, fy = np.asarray(fields["fx"], float), np.asarray(fields["fy"], float)
     mu = fy - fx
     n = mu.size
-    istar = np.asarray(fields["moment_of_inertia"]) / (np.asarray(fields["mass"])
-                                                       * np.asarray(fields["a"]) ** 2)
+    istar = np.asarray(fields["moment_of_inertia"]) / (
+        np.asarray(fields["mass"]) * np.asarray(fields["a"]) ** 2
+    )
     status = np.where(mu > 0.15, "max_steps", np.where(istar < 0.3, "saddle", "stopped"))
     ending = np.where(mu == 0.0, "pure_sliding", "mixed")
     beta = np.where(mu == 0.0, np.inf, 0.01 + mu * istar)
-    return FakeResults({
-        "t_stop": 1.0 + mu, "beta_stop": beta, "theta_stop": mu, "phi_stop": istar,
-        "x_stop": np.zeros(n), "y_stop": np.zeros(n), "path_length": np.ones(n),
-        "ending": ending.astype(object), "status": status.astype(object),
-        "saddle_energy": np.where(status == "saddle", 1e-20, np.nan),
-        "n_steps": np.full(n, 10, dtype=np.int64),
-    })
+    return FakeResults(
+        {
+            "t_stop": 1.0 + mu,
+            "beta_stop": beta,
+            "theta_stop": mu,
+            "phi_stop": istar,
+            "x_stop": np.zeros(n),
+            "y_stop": np.zeros(n),
+            "path_length": np.ones(n),
+            "ending": ending.astype(object),
+            "status": status.astype(object),
+            "saddle_energy": np.where(status == "saddle", 1e-20, np.nan),
+            "n_steps": np.full(n, 10, dtype=np.int64),
+        }
+    )
 
 
 @pytest.fixture
@@ -63,9 +77,13 @@ ISTAR = [0.2, 0.5, 0.8, 1.1]
 
 
 def grid_spec(**over):
-    spec = {"name": "outcomes", "kind": "grid", "chunk_size": 5,
-            "fixed": {"a": 0.05, "fx": 0.3, "v0": 1.0, "omega0": 10.0},
-            "vary": {"mu": MU, "I_star": ISTAR}}
+    spec = {
+        "name": "outcomes",
+        "kind": "grid",
+        "chunk_size": 5,
+        "fixed": {"a": 0.05, "fx": 0.3, "v0": 1.0, "omega0": 10.0},
+        "vary": {"mu": MU, "I_star": ISTAR},
+    }
     spec.update(over)
     return spec
 
@@ -82,8 +100,12 @@ def expected_counts():
 
 
 def write_spec(tmp_path, data) -> Path:
-    lines = [f'name = "{data["name"]}"', f'kind = "{data["kind"]}"',
-             f'chunk_size = {data["chunk_size"]}', "[fixed]"]
+    lines = [
+        f'name = "{data["name"]}"',
+        f'kind = "{data["kind"]}"',
+        f"chunk_size = {data['chunk_size']}",
+        "[fixed]",
+    ]
     lines += [f"{k} = {v!r}" for k, v in data["fixed"].items()]
     lines += ["[vary]"] + [f"{k} = {v!r}" for k, v in data["vary"].items()]
     p = tmp_path / "spec.toml"
@@ -93,13 +115,18 @@ def write_spec(tmp_path, data) -> Path:
 
 # ------------------------------------------------------------------------------ counting
 def test_count_outcomes_and_split_by_hand():
-    status = np.array(["stopped", "max_steps", "saddle", "stopped", "non_finite",
-                       "marginal"], dtype=object)
-    ending = np.array(["mixed", "mixed", "pure_sliding", "spiral", "mixed", "mixed"],
-                      dtype=object)
+    status = np.array(
+        ["stopped", "max_steps", "saddle", "stopped", "non_finite", "marginal"], dtype=object
+    )
+    ending = np.array(["mixed", "mixed", "pure_sliding", "spiral", "mixed", "mixed"], dtype=object)
     c = count_outcomes(status, ending)
-    assert c["status"] == {"stopped": 2, "max_steps": 1, "marginal": 1, "saddle": 1,
-                           "non_finite": 1}
+    assert c["status"] == {
+        "stopped": 2,
+        "max_steps": 1,
+        "marginal": 1,
+        "saddle": 1,
+        "non_finite": 1,
+    }
     assert list(c["status"]) == ["stopped", "marginal", "saddle", "max_steps", "non_finite"]
     assert c["ending"] == {"mixed": 4, "pure_sliding": 1, "spiral": 1}
     assert c["unconverged"] == 2
@@ -185,7 +212,7 @@ def test_resume_keeps_sound_chunks(tmp_path, fake):
 HOLD = """
 import sys, time
 from pathlib import Path
-from slidespin.sweep import _Lock
+from slidespin.studies.sweep import _Lock
 with _Lock(Path(sys.argv[1])):
     print("locked", flush=True)
     time.sleep(60)
@@ -196,8 +223,9 @@ def test_concurrent_run_is_refused(tmp_path, fake, capsys):
     out = tmp_path / "s"
     sweep(grid_spec(), out)
     (out / "chunks" / "chunk-000001.parquet").unlink()
-    holder = subprocess.Popen([sys.executable, "-c", HOLD, str(out)], stdout=subprocess.PIPE,
-                              text=True)
+    holder = subprocess.Popen(
+        [sys.executable, "-c", HOLD, str(out)], stdout=subprocess.PIPE, text=True
+    )
     try:
         assert holder.stdout.readline().strip() == "locked"
         spec = write_spec(tmp_path, grid_spec())
@@ -225,10 +253,12 @@ def test_lock_of_a_live_process_on_this_host_is_respected(tmp_path, fake):
 
 
 # ------------------------------------------------------------------------------ full disk
-@pytest.mark.parametrize("code, words", [(errno.ENOSPC, "disk full"),
-                                         (errno.EACCES, "permission denied")])
-def test_failed_chunk_write_is_reported_and_resumable(tmp_path, fake, monkeypatch, capsys,
-                                                      code, words):
+@pytest.mark.parametrize(
+    "code, words", [(errno.ENOSPC, "disk full"), (errno.EACCES, "permission denied")]
+)
+def test_failed_chunk_write_is_reported_and_resumable(
+    tmp_path, fake, monkeypatch, capsys, code, words
+):
     real = sw._parquet_write
 
     def failing(table, path):
@@ -259,10 +289,17 @@ def test_failed_chunk_write_is_reported_and_resumable(tmp_path, fake, monkeypatc
 def test_random_cases_are_the_draws_of_independent_streams():
     """Case i of parameter j is the i-th draw of default_rng([seed, j]) (drawn here whole,
     independently of the chunked generator)."""
-    data = {"kind": "random", "chunk_size": 7, "random": {"samples": 40, "seed": 9},
-            "fixed": {"a": 0.05, "fx": 0.3},
-            "vary": {"mu": {"low": 0.0, "high": 0.3}, "law": ["uniform", "hertz"],
-                     "v0": {"low": 0.1, "high": 2.0, "log": True}}}
+    data = {
+        "kind": "random",
+        "chunk_size": 7,
+        "random": {"samples": 40, "seed": 9},
+        "fixed": {"a": 0.05, "fx": 0.3},
+        "vary": {
+            "mu": {"low": 0.0, "high": 0.3},
+            "law": ["uniform", "hertz"],
+            "v0": {"low": 0.1, "high": 2.0, "log": True},
+        },
+    }
     spec = load_spec(data)
     mu = np.random.default_rng([9, 0]).uniform(0.0, 0.3, 40)
     law = np.array(["uniform", "hertz"])[np.random.default_rng([9, 1]).integers(0, 2, 40)]

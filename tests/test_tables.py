@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.batch import simulate_many
+from slidespin.motion.batch import simulate_many
 
 pd = pytest.importorskip("pandas")
 

@@ -1,4 +1,4 @@
-"""Terminal motion (slidespin.terminal): eq. 14–16, fixed points of the sphere flow, Table 2.
+"""Terminal motion (slidespin.analysis.terminal): eq. 14–16, fixed points of the sphere flow, Table 2.
 
 Independent truths used here: the published terminal ratio of the uniformly loaded disk
 (I* = 1/2, isotropic friction: v/(aω) = 0.653, Voyenli & Eriksen 1985), the closed forms of
@@ -23,9 +23,8 @@ from slidespin import (
     State,
     UniformPressure,
     friction_wrench,
-    simulate,
 )
-from slidespin.terminal import (
+from slidespin.analysis.terminal import (
     circle_terminal_ratio,
     inertia_for_ratio,
     inertia_intervals,
@@ -34,6 +33,7 @@ from slidespin.terminal import (
     terminal_ratio,
     terminal_states,
 )
+from slidespin.motion import simulate
 
 ELLIPSE = Ellipse.from_eccentricity(1.0, 0.866)
 FR = FrictionTensor(0.42, 0.54)
@@ -54,8 +54,9 @@ def test_uniform_disk_stops_with_published_ratio():
     iso = FrictionTensor(0.25, 0.25)
     beta = terminal_ratio(disk, iso, phi=0.3)
     assert round(beta / 0.07, 3) == 0.653  # published: 0.653
-    assert circle_terminal_ratio(UniformPressure(), iso, 0.5) == pytest.approx(beta / 0.07,
-                                                                               abs=1e-10)
+    assert circle_terminal_ratio(UniformPressure(), iso, 0.5) == pytest.approx(
+        beta / 0.07, abs=1e-10
+    )
     best = _stable_mixed(terminal_states(disk, iso, 0.3))
     assert best.continuum and math.isnan(best.theta)  # a circle of fixed points
     assert best.beta == pytest.approx(beta, abs=1e-10)
@@ -114,15 +115,17 @@ def test_eq16_root_is_terminal_only_when_normal_force_vanishes():
     vx, vy = best.beta * math.cos(best.theta), best.beta * math.sin(best.theta)
     w = friction_wrench(body, FR, vx, vy, 1.0, math.pi / 4, g=1.0)
     assert abs(w.normal) < 1e-9  # eq. 14: F_n = 0 ...
-    assert best.beta == pytest.approx(body.inertia_ratio * w.tangential / w.moment_paper,
-                                      rel=1e-9)  # ... and eq. 16 at (β*, ϑ*)
+    assert best.beta == pytest.approx(
+        body.inertia_ratio * w.tangential / w.moment_paper, rel=1e-9
+    )  # ... and eq. 16 at (β*, ϑ*)
 
 
 # ------------------------------------------------------------------------------------------
 # fixed points of the sphere flow
 # ------------------------------------------------------------------------------------------
-@pytest.mark.parametrize("law", [UniformPressure(), LinearPressure(0.1, 0.1)],
-                         ids=["uniform", "linear"])
+@pytest.mark.parametrize(
+    "law", [UniformPressure(), LinearPressure(0.1, 0.1)], ids=["uniform", "linear"]
+)
 def test_terminal_states_agree_with_integration_to_the_stop(law):
     body = Body(ELLIPSE, law, 1.0)
     tr = simulate(body, FR, State.from_speed(1.0, 2.0, math.pi / 4, 1.0))
@@ -150,8 +153,11 @@ def test_fixed_points_are_fixed_and_come_in_antipodal_pairs():
 
 def test_pure_sliding_along_friction_axes():
     body = Body(ELLIPSE, UniformPressure(), 1.0)
-    slides = [s for s in terminal_states(body, FrictionTensor(0.3, 0.5), 0.4)
-              if s.ending == "pure_sliding"]
+    slides = [
+        s
+        for s in terminal_states(body, FrictionTensor(0.3, 0.5), 0.4)
+        if s.ending == "pure_sliding"
+    ]
     thetas = sorted(round(s.theta % (2 * math.pi), 12) for s in slides)
     assert thetas == pytest.approx([0.0, math.pi / 2, math.pi, 3 * math.pi / 2])
     # the skew part turns a sliding body: no pure-sliding terminal motion when |f| > |μ|/2
@@ -159,8 +165,9 @@ def test_pure_sliding_along_friction_axes():
     assert not any(s.ending == "pure_sliding" for s in skew)
 
 
-@pytest.mark.parametrize("regime, ending", [(1, "pure_sliding"), (2, "mixed"), (3, "mixed"),
-                                            (4, "pure_spinning")])
+@pytest.mark.parametrize(
+    "regime, ending", [(1, "pure_sliding"), (2, "mixed"), (3, "mixed"), (4, "pure_spinning")]
+)
 def test_stable_ending_matches_table2_regime(regime, ending):
     fr = FrictionTensor(0.3, 0.45)
     i1, i2, i3 = inertia_intervals(HertzPressure(), fr)
@@ -205,12 +212,15 @@ def test_interval_regime_and_ending():
     assert iv.ending(0.1) == "pure_sliding" and iv.ending(1.0) == "pure_spinning"
 
 
-@pytest.mark.parametrize("bad, match", [
-    (dict(pressure=LinearPressure(0.01, 0.0)), "pressure"),
-    (dict(friction=FrictionTensor(0.3, 0.4, 0.1)), "friction.f"),
-    (dict(friction=FrictionTensor(0.3, 0.4, angle=0.2)), "friction.angle"),
-    (dict(friction=FrictionTensor(0.4, 0.3)), "mu = fy - fx"),
-])
+@pytest.mark.parametrize(
+    "bad, match",
+    [
+        (dict(pressure=LinearPressure(0.01, 0.0)), "pressure"),
+        (dict(friction=FrictionTensor(0.3, 0.4, 0.1)), "friction.f"),
+        (dict(friction=FrictionTensor(0.3, 0.4, angle=0.2)), "friction.angle"),
+        (dict(friction=FrictionTensor(0.4, 0.3)), "mu = fy - fx"),
+    ],
+)
 def test_table2_input_errors(bad, match):
     kw = dict(pressure=UniformPressure(), friction=FrictionTensor(0.3, 0.4)) | bad
     with pytest.raises(ValueError, match=match):

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.case import case_from_dict
+from slidespin.studies.case import case_from_dict
 
 BAD_CONSTRUCTORS = [
     (lambda: ss.Ellipse(0.0, 1.0), "a = 0.0"),
@@ -134,8 +134,12 @@ EDGES = [
     (lambda x: ss.Circle(x), 1e-9, 1e6, "radius = "),
     (lambda x: ss.Ellipse(1.0, x), 1e-3, 30.0, "b/a = "),
     (lambda x: ss.Body(ss.Circle(0.1), ss.UniformPressure(), x), 1e-12, 1e12, "mass = "),
-    (lambda x: ss.Body.from_inertia_ratio(ss.Circle(0.1), ss.HertzPressure(), 2.0, x), 1e-8, 1e8,
-     "inertia_ratio = "),
+    (
+        lambda x: ss.Body.from_inertia_ratio(ss.Circle(0.1), ss.HertzPressure(), 2.0, x),
+        1e-8,
+        1e8,
+        "inertia_ratio = ",
+    ),
     (lambda x: ss.FrictionTensor(x, 0.3), 1e-6, 5.0, "fx = "),
     (lambda x: ss.FrictionTensor(0.3, 0.3, f=x), -5.0, 5.0, "f = "),
     (lambda x: ss.State(vx=x), -1e8, 1e8, "vx = "),
@@ -156,7 +160,9 @@ def test_range_edges_are_in_and_the_next_floats_out(make, lo, hi, name):
 def test_inertia_ratio_bound_applies_to_an_explicit_inertia():
     body = ss.Body(ss.Circle(0.1), ss.UniformPressure(), 2.0, 1e8 * 2.0 * 0.01)
     assert body.inertia_ratio == pytest.approx(1e8)
-    with pytest.raises(ValueError, match=r"I/\(m a\^2\) = 1.1e\+08; valid range: \[1e-08, 1e\+08\]"):
+    with pytest.raises(
+        ValueError, match=r"I/\(m a\^2\) = 1.1e\+08; valid range: \[1e-08, 1e\+08\]"
+    ):
         ss.Body(ss.Circle(0.1), ss.UniformPressure(), 2.0, 1.1e8 * 2.0 * 0.01)
 
 
@@ -166,7 +172,8 @@ def test_friction_angle_in_degrees():
     assert a == b and a.angle == math.radians(30.0)
     assert a.angle_deg == pytest.approx(30.0, rel=1e-15)
     assert ss.FrictionTensor.from_degrees(0.3, 0.4, angle_deg=90.0).world_matrix() == pytest.approx(
-        np.array([[0.4, 0.0], [0.0, 0.3]]), abs=1e-15)  # axes turned by 90°: fx and fy swap
+        np.array([[0.4, 0.0], [0.0, 0.3]]), abs=1e-15
+    )  # axes turned by 90°: fx and fy swap
     assert ss.FrictionTensor(0.3, 0.4).angle_deg == 0.0
     with pytest.raises(ValueError, match="gives both angle"):
         ss.FrictionTensor(0.3, 0.4, angle=0.2, angle_deg=30.0)
@@ -217,8 +224,12 @@ def _run_import_anywhere(tmp, extra_env=None):
             mode |= stat.S_IXUSR | stat.S_IXGRP | stat.S_IXOTH
         path.chmod(mode)
     env = {k: v for k, v in os.environ.items() if not k.startswith(("NUMBA_CACHE", "XDG_"))}
-    env.update(HOME=str(home), XDG_CACHE_HOME=str(home / ".cache"), PYTHONPATH=str(pkg),
-               **(extra_env or {}))
+    env.update(
+        HOME=str(home),
+        XDG_CACHE_HOME=str(home / ".cache"),
+        PYTHONPATH=str(pkg),
+        **(extra_env or {}),
+    )
     prefix = []
     if os.geteuid() == 0:
         if shutil.which("setpriv"):
@@ -226,11 +237,19 @@ def _run_import_anywhere(tmp, extra_env=None):
         else:  # pragma: no cover - depends on the machine
             plain = Path(tmp) / "plain-file"
             plain.write_text("")
-            env.update(NUMBA_CACHE_LOCATOR_CLASSES="UserProvidedCacheLocator",
-                       NUMBA_CACHE_DIR=str(plain / "cache"))
-    return subprocess.run([*prefix, sys.executable, "-c", _IMPORT_ANYWHERE, str(pkg)], env=env,
-                          capture_output=True, text=True, timeout=600, cwd=str(home),
-                          check=False)
+            env.update(
+                NUMBA_CACHE_LOCATOR_CLASSES="UserProvidedCacheLocator",
+                NUMBA_CACHE_DIR=str(plain / "cache"),
+            )
+    return subprocess.run(
+        [*prefix, sys.executable, "-c", _IMPORT_ANYWHERE, str(pkg)],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=600,
+        cwd=str(home),
+        check=False,
+    )
 
 
 @pytest.fixture

@@ -43,8 +43,19 @@ def tensor_matrix(fr: ss.FrictionTensor, phi: float) -> np.ndarray:
 def compare(body, fr, vx, vy, om, phi, tol=TOL):
     w = ss.friction_wrench(body, fr, vx, vy, om, phi, g=1.0)
     xc, yc = body.mass_centre
-    ref = reference_wrench(body.patch.a, body.patch.b, body.pressure.name,
-                           tensor_matrix(fr, phi), phi, vx, vy, om, xi_c=xc, eta_c=yc, P=1.0)
+    ref = reference_wrench(
+        body.patch.a,
+        body.patch.b,
+        body.pressure.name,
+        tensor_matrix(fr, phi),
+        phi,
+        vx,
+        vy,
+        om,
+        xi_c=xc,
+        eta_c=yc,
+        P=1.0,
+    )
     got = np.array([w.force_x, w.force_y, w.moment / body.patch.a])
     want = np.array([ref[0], ref[1], ref[2] / body.patch.a])
     assert np.all(np.isfinite(got))
@@ -107,8 +118,9 @@ def test_pure_spin_of_a_disk(law, factor):
     body = ss.Body(ss.Circle(a), make_law(law, a, a), mass=m)
     for om in (3.0, -0.5):
         w = ss.friction_wrench(body, ss.FrictionTensor.isotropic(f), 0.0, 0.0, om, 0.4, g=g)
-        assert w.moment == pytest.approx(-math.copysign(1, om) * f * m * g * a * factor,
-                                         abs=1e-12 * m * g * a)
+        assert w.moment == pytest.approx(
+            -math.copysign(1, om) * f * m * g * a * factor, abs=1e-12 * m * g * a
+        )
         assert abs(w.force_x) < 1e-12 * m * g and abs(w.force_y) < 1e-12 * m * g
 
 
@@ -122,9 +134,19 @@ def test_friction_power_equals_dissipation_integral(law):
         phi = 0.6
         vx, vy = state_with_icr(body, cx, cy, phi, om)
         w = ss.friction_wrench(body, fr, vx, vy, om, phi, g=1.0)
-        diss = reference_dissipation(a, b, body.pressure.name, fr.world_matrix(phi), phi,
-                                     vx, vy, om, xi_c=body.mass_centre[0],
-                                     eta_c=body.mass_centre[1], P=1.0)
+        diss = reference_dissipation(
+            a,
+            b,
+            body.pressure.name,
+            fr.world_matrix(phi),
+            phi,
+            vx,
+            vy,
+            om,
+            xi_c=body.mass_centre[0],
+            eta_c=body.mass_centre[1],
+            P=1.0,
+        )
         power = w.power(vx, vy, om)
         assert power < 0
         assert power == pytest.approx(-abs(diss), abs=1e-10 * (1 + abs(om)))
@@ -138,8 +160,12 @@ def test_homogeneous_of_degree_zero(law, rng):
         vx, vy, om, phi = rng.normal(size=4)
         w1 = ss.friction_wrench(body, fr, vx, vy, om, phi)
         w2 = ss.friction_wrench(body, fr, 37.0 * vx, 37.0 * vy, 37.0 * om, phi)
-        assert np.allclose([w1.force_x, w1.force_y, w1.moment],
-                           [w2.force_x, w2.force_y, w2.moment], atol=1e-11, rtol=0)
+        assert np.allclose(
+            [w1.force_x, w1.force_y, w1.moment],
+            [w2.force_x, w2.force_y, w2.moment],
+            atol=1e-11,
+            rtol=0,
+        )
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -154,8 +180,12 @@ def test_rotation_equivariance(law, rng):
         c, s = math.cos(alpha), math.sin(alpha)
         w1 = ss.friction_wrench(body, fr, vx, vy, om, phi)
         w2 = ss.friction_wrench(body, fr_rot, c * vx - s * vy, s * vx + c * vy, om, phi + alpha)
-        assert np.allclose([c * w1.force_x - s * w1.force_y, s * w1.force_x + c * w1.force_y,
-                            w1.moment], [w2.force_x, w2.force_y, w2.moment], atol=1e-11, rtol=0)
+        assert np.allclose(
+            [c * w1.force_x - s * w1.force_y, s * w1.force_x + c * w1.force_y, w1.moment],
+            [w2.force_x, w2.force_y, w2.moment],
+            atol=1e-11,
+            rtol=0,
+        )
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -170,20 +200,30 @@ def test_mirror_symmetry(law, rng):
         b2 = ss.Body(ss.Ellipse(a, b), law2, mass=1.0)
         w1 = ss.friction_wrench(b1, ss.FrictionTensor(0.3, 0.5, f=0.15), vx, vy, om, phi)
         w2 = ss.friction_wrench(b2, ss.FrictionTensor(0.3, 0.5, f=-0.15), vx, -vy, -om, -phi)
-        assert np.allclose([w1.force_x, -w1.force_y, -w1.moment],
-                           [w2.force_x, w2.force_y, w2.moment], atol=1e-11, rtol=0)
+        assert np.allclose(
+            [w1.force_x, -w1.force_y, -w1.moment],
+            [w2.force_x, w2.force_y, w2.moment],
+            atol=1e-11,
+            rtol=0,
+        )
 
 
 def test_body_frame_tensor_is_plane_tensor_turned_with_the_body(rng):
     body = ss.Body(ss.Ellipse(1.0, 0.5), ss.HertzPressure(), mass=1.0)
     for _ in range(4):
         vx, vy, om, phi = rng.normal(size=4)
-        wb = ss.friction_wrench(body, ss.FrictionTensor(0.2, 0.7, 0.1, "body", 0.3),
-                                vx, vy, om, phi)
-        wp = ss.friction_wrench(body, ss.FrictionTensor(0.2, 0.7, 0.1, "plane", 0.3 + phi),
-                                vx, vy, om, phi)
-        assert np.allclose([wb.force_x, wb.force_y, wb.moment],
-                           [wp.force_x, wp.force_y, wp.moment], atol=1e-12, rtol=0)
+        wb = ss.friction_wrench(
+            body, ss.FrictionTensor(0.2, 0.7, 0.1, "body", 0.3), vx, vy, om, phi
+        )
+        wp = ss.friction_wrench(
+            body, ss.FrictionTensor(0.2, 0.7, 0.1, "plane", 0.3 + phi), vx, vy, om, phi
+        )
+        assert np.allclose(
+            [wb.force_x, wb.force_y, wb.moment],
+            [wp.force_x, wp.force_y, wp.moment],
+            atol=1e-12,
+            rtol=0,
+        )
 
 
 @pytest.mark.parametrize("law", LAWS)
@@ -243,4 +283,3 @@ def test_at_rest_the_wrench_is_zero():
     body = ss.Body(ss.Circle(1.0), ss.UniformPressure(), mass=1.0)
     w = ss.friction_wrench(body, ss.FrictionTensor(0.3, 0.3), 0.0, 0.0, 0.0)
     assert (w.force_x, w.force_y, w.moment) == (0.0, 0.0, 0.0)
-

@@ -2,7 +2,7 @@
 Watching it slide and spin: an animation
 ========================================
 
-:func:`slidespin.animate.animate` turns a trajectory into an animated GIF (Pillow, no ffmpeg):
+:func:`slidespin.viz.animate.animate` turns a trajectory into an animated GIF (Pillow, no ffmpeg):
 the outline of the patch at each instant, the velocity of the mass centre G as an arrow and
 the instantaneous centre of rotation (ICR) as a cross. ``slidespin animate CASE.toml --out
 run.gif`` does the same from a case file. Here we write the GIF of the demo (into a temporary
@@ -21,11 +21,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.animate import animate, frame_states
+from slidespin.viz.animate import animate, frame_states
 
 body = ss.Body(ss.Ellipse.from_eccentricity(0.1, 0.866), ss.UniformPressure(), mass=1.0)
-traj = ss.simulate(body, ss.FrictionTensor(0.42, 0.54),
-                   ss.State.from_speed(1.0, omega=5.0, theta=math.pi / 4))
+traj = ss.simulate(
+    body, ss.FrictionTensor(0.42, 0.54), ss.State.from_speed(1.0, omega=5.0, theta=math.pi / 4)
+)
 
 with tempfile.TemporaryDirectory() as tmp:
     path = animate(traj, os.path.join(tmp, "demo.gif"), fps=20, frames=60)
@@ -44,8 +45,17 @@ for k in range(st.t.size):
     xw = st.x[k] + c * outline[:, 0] - s * outline[:, 1]
     yw = st.y[k] + s * outline[:, 0] + c * outline[:, 1]
     ax.plot(xw, yw, color=plt.cm.viridis(k / (st.t.size - 1)), lw=1.2)
-    ax.quiver(st.x[k], st.y[k], st.vx[k], st.vy[k], angles="xy", scale_units="xy", scale=25,
-              color="C1", width=0.004)
+    ax.quiver(
+        st.x[k],
+        st.y[k],
+        st.vx[k],
+        st.vy[k],
+        angles="xy",
+        scale_units="xy",
+        scale=25,
+        color="C1",
+        width=0.004,
+    )
     if st.omega[k] != 0.0:  # the ICR, where it lies near the plate
         ix, iy = st.x[k] - st.vy[k] / st.omega[k], st.y[k] + st.vx[k] / st.omega[k]
         if abs(ix - st.x[k]) < 0.15 and abs(iy - st.y[k]) < 0.15:
@@ -54,8 +64,10 @@ ax.plot(traj.x, traj.y, color="0.5", lw=0.8)
 ax.set_aspect("equal")
 ax.set_xlabel("x [m]")
 ax.set_ylabel("y [m]")
-ax.set_title("8 frames of the demo, start (purple) to stop (yellow); arrows: velocity of "
-             "G, crosses: ICR", fontsize=9)
+ax.set_title(
+    "8 frames of the demo, start (purple) to stop (yellow); arrows: velocity of G, crosses: ICR",
+    fontsize=9,
+)
 
 # %%
 # The last frame is the stop itself. The one number: the plate's rotation at the stop [rad].

@@ -6,7 +6,7 @@ The paper's Table 2 says how a circular patch stops under orthotropic friction: 
 inertia axis I* = I/(m a²) the ending changes at I₁ < I₃ from pure sliding (the spin dies
 first) to mixed (v and ω vanish together) to pure spinning (the sliding dies first). We run a
 small grid of a few hundred cases through the compiled batch engine,
-:func:`slidespin.batch.simulate_cases` (what ``slidespin sweep`` runs chunk by chunk, locally or
+:func:`slidespin.motion.batch.simulate_cases` (what ``slidespin sweep`` runs chunk by chunk, locally or
 on Dask), and lay the paper's printed boundaries over the endings found.
 """
 
@@ -14,16 +14,23 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.batch import simulate_cases
+from slidespin.motion.batch import simulate_cases
 
 a, mass, fx = 0.05, 1.0, 0.3
-mu = np.linspace(0.0, 0.2, 12)            # anisotropy fy - fx
-i_star = np.linspace(0.12, 0.98, 22)      # I / (m a^2)
+mu = np.linspace(0.0, 0.2, 12)  # anisotropy fy - fx
+i_star = np.linspace(0.12, 0.98, 22)  # I / (m a^2)
 MU, IS = np.meshgrid(mu, i_star, indexing="ij")
 cases = {
-    "a": a, "b": a, "law": "uniform", "fx": fx, "fy": fx + MU.ravel(), "mass": mass,
+    "a": a,
+    "b": a,
+    "law": "uniform",
+    "fx": fx,
+    "fy": fx + MU.ravel(),
+    "mass": mass,
     "moment_of_inertia": IS.ravel() * mass * a * a,
-    "vx": 0.6, "vy": 0.6, "omega": 20.0,   # thrown at 45 deg between the principal axes
+    "vx": 0.6,
+    "vy": 0.6,
+    "omega": 20.0,  # thrown at 45 deg between the principal axes
 }
 res = simulate_cases(cases)
 print(res)
@@ -35,8 +42,9 @@ code = {"pure_sliding": 0, "mixed": 1, "pure_spinning": 2}
 ending = np.array([code[e] for e in res.ending]).reshape(MU.shape)
 fig, ax = plt.subplots(figsize=(6.4, 4.2))
 ax.pcolormesh(mu, i_star, ending.T, cmap="viridis", shading="nearest")
-printed = [ss.paper_inertia_intervals(ss.UniformPressure(), ss.FrictionTensor(fx, fx + m))
-           for m in mu]
+printed = [
+    ss.paper_inertia_intervals(ss.UniformPressure(), ss.FrictionTensor(fx, fx + m)) for m in mu
+]
 ax.plot(mu, [p.i1 for p in printed], "w-", lw=2, label="I₁ (printed)")
 ax.plot(mu, [p.i3 for p in printed], "w--", lw=2, label="I₃ (printed)")
 ax.set_xlabel("μ = fy − fx")

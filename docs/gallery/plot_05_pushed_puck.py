@@ -5,7 +5,7 @@ A pushed puck: stick, slip, stick
 A puck at rest (radius 5 cm, 1 kg, μ = 0.3) is pushed 2 cm off its centre by a horizontal
 force that grows to 5 N in 1 s and falls back to 0 at 2 s. Static friction holds it until the
 push, with its moment about G, leaves the set of wrenches friction can supply
-(:mod:`slidespin.statics`); it then slides and turns, and sticks again once its kinetic
+(:mod:`slidespin.contact.statics`); it then slides and turns, and sticks again once its kinetic
 energy is gone (``examples/pushed_puck.py``). Stick is decided against the exact set, never
 by a smoothed friction law.
 """
@@ -14,8 +14,8 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.loaded import simulate_loaded
-from slidespin.loads import Load
+from slidespin.motion.loaded import simulate_loaded
+from slidespin.motion.loads import Load
 
 
 def push(t):
@@ -24,8 +24,14 @@ def push(t):
 
 
 puck = ss.Body(ss.Circle(0.05), ss.UniformPressure(), mass=1.0)
-tr = simulate_loaded(puck, ss.FrictionTensor.isotropic(0.3), ss.State(),
-                     load=Load(force=push, at=(0.0, 0.02)), t_end=3.0, max_step=0.5)
+tr = simulate_loaded(
+    puck,
+    ss.FrictionTensor.isotropic(0.3),
+    ss.State(),
+    load=Load(force=push, at=(0.0, 0.02)),
+    t_end=3.0,
+    max_step=0.5,
+)
 for kind, t0, t1 in tr.phases:
     print(f"{kind:5s} {t0:.4f} - {t1:.4f} s")
 

@@ -39,8 +39,10 @@ worst = 0.0
 for law in (ss.UniformPressure(), ss.BoussinesqPressure(), ss.HertzPressure()):
     num = ss.inertia_intervals(law, friction)
     printed = ss.paper_inertia_intervals(law, friction)
-    print(f"{type(law).__name__:20s} numeric {tuple(round(x, 10) for x in num)}  "
-          f"printed {tuple(round(x, 10) for x in printed)}")
+    print(
+        f"{type(law).__name__:20s} numeric {tuple(round(x, 10) for x in num)}  "
+        f"printed {tuple(round(x, 10) for x in printed)}"
+    )
     worst = max(worst, max(abs(x - y) for x, y in zip(num, printed)))
 
 # %%

@@ -2,7 +2,7 @@
 A curling stone on its running band
 ===================================
 
-slidespin's footprints (:mod:`slidespin.footprint`) are polygons, rectangles, disks, rings and
+slidespin's footprints (:mod:`slidespin.contact.shapes`) are polygons, rectangles, disks, rings and
 sets of separate pads. A curling stone is the classic ring: a granite stone of 19.96 kg (the
 most the rules allow) and 0.1455 m radius rests on the ice only on its *running band*, a ring
 about 6 mm wide at a mean radius of 62.5 mm (the cup inside it does not touch the ice). It is

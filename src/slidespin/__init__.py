@@ -8,21 +8,7 @@ with elliptic contact area and anisotropic friction"; the model as built, with t
 errata, is documented in docs/model.md.
 """
 
-from .batch import simulate_bodies, simulate_many
-from .body import Body, State
-from .case import Case, load_case
-from .footprint import Annulus, Blade, Disk, Pads, Polygon, Rectangle
-from .footprint_pressure import PressureMap
-from .footprint_wrench import footprint_wrench
-from .friction import FrictionTensor
-from .geometry import Circle, Ellipse
-from .limit_surface import LimitSurface, limit_surface
-from .loaded import LoadedTrajectory, simulate_loaded
-from .loads import Incline, Load
-from .pressure import BoussinesqPressure, HertzPressure, LinearPressure, UniformPressure
-from .simulate import Trajectory, simulate
-from .statics import can_stick, critical_tilt, load_factor, onset
-from .terminal import (
+from slidespin.analysis.terminal import (
     InertiaIntervals,
     PhasePortrait,
     TerminalState,
@@ -34,7 +20,28 @@ from .terminal import (
     terminal_ratio,
     terminal_states,
 )
-from .wrench import Wrench, friction_wrench
+from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Circle, Ellipse
+from slidespin.contact.footprint_wrench import footprint_wrench
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.incline import Incline
+from slidespin.contact.limit_surface import LimitSurface, limit_surface
+from slidespin.contact.pressure import (
+    BoussinesqPressure,
+    HertzPressure,
+    LinearPressure,
+    UniformPressure,
+)
+from slidespin.contact.pressure_map import PressureMap
+from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle
+from slidespin.contact.statics import can_stick, critical_tilt, load_factor, onset
+from slidespin.contact.wrench import Wrench, friction_wrench
+from slidespin.motion.batch import simulate_bodies, simulate_many
+from slidespin.motion.loaded import LoadedTrajectory, simulate_loaded
+from slidespin.motion.loads import Load
+from slidespin.motion.simulate import Trajectory, simulate
+from slidespin.motion.state import State
+from slidespin.studies.case import Case, load_case
 
 #: the package version (``slidespin --version`` prints it)
 __version__ = "0.1.0"

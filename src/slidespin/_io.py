@@ -6,7 +6,20 @@ import errno
 import os
 import stat
 
-__all__ = ["os_error_kind", "read_regular_file"]
+__all__ = [
+    "FIGURE_FORMATS",
+    "check_figure_path",
+    "check_output_path",
+    "distinct_outputs",
+    "os_error_kind",
+    "read_regular_file",
+    "render_figure",
+    "write_failure",
+    "write_outputs",
+]
+
+#: figure formats the CLI writes, by file extension
+FIGURE_FORMATS = ("png", "pdf", "svg", "eps", "jpg", "jpeg", "tif", "tiff")
 
 
 def os_error_kind(exc: OSError) -> str:
@@ -67,3 +80,112 @@ def read_regular_file(
             f"{what} {name!r} is larger than {max_bytes} bytes; valid: at most {max_bytes} bytes"
         )
     return raw
+
+
+def check_output_path(path: str, what: str, *, create_parent: bool = False) -> str:
+    """Raise ``ValueError`` unless ``path`` can be written (checked before any work).
+
+    With ``create_parent``, a missing parent directory is allowed if it can be created (its
+    nearest existing ancestor is writable); it is created only when the file is written.
+    """
+    path = os.fspath(path)
+    if not path:
+        raise ValueError(f"{what} = '' is invalid; valid values: a file path")
+    parent = os.path.dirname(os.path.abspath(path)) or "."
+    if os.path.isdir(path):
+        raise ValueError(f"{what} = {path!r} is a directory; valid values: a file path")
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise ValueError(f"{what} = {path!r} exists and is not a regular file")
+    probe_dir = parent
+    if not os.path.isdir(parent):
+        if not create_parent:
+            raise ValueError(f"{what} = {path!r}: the directory {parent!r} does not exist")
+        while not os.path.isdir(probe_dir):
+            up = os.path.dirname(probe_dir)
+            if up == probe_dir or (os.path.exists(probe_dir) and not os.path.isdir(probe_dir)):
+                raise ValueError(f"{what} = {path!r}: the directory {parent!r} cannot be created")
+            probe_dir = up
+    try:  # a real probe: permissions, read-only file systems, quotas
+        import tempfile
+
+        with tempfile.NamedTemporaryFile(dir=probe_dir, prefix=".slidespin-probe-"):
+            pass
+    except OSError as exc:
+        raise ValueError(
+            f"{what} = {path!r}: the directory {probe_dir!r} is not writable ({exc.strerror})"
+        ) from None
+    if os.path.exists(path) and not os.access(path, os.W_OK):
+        raise ValueError(f"{what} = {path!r} exists and is not writable")
+    return path
+
+
+def check_figure_path(path: str, what: str, *, create_parent: bool = False) -> str:
+    """:func:`check_output_path` plus a known figure format, taken from the extension."""
+    path = check_output_path(path, what, create_parent=create_parent)
+    ext = os.path.splitext(path)[1].lower().lstrip(".")
+    if ext not in FIGURE_FORMATS:
+        raise ValueError(
+            f"{what} = {path!r}: unknown figure format {ext or '(no extension)'!r}; "
+            f"valid extensions: {', '.join('.' + f for f in FIGURE_FORMATS)}"
+        )
+    return path
+
+
+def distinct_outputs(*pairs) -> None:
+    """Refuse two outputs that are the same file."""
+    seen: dict[str, str] = {}
+    for path, what in pairs:
+        if path:
+            key = os.path.realpath(path)
+            if key in seen:
+                raise ValueError(
+                    f"{what} = {path!r} is the same file as {seen[key]}; give different paths"
+                )
+            seen[key] = what
+
+
+def render_figure(fig, path: str) -> bytes:
+    import io
+
+    buf = io.BytesIO()
+    fmt = os.path.splitext(path)[1].lower().lstrip(".")
+    fig.savefig(buf, format=fmt, dpi=150)
+    return buf.getvalue()
+
+
+def write_outputs(files) -> None:
+    """Write ``[(path, bytes), ...]`` whole or not at all.
+
+    Each file goes to a temporary name in its directory and is renamed into place; if any
+    write fails (disk full, permission denied), the files of this call already in place are
+    removed and a one-line ``ValueError`` names the file and the reason.
+    """
+    written = []
+    try:
+        for path, data in files:
+            parent = os.path.dirname(os.path.abspath(path))
+            os.makedirs(parent, exist_ok=True)
+            tmp = os.path.join(parent, f".{os.path.basename(path)}.tmp-{os.getpid()}")
+            try:
+                with open(tmp, "wb") as fh:
+                    fh.write(data)
+                os.replace(tmp, path)
+            except BaseException:
+                try:
+                    os.unlink(tmp)
+                except OSError:
+                    pass
+                raise
+            written.append(path)
+    except OSError as exc:
+        for p in written:
+            try:
+                os.unlink(p)
+            except OSError:
+                pass
+        raise ValueError(write_failure(exc, path)) from None
+
+
+def write_failure(exc: OSError, path) -> str:
+    what = os_error_kind(exc)
+    return f"{what} while writing {str(path)!r} ({exc.strerror}); nothing was written"

@@ -13,11 +13,11 @@ import os
 from dataclasses import dataclass
 from functools import lru_cache
 
-from .. import _validate as v
-from ..body import State
-from ..friction import FrictionTensor
-from ..simulate import simulate
-from . import _shared as sh
+from slidespin import _validate as v
+from slidespin.contact.friction import FrictionTensor
+from slidespin.motion.simulate import simulate
+from slidespin.motion.state import State
+from slidespin.paper import _shared as sh
 
 DEFAULT_MU = 0.12
 
@@ -78,7 +78,7 @@ class FigureRuns:
 def resolve_fx(fx):
     """fx from Table 1's least-squares fit unless given."""
     if fx is None:
-        from .table1 import infer_fx
+        from slidespin.paper.table1 import infer_fx
 
         return infer_fx().fx
     return v.positive("fx", fx)
@@ -109,7 +109,7 @@ def _time(tr):
 
 
 def _path_panels(fig, gs, row, res):
-    from ..plotting import draw_path
+    from slidespin.viz.plotting import draw_path
 
     axes = []
     for i, (lab, tr) in enumerate(zip(sh.PHI_LABELS, res.runs)):

@@ -12,9 +12,9 @@ import math
 import os
 from contextlib import contextmanager
 
-from ..body import Body
-from ..geometry import Ellipse
-from ..pressure import LinearPressure, UniformPressure
+from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Ellipse
+from slidespin.contact.pressure import LinearPressure, UniformPressure
 
 ECCENTRICITY = 0.866
 A = 1.0  # semi-axis a [m]

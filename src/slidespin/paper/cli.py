@@ -13,7 +13,7 @@ Tables and errata print to the terminal and, with ``--out``, also write JSON/tex
 figure for the tables). Figures go to ``--out``; ``all``
 writes everything with an ``index.html``. Without ``--out``, figures and ``all`` go to
 ``./slidespin-out`` (never straight into the working directory); tables only print.
-This module follows the plugin contract of :mod:`slidespin.cli`: ``configure(parser)`` and
+This module follows the plugin contract of :mod:`slidespin.cli.main`: ``configure(parser)`` and
 ``run(args) -> int``.
 """
 
@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import math
 
-from .. import _validate as v
-from . import _shared as sh
+from slidespin import _validate as v
+from slidespin.paper import _shared as sh
 
 __all__ = ["configure", "run", "TARGETS"]
 
@@ -127,7 +127,7 @@ def run(args) -> int:
     kw = _check(args)
     target = args.target
     if target == "all":
-        from . import report
+        from slidespin.paper import report
 
         report.main(args.out, as_json=args.json, **kw)
         return 0

@@ -3,7 +3,7 @@
 For every erratum :func:`compute` evaluates the printed formula and the corrected one on the
 paper's own setting and reports the size of the error the printed form causes, with an
 independent check that the corrected form is right (against :func:`slidespin.friction_wrench`
-or :func:`slidespin.simulate`, which share no code with the paper's route). The paper's route
+or :func:`slidespin.motion.simulate`, which share no code with the paper's route). The paper's route
 itself (eq. 8–9, 12–13) is :mod:`slidespin.paper.semianalytic`; a brute-force 2-D quadrature
 over the patch evaluates the formulas of eq. 3 and (6) literally.
 """
@@ -16,14 +16,15 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq
 
-from ..body import Body, State
-from ..friction import FrictionTensor
-from ..geometry import Circle
-from ..pressure import UniformPressure
-from ..simulate import simulate
-from ..wrench import friction_wrench
-from . import _shared as sh
-from . import semianalytic as sa
+from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Circle
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.pressure import UniformPressure
+from slidespin.contact.wrench import friction_wrench
+from slidespin.motion.simulate import simulate
+from slidespin.motion.state import State
+from slidespin.paper import _shared as sh
+from slidespin.paper import semianalytic as sa
 
 __all__ = ["Erratum", "ErrataResult", "direct_wrench", "compute", "main"]
 
@@ -218,7 +219,7 @@ def _e2(fx):
         f"{t_corr:.6f} s",
         f"the printed scale is not a time (units sqrt(m)/s); for a = 1 m it is off by a "
         f"factor g/(pi sqrt(a)) = {t_print / t_corr:.4f}",
-        f"slidespin.simulate (SI units, regularised time): t_stop = {tr.t_stop:.6f} s "
+        f"slidespin.motion.simulate (SI units, regularised time): t_stop = {tr.t_stop:.6f} s "
         f"(relative difference {_rel(t_corr, tr.t_stop):.1e})",
         {
             "t1_stop": run.t_stop,
@@ -243,7 +244,7 @@ def _eq16_root(model, phi):
 
 
 def _e3(kappa):
-    from .table1 import PRINTED
+    from slidespin.paper.table1 import PRINTED
 
     model = sa.PaperModel(kappa, FX, FY)
     wrong = model.with_(i1="printed")
@@ -421,7 +422,7 @@ def _e7(fx):
         f"writing Newton-Euler at C changes the stop time by "
         f"{100 * (rc.t_stop / rg.t_stop - 1):+.1f} % and theta* by "
         f"{rc.theta_stop - rg.theta_stop:+.3f} rad",
-        f"slidespin.simulate at G: t1 = {tr.t_stop / sh.TIME_UNIT:.6f}, beta* = "
+        f"slidespin.motion.simulate at G: t1 = {tr.t_stop / sh.TIME_UNIT:.6f}, beta* = "
         f"{tr.beta_stop / sh.A:.6f}, theta* = {tr.theta_stop:+.6f}",
         {
             "t1_centre": rc.t_stop,
@@ -465,7 +466,7 @@ def _e8():
 
 def _e9():
     fx, mu = 0.3, 0.15
-    from ..terminal import inertia_intervals
+    from slidespin.analysis.terminal import inertia_intervals
 
     num = inertia_intervals(UniformPressure(), FrictionTensor(fx, fx + mu)).i1
     literal = fx + mu
@@ -487,7 +488,7 @@ def _e9():
 
 
 def _e10():
-    from .table1 import compute as t1
+    from slidespin.paper.table1 import compute as t1
 
     res = t1()  # the least-squares fit and the consistency scan are cached
     lo, hi = res.best_interval
@@ -515,7 +516,7 @@ def _e10():
 
 
 def _e11(fx):
-    from . import fig2
+    from slidespin.paper import fig2
 
     disk = Body.from_inertia_ratio(Circle(sh.A), UniformPressure(), sh.MASS, 0.5)
     fr = FrictionTensor(fx, fx + 0.12)
@@ -529,7 +530,7 @@ def _e11(fx):
         '"Sliding and spinning stop at the same moment with theta = 0" (the velocity '
         "ends along the low-friction axis)",
         "true for a circular patch (theta* = 0 by symmetry); for the ellipse theta* "
-        "depends on the orientation phi at the stop (slidespin.terminal.terminal_states)",
+        "depends on the orientation phi at the stop (slidespin.analysis.terminal.terminal_states)",
         "theta* [rad] at the stop (fx from Table 1, mu = 0.12, v0 = omega0 = 1, "
         "theta0 = pi/4): uniform disk I* = 1/2 vs Figure 2's ellipse, phi0 = pi/4, pi/3, pi/2",
         "0 (claimed for every case)",
@@ -553,7 +554,7 @@ def compute(fx: float | None = None) -> ErrataResult:
     fx : float, optional
         fx for the runs of errata 2, 6, 7, 11; by default the value inferred from Table 1.
     """
-    from ._figures import resolve_fx
+    from slidespin.paper._figures import resolve_fx
 
     fx = resolve_fx(fx)
     kappa = sh.patch().aspect

@@ -10,8 +10,8 @@ difference. The figure shows the paths with the outline of the patch.
 
 from __future__ import annotations
 
-from . import _figures as fg
-from . import _shared as sh
+from slidespin.paper import _figures as fg
+from slidespin.paper import _shared as sh
 
 __all__ = ["compute", "plot", "main"]
 

@@ -8,8 +8,8 @@ every run here.
 
 from __future__ import annotations
 
-from . import _figures as fg
-from . import fig3
+from slidespin.paper import _figures as fg
+from slidespin.paper import fig3
 
 __all__ = ["compute", "plot", "main"]
 

@@ -6,7 +6,7 @@ ray v = k a ω (a mixed ending), along the v-axis (ω/v → 0) or along the a ω
 :func:`compute` draws the uniformly loaded disk under isotropic friction, for which the motion
 stays in this plane, with one inertia ratio I* in each of the four intervals of Table 2; the
 third panel (I* = 1/2) is the published case, k = 0.653. :func:`plot_phase_portrait` draws any
-:class:`slidespin.terminal.PhasePortrait`.
+:class:`slidespin.analysis.terminal.PhasePortrait`.
 """
 
 from __future__ import annotations
@@ -16,12 +16,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..body import Body
-from ..friction import FrictionTensor
-from ..geometry import Circle
-from ..pressure import UniformPressure
-from ..terminal import PhasePortrait, inertia_intervals, phase_portrait
-from . import _shared as sh
+from slidespin.analysis.terminal import PhasePortrait, inertia_intervals, phase_portrait
+from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Circle
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.pressure import UniformPressure
+from slidespin.paper import _shared as sh
 
 __all__ = ["PhaseResult", "compute", "plot_phase_portrait", "plot", "main"]
 
@@ -93,7 +93,7 @@ def plot_phase_portrait(
     Parameters
     ----------
     portrait : PhasePortrait
-        Result of :func:`slidespin.terminal.phase_portrait`.
+        Result of :func:`slidespin.analysis.terminal.phase_portrait`.
     ax : matplotlib Axes, optional
         Axes to draw on; a new figure is made if omitted.
     color : str
@@ -197,7 +197,7 @@ def plot(result: PhaseResult):
 
 def main(out=None, *, as_json: bool = False, fmt: str = "png", stream=None) -> PhaseResult:
     """Print the endings and write ``phase.<fmt>`` (and phase.json) into ``out``."""
-    from . import _figures as fg
+    from slidespin.paper import _figures as fg
 
     return fg.main_figure("phase", lambda: compute(), plot, out, as_json, fmt, stream)
 

@@ -17,9 +17,9 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from . import _shared as sh
-from . import errata, fig2, fig3, fig4, phase, table1, table2
-from ._figures import FigureRuns
+from slidespin.paper import _shared as sh
+from slidespin.paper import errata, fig2, fig3, fig4, phase, table1, table2
+from slidespin.paper._figures import FigureRuns
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -215,7 +215,7 @@ def _errata_html(res) -> str:
 
 def write_html(rep: Report, out: str) -> str:
     """Write ``out/index.html`` for a :class:`Report` whose figures are already in ``out``."""
-    from .. import __version__
+    from slidespin import __version__
 
     t1 = rep.table1
     lo, hi = t1.best_interval or (math.nan, math.nan)  # None without the consistency scan

@@ -57,7 +57,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .. import _validate as v
+from slidespin import _validate as v
 
 __all__ = [
     "PaperModel",
@@ -512,7 +512,7 @@ def integrate(
 
     This is the paper's own route: semi-analytic wrench, a general-purpose ODE solver in the
     physical time, and a cut-off. It is the baseline the regularised compiled integrator of
-    :func:`slidespin.simulate` is measured against.
+    :func:`slidespin.motion.simulate` is measured against.
 
     Parameters
     ----------

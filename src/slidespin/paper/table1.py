@@ -7,9 +7,9 @@ of eq. 16, β = I* F_τ/M_Cζ, with the velocity direction ϑ = 0 imposed and F_
 μ = 0 column is parameter-free and fx is inferred from the other 24 cells by least squares.
 
 :func:`compute` reproduces the paper's method with the compiled wrench
-(:func:`slidespin.terminal.terminal_ratio`), infers fx, compares every cell with the printed
+(:func:`slidespin.analysis.terminal.terminal_ratio`), infers fx, compares every cell with the printed
 value, finds the range of fx consistent with each printed digit, and gives beside each cell
-the true terminal motion at that φ (:func:`slidespin.terminal.terminal_states`): for φ = π/2
+the true terminal motion at that φ (:func:`slidespin.analysis.terminal.terminal_states`): for φ = π/2
 it is the paper's root with ϑ* = 0; for φ = π/4 and π/3 it has ϑ* ≠ 0 and a larger β*.
 """
 
@@ -22,10 +22,10 @@ from functools import lru_cache
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from .. import _validate as v
-from ..friction import FrictionTensor
-from ..terminal import terminal_ratio, terminal_states
-from . import _shared as sh
+from slidespin import _validate as v
+from slidespin.analysis.terminal import terminal_ratio, terminal_states
+from slidespin.contact.friction import FrictionTensor
+from slidespin.paper import _shared as sh
 
 __all__ = [
     "PRINTED",

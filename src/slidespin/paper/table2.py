@@ -5,7 +5,7 @@ splits at I₁ < I₂ < I₃ into four endings (appendix, statement 1): ω/v →
 v = k a ω with k > 1, with k < 1 (both ``mixed``) and v/ω → 0 (``pure_spinning``). The
 boundaries are values of J(β) = β M_Cζ/F_τ at ϑ = 0 (MODEL §6): I₁ = J(∞), I₂ = J(1),
 I₃ = J(0⁺). :func:`compute` evaluates them numerically for the three laws (uniform,
-Boussinesq, Hertz) with :func:`slidespin.terminal.inertia_intervals`, compares them with the
+Boussinesq, Hertz) with :func:`slidespin.analysis.terminal.inertia_intervals`, compares them with the
 printed formulas (the uniform law's row 1 with its parenthesis restored, erratum 9), and
 simulates one motion inside each of the four intervals to show the stated ending.
 """
@@ -17,19 +17,20 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import _validate as v
-from ..body import Body, State
-from ..friction import FrictionTensor
-from ..geometry import Circle
-from ..pressure import BoussinesqPressure, HertzPressure, UniformPressure
-from ..simulate import simulate
-from ..terminal import (
+from slidespin import _validate as v
+from slidespin.analysis.terminal import (
     circle_terminal_ratio,
     inertia_for_ratio,
     inertia_intervals,
     paper_inertia_intervals,
 )
-from . import _shared as sh
+from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Circle
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.pressure import BoussinesqPressure, HertzPressure, UniformPressure
+from slidespin.motion.simulate import simulate
+from slidespin.motion.state import State
+from slidespin.paper import _shared as sh
 
 __all__ = [
     "LAWS",

@@ -1,0 +1,288 @@
+"""``slidespin fit``: friction parameters from tracked motion (MODEL §12, :mod:`slidespin.analysis.fit`).
+
+Usage::
+
+    slidespin fit DATA.csv --case CASE.toml [--free fx,fy,f] [--sigma x=1e-3,y=1e-3,phi=0.01]
+                  [--loss linear|soft_l1|huber|cauchy|arctan] [--frame case|plane|body|best]
+                  [--fixed-start]
+                  [--json] [--plot OUT.png]
+
+``DATA.csv`` has the columns ``t,x,y,phi`` (any of x, y, phi may be absent) and an optional
+``run`` column; the case file (the format of ``slidespin simulate``) gives the body, the
+friction tensor (the start guess of the free parameters, and the frame unless ``--frame``
+says otherwise; ``best`` fits both frames and keeps the likelier) and ``[solver] g``.
+Its ``[initial]`` table is optional: with ``--fixed-start`` it is the known start state of
+every run (at the run's first time); otherwise each run's start is fitted and ``[initial]``
+only supplies the start components the data do not give.
+
+Without ``--json`` a table of estimates ± standard errors is printed; ``--json`` prints
+``{"estimates": {...}, "std_errors": {...}, "correlation": {...}, "chi2": ..., ...}``
+(non-finite numbers as ``null``). Warnings (parameters the data cannot determine, no
+convergence) go to standard error as ``slidespin: warning: ...`` lines and into the JSON's
+``warnings``. Exit status 0, or 1 if the optimiser did not converge; 2 for bad input, found
+before any work. This module follows the plugin contract of :mod:`slidespin.cli.main`:
+``configure(parser)`` and ``run(args) -> int``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import sys
+import warnings
+
+import numpy as np
+
+__all__ = ["configure", "load_fit_case", "parse_sigma", "plot_fit", "run"]
+
+
+def configure(parser) -> None:
+    """Add the arguments of ``slidespin fit`` to an argparse (sub)parser."""
+    from slidespin.analysis.fit import LOSSES, PARAMETERS
+
+    parser.description = (
+        "Fit friction parameters (and each run's start state) to tracked positions and angles "
+        "by least squares, with standard errors, correlations and an identifiability check."
+    )
+    parser.epilog = (
+        "DATA.csv columns: t [s], x, y [m], phi [rad] (any of x, y, phi may be absent; an empty "
+        "cell is a missing value) and an optional run label column 'run'. Free parameters: "
+        + ", ".join(PARAMETERS)
+        + ". The tensor's frame is taken from the case file unless "
+        "--frame says otherwise."
+    )
+    parser.add_argument("data", metavar="DATA.csv", help="tracked runs (CSV)")
+    parser.add_argument(
+        "--case",
+        required=True,
+        metavar="CASE.toml",
+        help="body, friction (start guess) and g, as for 'slidespin simulate'",
+    )
+    parser.add_argument(
+        "--free",
+        default="fx,fy,f",
+        metavar="NAMES",
+        help="comma-separated parameters to fit (default fx,fy,f)",
+    )
+    parser.add_argument(
+        "--sigma",
+        default=None,
+        metavar="x=SX,y=SY,phi=SPHI",
+        help="noise level of channels [m, rad]; others are estimated from the residuals",
+    )
+    parser.add_argument(
+        "--loss",
+        default="linear",
+        choices=LOSSES,
+        help="least-squares loss; a robust one limits outliers (default linear)",
+    )
+    parser.add_argument(
+        "--frame",
+        default="case",
+        choices=("case", "plane", "body", "best"),
+        help="frame of the tensor: as in the case file (default), plane, body, "
+        "or best: fit both and keep the likelier",
+    )
+    parser.add_argument(
+        "--fixed-start",
+        action="store_true",
+        help="the case's [initial] state is the known start of every run",
+    )
+    parser.add_argument("--json", action="store_true", help="print the results as JSON")
+    parser.add_argument(
+        "--plot",
+        metavar="OUT.png",
+        default=None,
+        help="write a figure of measured vs fitted paths and angles, with residuals",
+    )
+
+
+def parse_sigma(text: str | None) -> dict | None:
+    """``"x=1e-3,phi=0.01"`` → ``{'x': 0.001, 'phi': 0.01}`` (validated)."""
+    from slidespin import _validate as v
+    from slidespin.analysis.fit import CHANNELS
+
+    if text is None:
+        return None
+    out = {}
+    for item in text.split(","):
+        item = item.strip()
+        if not item:
+            continue
+        key, sep, val = item.partition("=")
+        key = key.strip()
+        if not sep or key not in CHANNELS:
+            raise ValueError(
+                f"--sigma item {item!r} is invalid; valid: x=VALUE, y=VALUE, "
+                "phi=VALUE (metres, radians), comma-separated"
+            )
+        if key in out:
+            raise ValueError(f"--sigma gives {key!r} twice")
+        try:
+            num = float(val)
+        except ValueError:
+            raise ValueError(f"--sigma {key} = {val.strip()!r} is not a number") from None
+        out[key] = v.positive(f"--sigma {key}", num, "rad" if key == "phi" else "m")
+    if not out:
+        raise ValueError(f"--sigma = {text!r} gives no channel; valid: x=VALUE,y=VALUE,phi=VALUE")
+    return out
+
+
+def load_fit_case(path):
+    """Read a case file with :mod:`slidespin.studies.case`; ``[initial]`` may be left out.
+
+    Returns the :class:`~slidespin.studies.case.Case` (at rest at the origin without ``[initial]``)
+    and whether the file had an ``[initial]`` table.
+    """
+    from slidespin.studies.case import case_from_dict, read_toml
+
+    data = read_toml(path, "case file")
+    has_initial = isinstance(data, dict) and "initial" in data
+    if isinstance(data, dict) and not has_initial:
+        data = {**data, "initial": {}}
+    try:
+        return case_from_dict(data), has_initial
+    except ValueError as exc:
+        raise ValueError(f"{path}: {exc}") from None
+
+
+def _free(text: str, body):
+    from slidespin.analysis.fit import _check_free
+
+    names = tuple(s.strip() for s in text.split(",") if s.strip())
+    try:
+        return _check_free(names, body)
+    except ValueError as exc:
+        raise ValueError(f"--free: {exc}") from None
+
+
+def run(args) -> int:
+    """Run ``slidespin fit``; returns the exit status."""
+    from slidespin.analysis.fit import compare_frames, fit, read_runs
+    from slidespin._io import check_figure_path, write_outputs
+
+    if args.plot:
+        check_figure_path(args.plot, "--plot")
+    sigma = parse_sigma(args.sigma)
+    case, has_initial = load_fit_case(args.case)
+    if args.fixed_start and not has_initial:
+        raise ValueError(f"--fixed-start needs an [initial] table in the case file {args.case!r}")
+    free = _free(args.free, case.body)
+    runs, labels = read_runs(args.data, labels=True)
+    kw = {"starts": case.initial_state} if args.fixed_start else {"start_guess": case.initial_state}
+    friction = case.friction
+    if args.frame in ("plane", "body"):
+        friction = dataclasses.replace(friction, frame=args.frame)
+    scores = None
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            if args.frame == "best":
+                res, scores, _ = compare_frames(
+                    runs, case.body, friction, free, sigma=sigma, loss=args.loss, g=case.g, **kw
+                )
+            else:
+                res = fit(
+                    runs, case.body, friction, free, sigma=sigma, loss=args.loss, g=case.g, **kw
+                )
+        except ValueError as exc:
+            raise ValueError(f"{args.data}: {exc}") from None
+    del caught  # the chosen fit's own warnings are in res.warnings (not the other frame's)
+    for message in res.warnings:
+        print(f"slidespin: warning: {message}", file=sys.stderr)
+    files = []
+    if args.plot:
+        import io
+        import os
+
+        fig = plot_fit(res, labels=labels, title=case.name or None)
+        buf = io.BytesIO()
+        fig.savefig(buf, format=os.path.splitext(args.plot)[1].lower().lstrip("."), dpi=150)
+        files.append((args.plot, buf.getvalue()))
+    if args.json:
+        out = res.summary()
+        out["runs"] = labels
+        if scores is not None:
+            out["frame_scores"] = scores
+        out["data"] = str(args.data)
+        out["case"] = str(args.case)
+        print(json.dumps(out, indent=2))
+    else:
+        print(f"data        : {args.data} ({len(runs)} run(s): {', '.join(labels)})")
+        print(f"case        : {case.name or args.case} (frame {res.friction.frame})")
+        if scores is not None:
+            other = "body" if res.friction.frame == "plane" else "plane"
+            print(
+                f"frame       : {res.friction.frame} is likelier than {other}: -2 log L "
+                f"lower by {scores[other] - scores[res.friction.frame]:.4g}"
+            )
+        print(res.table(labels))
+    if files:
+        write_outputs(files)
+        if not args.json:
+            print(f"figure      : {args.plot}")
+    return 0 if res.success else 1
+
+
+def plot_fit(result, labels=None, title=None):
+    """Figure of measured (dots) vs fitted (lines) paths and angles, with residuals.
+
+    Panels: the path y(x) of G; φ(t); the position residuals x, y against t [mm]; the angle
+    residuals against t [mrad]. Each run has its own colour. Returns the figure.
+    """
+    from slidespin.viz.plotting import _plt
+
+    plt = _plt()
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8), constrained_layout=True)
+    ax_path, ax_phi, ax_rp, ax_ra = axes.ravel()
+    labels = labels or [str(k) for k in range(result.n_runs)]
+    for k in range(result.n_runs):
+        col = f"C{k % 10}"
+        d, r = result.data[k], result.residuals[k]
+        t0 = d["t"][0]
+        tt = np.linspace(t0, d["t"][-1], 400)
+        pred = result.predict(k, tt)
+        name = f"run {labels[k]}"
+        if "x" in d and "y" in d:
+            ax_path.plot(d["x"], d["y"], ".", ms=3, color=col, alpha=0.6)
+            ax_path.plot(pred["x"], pred["y"], "-", lw=1.4, color=col, label=name)
+        if "phi" in d:
+            ax_phi.plot(d["t"], d["phi"], ".", ms=3, color=col, alpha=0.6)
+            ax_phi.plot(tt, pred["phi"], "-", lw=1.4, color=col, label=name)
+            ax_ra.plot(d["t"], r["phi"] * 1e3, ".", ms=3, color=col, label=name)
+        for c, mk in (("x", "."), ("y", "x")):
+            if c in d:
+                ax_rp.plot(d["t"], r[c] * 1e3, mk, ms=3, color=col, label=f"{name}: {c}")
+    ax_path.set(xlabel="x [m]", ylabel="y [m]", title="path of G: measured (dots), fitted")
+    ax_path.set_aspect("equal", adjustable="datalim")
+    ax_phi.set(xlabel="t [s]", ylabel="phi [rad]", title="body angle: measured, fitted")
+    ax_rp.set(
+        xlabel="t [s]", ylabel="residual [mm]", title="position residuals (x dots, y crosses)"
+    )
+    ax_ra.set(xlabel="t [s]", ylabel="residual [mrad]", title="angle residuals")
+    for ax in (ax_rp, ax_ra):
+        ax.axhline(0.0, color="0.5", lw=0.8)
+    for ax in axes.ravel():
+        if ax.has_data():
+            ax.grid(alpha=0.3)
+            if ax in (ax_path, ax_phi) and ax.get_legend_handles_labels()[0]:
+                ax.legend(fontsize=8)
+        else:
+            ax.text(
+                0.5,
+                0.5,
+                "not measured",
+                ha="center",
+                va="center",
+                transform=ax.transAxes,
+                color="0.5",
+            )
+    est = ", ".join(
+        f"{k} = {val:.4g} ± {result.std_errors[k]:.2g}" for k, val in result.estimates.items()
+    )
+    fig.suptitle(
+        (f"{title}\n" if title else "")
+        + (est or "start states only")
+        + f"   (chi2/dof = {result.reduced_chi2:.3g})"
+    )
+    return fig

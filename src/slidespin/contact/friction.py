@@ -1,0 +1,143 @@
+"""The anisotropic friction tensor of the paper (eq. 1–2, MODEL §2).
+
+A contact point slipping with velocity w feels the traction τ = −p 𝔽 w/|w|, with
+
+    𝔽 = [[fx, f], [−f, fy]]          (paper eq. 2),   μ = fy − fx.
+
+Only the symmetric part of 𝔽 dissipates (w·𝔽w = fx wx² + fy wy²), so the law is dissipative
+exactly when fx > 0 and fy > 0; the skew coefficient f is free.
+
+Frames. The paper fixes 𝔽 to the plane (``frame="plane"``). slidespin also offers a tensor
+fixed to the body (``frame="body"``: skis, scales, textured soles), whose world-frame matrix
+is R(φ) 𝔽 R(φ)ᵀ, and a tensor whose principal axes are turned by ``angle`` from OX (plane) or
+from Cξ (body): 𝔽 → R(angle) 𝔽 R(angle)ᵀ. The skew part f·J is unchanged by any rotation.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import InitVar, dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from slidespin import _validate as v
+
+__all__ = ["FrictionTensor", "FRAMES"]
+
+#: the frames a :class:`FrictionTensor` may be fixed to: the plane (the paper) or the body
+FRAMES = ("plane", "body")
+
+
+def _rot(angle: float) -> NDArray[np.float64]:
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, -s], [s, c]])
+
+
+@dataclass(frozen=True, slots=True)
+class FrictionTensor:
+    """Anisotropic dry-friction tensor 𝔽 = [[fx, f], [−f, fy]] (paper eq. 2).
+
+    Parameters
+    ----------
+    fx, fy : float
+        Friction coefficients along the tensor's principal axes (dimensionless), in
+        [1e-6, 5].
+    f : float, default 0
+        Skew coefficient (dimensionless), in [-5, 5].
+    frame : {"plane", "body"}, default "plane"
+        Whether the tensor is fixed to the plane (as in the paper) or turns with the body.
+    angle : float, default 0
+        Angle [rad] of the principal axes from OX (plane frame) or from the body axis Cξ
+        (body frame), any finite value.
+    angle_deg : float, optional (keyword)
+        The same angle in degrees (the ``angle_deg`` key of case files); give ``angle`` or
+        ``angle_deg``, not both. Stored as ``angle`` [rad]; ``tensor.angle_deg`` reads it
+        back in degrees.
+
+    Notes
+    -----
+    The ranges are what the wrench quadrature honours: its error target is absolute
+    (1e-13 m g in :mod:`slidespin.analysis.terminal`), so it is met only for a tensor of bounded norm
+    (up to about 10 on the thinnest valid patch, b/a = 1e-3) (measured: docs/errors.md, "Valid ranges"); coefficients below
+    1e-6 stop a body only after 1e6 times the usual distance. Dry-friction coefficients of
+    real materials lie between about 0.001 and 5.
+
+    Examples
+    --------
+    >>> FrictionTensor(0.42, 0.54).mu
+    0.12000000000000005
+    >>> round(FrictionTensor(0.3, 0.4, angle_deg=90.0).angle, 12)
+    1.570796326795
+    """
+
+    fx: float
+    fy: float
+    f: float = 0.0
+    frame: str = "plane"
+    angle: float = 0.0
+    angle_deg: InitVar[float | None] = None
+
+    def __post_init__(self, angle_deg: float | None = None) -> None:  # noqa: RUF033 - InitVar
+        object.__setattr__(self, "fx", v.bounded("fx", self.fx, *v.COEFFICIENT))
+        object.__setattr__(self, "fy", v.bounded("fy", self.fy, *v.COEFFICIENT))
+        f = v.finite("f", self.f)
+        object.__setattr__(self, "f", v.symmetric("f", f, v.SKEW))
+        object.__setattr__(self, "frame", v.choice("frame", self.frame, FRAMES))
+        angle = v.finite("angle", self.angle)
+        if angle_deg is not None:
+            deg = v.finite("angle_deg", angle_deg)
+            if angle != 0.0 and angle != math.radians(deg):
+                raise ValueError(
+                    f"FrictionTensor gives both angle = {angle!r} rad and angle_deg = {deg!r}; "
+                    "valid values: one of them"
+                )
+            angle = math.radians(deg)
+        object.__setattr__(self, "angle", angle)
+
+    @classmethod
+    def from_degrees(
+        cls, fx: float, fy: float, f: float = 0.0, frame: str = "plane", angle_deg: float = 0.0
+    ) -> FrictionTensor:
+        """The tensor with its principal axes turned by ``angle_deg`` degrees."""
+        return cls(fx, fy, f, frame, angle_deg=angle_deg)
+
+    @classmethod
+    def isotropic(cls, coefficient: float) -> FrictionTensor:
+        """Isotropic Coulomb friction with the given coefficient (in [1e-6, 5])."""
+        c = v.bounded("coefficient", coefficient, *v.COEFFICIENT)
+        return cls(c, c)
+
+    @property
+    def mu(self) -> float:
+        """Anisotropy μ = fy − fx used by the paper."""
+        return self.fy - self.fx
+
+    @property
+    def matrix(self) -> NDArray[np.float64]:
+        """2×2 tensor in its own frame (plane or body), principal axes turned by ``angle``."""
+        base = np.array([[self.fx, self.f], [-self.f, self.fy]])
+        if self.angle == 0.0:
+            return base
+        r = _rot(self.angle)
+        return r @ base @ r.T
+
+    def world_matrix(self, phi: float = 0.0) -> NDArray[np.float64]:
+        """2×2 tensor in the fixed frame OXY when the body angle is ``phi`` [rad]."""
+        m = self.matrix
+        if self.frame == "body":
+            r = _rot(phi)
+            m = r @ m @ r.T
+        return m
+
+    @property
+    def norm(self) -> float:
+        """Spectral norm of the tensor (largest traction per unit pressure)."""
+        return float(np.linalg.norm(self.matrix, 2))
+
+
+# ``angle_deg`` is an init-only argument; on an instance it reads the angle in degrees. (A
+# dataclass InitVar has no class attribute that mypy knows of, so it cannot see this one.)
+FrictionTensor.angle_deg = property(  # type: ignore[attr-defined]
+    lambda self: math.degrees(self.angle), doc="``angle`` in degrees (read-only)."
+)

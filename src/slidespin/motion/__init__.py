@@ -1,0 +1,9 @@
+"""Motion: the body's state in time, what acts on it, and its integration to the stop.
+
+The kinematic state, loads (forces and torques given in time), the compiled integrator (the
+integration core in the regularised time of MODEL §5, and the stop classification of MODEL
+§9), ``simulate`` (free and loaded motion with exact stick–slip, one entry), the batch engine,
+and the one vocabulary of statuses and endings.
+
+May import: :mod:`slidespin.contact` and the private root helpers.
+"""

@@ -1,0 +1,205 @@
+"""How a run ended: one vocabulary of statuses and endings for every part of slidespin.
+
+``Trajectory.status``, ``StopResults.status``, JSON, CSV, Parquet sweeps and the CLI all use
+these names (diffrax's habit: a result carries a status with a message, it does not raise).
+
+Statuses (is the reported stop a property of the motion, independent of solver settings?)
+
+========================  =====================================================================
+``stopped``               Converged: the body stops, and the ending, t_stop, β* and ϑ* are
+                          independent of ``rtol`` and ``max_step`` to the documented accuracy.
+``marginal``              The direction of motion approaches a fixed point of the sphere flow
+                          at which an eigenvalue vanishes (a Table 2 boundary or its analogue):
+                          the approach is algebraic, not exponential. The reported ending, β*
+                          and ϑ* are the analytic limit (the fixed point), t_stop and the
+                          position are converged.
+``saddle``                The motion passes so close to an unstable (saddle) fixed point that
+                          round-off, not the physics, chooses where it goes next; this happens
+                          at an energy far below any physical scale. The reported ending, β*
+                          and ϑ* are those of the saddle: what the motion does down to the
+                          energy ``saddle_energy`` (fraction of the initial kinetic energy).
+``max_steps``             The step budget ran out before the stop converged: values as reached.
+``step_too_small``        The integrator could not meet its tolerance: values as reached.
+``non_finite``            A state or step became NaN or infinite; the run was ended there.
+``at_rest``               The body starts at rest (nothing to integrate).
+========================  =====================================================================
+
+Endings (what the motion looks like as it stops; MODEL §5–6, §9)
+
+``mixed`` (v = β* ω, finite β* ≠ 0), ``pure_sliding`` (ω/v → 0), ``pure_spinning`` (v/ω → 0),
+``spiral`` (the body stops while the direction of its motion keeps turning: no ϑ*), ``at_rest``.
+
+Loaded runs (applied loads, slopes, ``t_end``; MODEL §11, :mod:`slidespin.motion.loaded`)
+
+A loaded body need not stop, so its run is bounded by ``t_end`` and the questions differ: did
+the integration reach its end (status), and in what state is the body there (ending)? Their
+names are kept apart from the unloaded ones (:data:`LOADED_STATUSES`, :data:`LOADED_ENDINGS`);
+``max_steps`` and ``step_too_small`` mean the same in both, with a loaded wording.
+
+========================  =====================================================================
+``ok``                    Converged: the run reached its end (``t_end``, or the final stick
+                          when there is none) with every stick–slip transition located to
+                          the integrator's tolerance.
+``max_steps``             The step budget ran out before the end: values as reached.
+``max_phases``            More stick and slip phases than the budget ``max_phases``: values as
+                          reached.
+``step_too_small``        The integrator could not meet its tolerance: values as reached.
+``no_onset``              The load left the static-friction set but no slip direction was
+                          found (a solver failure: one always exists, MODEL §11); the run
+                          ends there with the body at rest.
+========================  =====================================================================
+
+Loaded endings: ``stopped_stuck`` (moved, and is at rest and held at the end),
+``at_rest_throughout`` (static friction held it over the whole run), ``moving_at_t_end``
+(still moving at the end of the run: ``t_end``, or where an unconverged status ended it),
+``steady_sliding`` (moving at ``t_end`` under a constant load at a speed that no longer changes,
+to 1e-6 of itself over the run).
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "STATUSES",
+    "ENDINGS",
+    "STATUS_MESSAGES",
+    "CONVERGED",
+    "FLAGGED",
+    "UNCONVERGED",
+    "ENDING_MESSAGES",
+    "LOADED_STATUSES",
+    "LOADED_ENDINGS",
+    "LOADED_STATUS_MESSAGES",
+    "LOADED_ENDING_MESSAGES",
+    "LOADED_CONVERGED",
+    "LOADED_FLAGGED",
+    "LOADED_UNCONVERGED",
+    "status_message",
+    "ending_message",
+]
+
+#: status names, indexed by the integer codes of the compiled integrator (``_ode.ST_*``)
+STATUSES = (
+    "stopped",
+    "max_steps",
+    "step_too_small",
+    "at_rest",
+    "marginal",
+    "saddle",
+    "non_finite",
+)
+
+#: ending names, indexed by the integer ending codes of :class:`slidespin.motion.batch.StopResults`
+ENDINGS = ("mixed", "pure_sliding", "pure_spinning", "at_rest", "spiral")
+
+#: one-line explanation of each status
+STATUS_MESSAGES = {
+    "stopped": "converged stop, independent of solver settings",
+    "marginal": "approaches a marginal (non-hyperbolic) terminal state algebraically; "
+    "the reported terminal values are its analytic limit",
+    "saddle": "passes a saddle so closely that round-off chooses the exit; the reported "
+    "terminal values are the saddle's, observed down to saddle_energy",
+    "max_steps": "step budget exhausted before the stop converged; values as reached",
+    "step_too_small": "the integrator could not meet its tolerance; values as reached",
+    "non_finite": "a non-finite state or step appeared; the run was ended there",
+    "at_rest": "the body starts at rest",
+}
+
+#: the stop is converged and independent of solver settings
+CONVERGED = frozenset({"stopped", "at_rest"})
+#: the stop is a property of the motion, reported as an analytic limit, but flagged
+FLAGGED = frozenset({"marginal", "saddle"})
+#: the values are those reached, not a converged stop: left out of sweep tables and plots
+#: by default
+UNCONVERGED = frozenset({"max_steps", "step_too_small", "non_finite"})
+
+
+#: one-line explanation of each ending
+ENDING_MESSAGES = {
+    "mixed": "stops sliding and spinning together, v = beta* omega with finite beta*",
+    "pure_sliding": "the spin vanishes before the speed (omega/v -> 0): beta* infinite",
+    "pure_spinning": "the speed vanishes before the spin (v/omega -> 0): beta* = 0",
+    "at_rest": "the body starts at rest",
+    "spiral": "stops while the direction of motion keeps turning: no theta*",
+}
+
+#: status names of a loaded run (``LoadedTrajectory.status``)
+LOADED_STATUSES = ("ok", "max_steps", "max_phases", "step_too_small", "no_onset")
+
+#: ending names of a loaded run (``LoadedTrajectory.ending``)
+LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
+
+#: one-line explanation of each loaded status
+LOADED_STATUS_MESSAGES = {
+    "ok": "converged: the run reached its end with every stick-slip transition located",
+    "max_steps": "step budget exhausted before the end of the run; values as reached",
+    "max_phases": "more stick and slip phases than max_phases; values as reached",
+    "step_too_small": "the integrator could not meet its tolerance; values as reached",
+    "no_onset": "the load left the static-friction set but no slip direction was found "
+    "(a solver failure); the run ends there with the body at rest",
+}
+
+#: one-line explanation of each loaded ending
+LOADED_ENDING_MESSAGES = {
+    "stopped_stuck": "moved, and is at rest and held by static friction at the end",
+    "at_rest_throughout": "static friction held the body at rest over the whole run",
+    "moving_at_t_end": "still moving at the end of the run (t_end, unless the status says "
+    "the run ended early)",
+    "steady_sliding": "sliding at t_end under a constant load at a speed that no longer "
+    "changes (by less than 1e-6 of itself over the run)",
+}
+
+#: the loaded run reached its end: converged
+LOADED_CONVERGED = frozenset({"ok"})
+#: no loaded status is an analytic limit (kept for symmetry with :data:`FLAGGED`)
+LOADED_FLAGGED: frozenset[str] = frozenset()
+#: the loaded run ended early: values as reached (exit status 1 in the CLI)
+LOADED_UNCONVERGED = frozenset({"max_steps", "max_phases", "step_too_small", "no_onset"})
+
+
+def _lookup(kind: str, name: str, messages: dict[str, str], names: tuple[str, ...]) -> str:
+    try:
+        return messages[name]
+    except KeyError:
+        raise ValueError(
+            f"{kind} = {name!r} is invalid; valid values: {', '.join(names)}"
+        ) from None
+
+
+def status_message(status: str, *, loaded: bool = False) -> str:
+    """One-line explanation of a status name.
+
+    Parameters
+    ----------
+    status : str
+        A name of :data:`STATUSES`, or of :data:`LOADED_STATUSES` with ``loaded=True``.
+    loaded : bool, default False
+        Explain the status of a loaded run (:class:`slidespin.motion.loaded.LoadedTrajectory`).
+
+    Raises
+    ------
+    ValueError
+        If ``status`` is not in the vocabulary chosen by ``loaded``.
+    """
+    if loaded:
+        return _lookup("status", status, LOADED_STATUS_MESSAGES, LOADED_STATUSES)
+    return _lookup("status", status, STATUS_MESSAGES, STATUSES)
+
+
+def ending_message(ending: str, *, loaded: bool = False) -> str:
+    """One-line explanation of an ending name.
+
+    Parameters
+    ----------
+    ending : str
+        A name of :data:`ENDINGS`, or of :data:`LOADED_ENDINGS` with ``loaded=True``.
+    loaded : bool, default False
+        Explain the ending of a loaded run (:class:`slidespin.motion.loaded.LoadedTrajectory`).
+
+    Raises
+    ------
+    ValueError
+        If ``ending`` is not in the vocabulary chosen by ``loaded``.
+    """
+    if loaded:
+        return _lookup("ending", ending, LOADED_ENDING_MESSAGES, LOADED_ENDINGS)
+    return _lookup("ending", ending, ENDING_MESSAGES, ENDINGS)

@@ -1,0 +1,650 @@
+"""Integration of the motion to its stop (paper eq. 4, 8, 11; MODEL §4–5).
+
+``simulate`` integrates the Newton–Euler equations of the body in the regularised time of
+MODEL §5, in which the stop is reached smoothly instead of being approached by ever smaller
+steps; it returns a :class:`Trajectory` with the paper's quantities: the speed v, the
+direction ϑ of the velocity of G, β = v/ω (the distance from G to the instantaneous centre of
+rotation), the friction components F_τ, F_n, M over time, the stop time, and the terminal
+ratio β* with its direction ϑ* at the stop.
+
+Departures from the paper: the paper integrates in t with unstated tolerances and reads β at
+the end; slidespin integrates in τ (dt = s dτ), so t_stop is the limit t(τ → ∞) and β*, ϑ*
+are the converged terminal direction, not a value read at a cut-off speed. Results are in SI
+units; the paper's eq. 7 scaling has t = t₁√(aπ/g) (MODEL §7, erratum 2).
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from dataclasses import dataclass, field
+from os import PathLike
+from typing import TYPE_CHECKING, Any, overload
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from slidespin import _validate as v
+from slidespin.contact import _engine
+from slidespin.contact._kernel_ellipse import wrench_array
+from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
+from slidespin.contact.body import Body
+from slidespin.contact.friction import FrictionTensor
+from slidespin.motion import _ode
+from slidespin.motion.outcomes import ENDINGS, STATUSES, status_message
+from slidespin.motion.state import State
+
+if TYPE_CHECKING:
+    import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
+
+    from slidespin.contact.incline import Incline
+    from slidespin.motion.loaded import LoadedTrajectory
+    from slidespin.motion.loads import Load
+
+__all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "status_name"]
+
+ENDING_TOL = _ode.ENDING_TOL
+
+
+#: largest step budget (the integrator counts steps in 64-bit integers; 1e9 steps of a few
+#: microseconds each is already an hour)
+MAX_STEPS_LIMIT = 1_000_000_000
+
+
+def check_solver_options(rtol: float, max_steps: int) -> tuple[float, int]:
+    """Validate ``rtol`` in (0, 1e-3] and ``max_steps`` an integer in [1, 1e9]."""
+    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
+    if (
+        isinstance(max_steps, bool)
+        or not isinstance(max_steps, (int, np.integer))
+        or not 1 <= max_steps <= MAX_STEPS_LIMIT
+    ):
+        raise ValueError(
+            f"max_steps = {max_steps!r} is invalid; valid range: integer in [1, {MAX_STEPS_LIMIT}]"
+        )
+    return rtol, int(max_steps)
+
+
+def status_name(code: int) -> str:
+    """Status name (:data:`slidespin.motion.outcomes.STATUSES`) of an integrator status code; a spiral
+    stop is ``stopped`` (its ending says ``spiral``)."""
+    code = int(code)
+    return "stopped" if code == _ode.ST_SPIRAL else STATUSES[code]
+
+
+def classify_ending(u_plane: float, u_spin: float, tol: float = ENDING_TOL) -> str:
+    """Kind of terminal motion from the converged direction u* = (u₁₂, u₃) (MODEL §5).
+
+    ``pure_sliding`` when u₃* = 0 (ω/v → 0), ``pure_spinning`` when u₁₂* = 0 (v/ω → 0),
+    ``mixed`` otherwise (v = β ω with finite β ≠ 0).
+    """
+    if abs(u_spin) <= tol:
+        return "pure_sliding"
+    if abs(u_plane) <= tol:
+        return "pure_spinning"
+    return "mixed"
+
+
+def _beta(u_plane: ArrayLike, u_spin: ArrayLike, k: float) -> NDArray[np.float64]:
+    """β = v/ω = k u₁₂/u₃ (±inf for ω = 0, and where it overflows: a spin below 1e-308 of
+    the speed)."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        b = k * np.asarray(u_plane) / np.asarray(u_spin)
+    return np.where(np.asarray(u_spin) == 0.0, np.inf, b)
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """Motion of the body from its initial state to the stop (SI units throughout).
+
+    Attributes
+    ----------
+    t, x, y, phi, vx, vy, omega : ndarray
+        Time [s], mass-centre position [m], body angle [rad], velocity of G [m/s] and spin
+        [rad/s] at the integrator's steps, ending with the stop itself.
+    speed, theta, beta : ndarray
+        v = |v_G| [m/s], its direction ϑ [rad] and β = v/ω [m] (signed like ω; ±inf where
+        ω = 0). At the stop these are the limits along the motion.
+    tangential, normal, moment_paper : ndarray
+        The paper's F_τ, F_n [N] and M_Cζ [N m] (eq. 4) along the motion.
+    path_length : ndarray
+        Distance travelled by G [m].
+    t_stop : float
+        Stop time [s].
+    stop_state : State
+        Position and angle at the stop (velocities zero).
+    beta_stop, theta_stop : float
+        Terminal ratio β* = lim v/ω [m] and terminal direction ϑ* [rad] of the velocity of G
+        (MODEL §5, §9), taken from the fixed point of the flow of the direction of motion
+        that the trajectory approaches, not from its last step: +inf for a pure-sliding
+        ending, 0 for a pure-spinning one. ϑ* is NaN where no limiting direction exists: a
+        pure-spinning ending whose vanishing velocity keeps turning, a ``spiral`` ending, a
+        body at rest. β* is NaN at rest and for a spiral with spin.
+    ending : str
+        ``mixed``, ``pure_sliding`` (ω/v → 0), ``pure_spinning`` (v/ω → 0), ``at_rest``, or
+        ``spiral``: the body stops (t_stop, position and angle are converged) while the
+        direction of its motion keeps turning, so there is no terminal direction; ϑ* is then
+        NaN, and β* too unless the spin has died out first (β* = inf). This happens e.g. in
+        pure sliding under a skew tensor with |f| > |μ|/2, where 𝔽 has no real eigenvector,
+        and on limit cycles of the direction of motion.
+    status : str
+        How far the reported stop can be trusted (:mod:`slidespin.motion.outcomes`): ``stopped``
+        (converged; independent of ``rtol`` and ``max_step``), ``marginal`` (an algebraic
+        approach at a boundary between endings: β*, ϑ* are the analytic limit), ``saddle``
+        (round-off chooses the exit from a saddle: the values are the saddle's, valid down
+        to ``saddle_energy``), ``max_steps``, ``step_too_small``, ``non_finite`` (values as
+        reached, not converged) or ``at_rest``.
+    saddle_energy : float
+        For ``status == "saddle"``: the fraction of the initial kinetic energy down to which
+        the motion was observed to approach the saddle's ending; NaN otherwise.
+    eigenvalue_ratio : float
+        Largest real part of the eigenvalues of the direction flow at the terminal fixed point
+        divided by its decay rate |u·A| (negative: attracting; near 0: marginal); NaN where no
+        fixed point was reached.
+    n_steps, n_rhs : int
+        Integrator steps and right-hand-side evaluations.
+    """
+
+    t: NDArray[np.float64]
+    x: NDArray[np.float64]
+    y: NDArray[np.float64]
+    phi: NDArray[np.float64]
+    vx: NDArray[np.float64]
+    vy: NDArray[np.float64]
+    omega: NDArray[np.float64]
+    speed: NDArray[np.float64]
+    theta: NDArray[np.float64]
+    beta: NDArray[np.float64]
+    tangential: NDArray[np.float64]
+    normal: NDArray[np.float64]
+    moment_paper: NDArray[np.float64]
+    path_length: NDArray[np.float64]
+    t_stop: float
+    stop_state: State
+    beta_stop: float
+    theta_stop: float
+    ending: str
+    status: str
+    n_steps: int
+    n_rhs: int
+    body: Body = field(repr=False)
+    friction: FrictionTensor = field(repr=False)
+    initial_state: State = field(repr=False)
+    g: float = 9.81
+    saddle_energy: float = math.nan
+    eigenvalue_ratio: float = math.nan
+
+    def __repr__(self) -> str:
+        return (
+            f"Trajectory(status={self.status!r}, ending={self.ending!r}, "
+            f"t_stop={self.t_stop:.6g} s, distance={self.distance:.6g} m, "
+            f"beta_stop={self.beta_stop:.6g} m, theta_stop={self.theta_stop:.6g} rad, "
+            f"n_steps={self.n_steps}, n_points={self.t.size})"
+        )
+
+    @property
+    def status_message(self) -> str:
+        """One-line explanation of ``status``."""
+        return status_message(self.status)
+
+    @property
+    def distance(self) -> float:
+        """Distance travelled by G until the stop [m]."""
+        return float(self.path_length[-1])
+
+    @property
+    def beta_stop_ratio(self) -> float:
+        """β*/ℓ, the terminal ratio in units of the semi-axis a (as in the paper's tables), or
+        of the extent of a footprint (:attr:`slidespin.Body.length_unit`)."""
+        return self.beta_stop / self.body.length_unit
+
+    def summary(self) -> dict[str, Any]:
+        """The stop results as a JSON-ready dict (SI units).
+
+        Non-finite values are ``None`` (JSON ``null``), always for a reason that ``ending``
+        gives: β* = ∞ for ``pure_sliding``, β* and ϑ* undefined for ``spiral`` and
+        ``at_rest``. Numbers stay numbers, so scripts need not parse strings.
+        """
+
+        def num(x):
+            x = float(x)
+            return x if math.isfinite(x) else None
+
+        s = self.stop_state
+        return {
+            "t_stop": num(self.t_stop),
+            "x_stop": num(s.x),
+            "y_stop": num(s.y),
+            "phi_stop": num(s.phi),
+            "distance": num(self.distance),
+            "beta_stop": num(self.beta_stop),
+            "beta_stop_over_a": num(self.beta_stop_ratio),
+            "theta_stop": num(self.theta_stop),
+            "ending": self.ending,
+            "status": self.status,
+            "status_message": self.status_message,
+            "saddle_energy": num(self.saddle_energy),
+            "eigenvalue_ratio": num(self.eigenvalue_ratio),
+            "n_steps": int(self.n_steps),
+        }
+
+    def to_json(self, path: str | PathLike[str] | None = None) -> str:
+        """Write (or return) the stop summary as JSON."""
+        text = json.dumps(self.summary(), indent=2)
+        if path is not None:
+            with open(path, "w", encoding="utf-8") as fh:
+                fh.write(text + "\n")
+        return text
+
+    COLUMNS = (
+        "t",
+        "x",
+        "y",
+        "phi",
+        "vx",
+        "vy",
+        "omega",
+        "speed",
+        "theta",
+        "beta",
+        "tangential",
+        "normal",
+        "moment_paper",
+        "path_length",
+    )
+
+    def to_pandas(self) -> pd.DataFrame:
+        """The trajectory as a :class:`pandas.DataFrame`, one row per recorded step, the
+        columns of :meth:`to_csv` (SI units); the stop summary is in ``DataFrame.attrs``.
+        Needs pandas (``pip install pandas``)."""
+        try:
+            import pandas as pd  # type: ignore[import-untyped]
+        except ImportError:  # pragma: no cover - depends on the environment
+            raise ImportError("Trajectory.to_pandas needs pandas: pip install pandas") from None
+        df = pd.DataFrame({c: np.asarray(getattr(self, c), dtype=float) for c in self.COLUMNS})
+        df.attrs.update(self.summary())
+        return df
+
+    def _repr_html_(self) -> str:
+        """A short summary table for notebooks (no arrays)."""
+        return _html_table("Trajectory", self.summary())
+
+    def to_csv(self, path: str | PathLike[str] | None = None) -> str:
+        """Write (or return) the trajectory as CSV, one row per step (SI units)."""
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        w.writerow(self.COLUMNS)
+        cols = [getattr(self, c) for c in self.COLUMNS]
+        for row in zip(*cols):
+            w.writerow([repr(float(x)) for x in row])
+        text = buf.getvalue()
+        if path is not None:
+            with open(path, "w", encoding="utf-8", newline="") as fh:
+                fh.write(text)
+        return text
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: None = ...,
+    incline: None = ...,
+    t_end: None = ...,
+    scan_step: float | None = ...,
+) -> Trajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load,
+    incline: Incline | None = ...,
+    t_end: float | None = ...,
+    scan_step: float | None = ...,
+) -> LoadedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline,
+    t_end: float | None = ...,
+    scan_step: float | None = ...,
+) -> LoadedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline | None = ...,
+    t_end: float,
+    scan_step: float | None = ...,
+) -> LoadedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline | None = ...,
+    t_end: float | None = ...,
+    scan_step: float | None = ...,
+) -> Trajectory | LoadedTrajectory: ...
+
+
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = 9.81,
+    rtol: float = 1e-10,
+    *,
+    max_steps: int = 200_000,
+    max_step: float | None = None,
+    load: Load | None = None,
+    incline: Incline | None = None,
+    t_end: float | None = None,
+    scan_step: float | None = None,
+) -> Trajectory | LoadedTrajectory:
+    """Integrate the motion of ``body`` from ``initial_state`` until it stops.
+
+    Parameters
+    ----------
+    body : Body
+        Patch (an ellipse, or any area footprint of :mod:`slidespin.contact.shapes`; a ``Blade`` is
+        refused with a ``ValueError``), pressure law,
+        mass and moment of inertia.
+    friction : FrictionTensor
+        Friction tensor (plane- or body-fixed).
+    initial_state : State
+        Initial position, angle and velocities (SI).
+    g : float, default 9.81
+        Gravitational acceleration [m/s²], in [1e-6, 1e6].
+    rtol : float, default 1e-10
+        Relative (and, in natural units, absolute) tolerance of the integrator, in (0, 1e-3].
+        The stop values carry the integration's global error: measured over random cases,
+        t_stop, β* and ϑ* change by less than 1e-6 (relative, resp. rad) between rtol 1e-10
+        and 1e-12, and by up to ~1e3·rtol at looser tolerances; the ending does not change.
+    max_steps : int, default 200000
+        Step budget, at most 1e9; if exhausted, ``status`` is ``"max_steps"`` and the stop
+        values are those reached.
+    max_step : float or None
+        Largest step in the regularised time τ (dimensionless); smaller values give more
+        points along the trajectory (for plotting and CSV export; ``slidespin demo`` uses
+        0.05, about 1000 points), not more accuracy. By default only the integrator's own
+        steps are recorded (about 40 for the demo), which is enough for the stop values.
+
+    load : Load, optional
+        Applied force and torque (constant or functions of time; :mod:`slidespin.motion.loads`).
+    incline : Incline, optional
+        A tilted plane: normal load m g cos α, downhill pull m g sin α.
+    t_end : float, optional
+        Time bound [s]; a loaded body need not stop.
+    scan_step : float, optional
+        Step [s] of the scan for the moment a load varying in time (a callable) overcomes
+        static friction; see :func:`slidespin.motion.loaded.simulate_loaded`. By default at most
+        :data:`slidespin.motion.loaded.SCAN_STEP_MAX` = 1 ms (for runs up to 200 s); an excursion
+        of a callable load beyond static friction lasting longer than the step is always
+        found. Piecewise-linear loads are also checked at every sample time.
+
+    Returns
+    -------
+    Trajectory, or LoadedTrajectory
+        A :class:`~slidespin.motion.loaded.LoadedTrajectory` (with stick and slip phases and the
+        energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
+        :func:`slidespin.motion.loaded.simulate_loaded` (ellipses and circles for now).
+
+    Notes
+    -----
+    Integrates paper eq. 4 (eq. 8 and 11 are its semi-analytic forms for the uniform and
+    linear laws) in the regularised time of MODEL §5 with a compiled DOP853 integrator.
+
+    Examples
+    --------
+    >>> from slidespin import Body, Ellipse, UniformPressure, FrictionTensor, State
+    >>> body = Body(Ellipse.from_eccentricity(0.1, 0.866), UniformPressure(), mass=1.0)
+    >>> tr = simulate(body, FrictionTensor(0.42, 0.54), State.from_speed(1.0, 5.0, 0.785))
+    >>> tr.status, tr.ending
+    ('stopped', 'mixed')
+    """
+    if not isinstance(body, Body):
+        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
+    if not isinstance(friction, FrictionTensor):
+        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    if not isinstance(initial_state, State):
+        raise ValueError(
+            f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
+        )
+    from slidespin.contact.incline import Incline as _Incline
+    from slidespin.motion.loads import Load as _Load
+
+    for name, val in (("g", g), ("rtol", rtol)):
+        if isinstance(val, (_Load, _Incline)):  # simulate(body, friction, state, load)
+            raise ValueError(
+                f"{name} = {v._short(val)} is invalid: the 4th and 5th positional arguments "
+                "are g and rtol; pass load=, incline=, t_end= by keyword, e.g. "
+                "simulate(body, friction, state, load=load, t_end=2.0)"
+            )
+    if load is not None or incline is not None or t_end is not None:
+        # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11)
+        from slidespin.motion.loaded import simulate_loaded
+
+        return simulate_loaded(
+            body,
+            friction,
+            initial_state,
+            load=load,
+            incline=incline,
+            t_end=t_end,
+            g=g,
+            rtol=rtol,
+            max_steps=max_steps,
+            max_step=max_step,
+            scan_step=scan_step,
+        )
+    if scan_step is not None:
+        raise ValueError(
+            f"scan_step = {v._short(scan_step)} is invalid without load, incline or t_end "
+            "(it only applies to the stick-slip engine); valid values: None"
+        )
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    rtol, max_steps = check_solver_options(rtol, max_steps)
+    h_max = math.inf if max_step is None else v.positive("max_step", max_step)
+
+    a = body.length_unit  # the semi-axis, or a footprint's extent
+    t_unit = math.sqrt(a / g)
+    v_unit = math.sqrt(a * g)
+    par, fe, fc, geo = body.engine_params(friction)
+    k = par[_engine.P_K]
+    s0 = initial_state
+    vxn, vyn, wn = s0.vx / v_unit, s0.vy / v_unit, s0.omega * t_unit
+    speed0 = math.sqrt(vxn * vxn + vyn * vyn + (k * wn) ** 2)
+    if speed0 == 0.0:
+        one = lambda x: np.array([float(x)])  # noqa: E731
+        return Trajectory(
+            t=one(0.0),
+            x=one(s0.x),
+            y=one(s0.y),
+            phi=one(s0.phi),
+            vx=one(0.0),
+            vy=one(0.0),
+            omega=one(0.0),
+            speed=one(0.0),
+            theta=one(0.0),
+            beta=one(math.nan),
+            tangential=one(0.0),
+            normal=one(0.0),
+            moment_paper=one(0.0),
+            path_length=one(0.0),
+            t_stop=0.0,
+            stop_state=State(s0.x, s0.y, s0.phi),
+            beta_stop=math.nan,
+            theta_stop=math.nan,
+            ending="at_rest",
+            status="at_rest",
+            n_steps=0,
+            n_rhs=0,
+            body=body,
+            friction=friction,
+            initial_state=initial_state,
+            g=g,
+        )
+    y0 = np.array(
+        [
+            vxn / speed0,
+            vyn / speed0,
+            k * wn / speed0,
+            math.log(speed0),
+            0.0,
+            s0.x / a,
+            s0.y / a,
+            s0.phi,
+            0.0,
+        ]
+    )
+    yend, status, nsteps, nrhs, fails, rate, rec, term = _ode.integrate_on(
+        par, fe, fc, geo, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
+    )
+    if fails:  # pragma: no cover - guard, not reached in tests
+        raise RuntimeError(
+            f"simulate: {fails} wrench evaluations missed their error target; please report"
+        )
+    rows = np.vstack([rec[:, 1:], yend[None, :]])
+    u1, u2, u3 = rows[:, 0], rows[:, 1], rows[:, 2]
+    s = np.exp(rows[:, 3])  # 0 at the stop
+    if body.is_footprint:
+        fx, fy, mm = fp_wrench_array(
+            fe,
+            fc,
+            geo,
+            par[_engine.P_T00],
+            par[_engine.P_T01],
+            par[_engine.P_T10],
+            par[_engine.P_T11],
+            par[_engine.P_BODY] != 0.0,
+            rows[:, 7].copy(),
+            u1.copy(),
+            u2.copy(),
+            u3 / k,
+        )
+    else:
+        fx, fy, mm, _ = wrench_array(
+            *_engine.elliptic_args(par),
+            rows[:, 7].copy(),
+            u1.copy(),
+            u2.copy(),
+            u3 / k,
+            1e-12,
+        )
+    weight = body.mass * g  # the normal load m g [N]
+    u12 = np.hypot(u1, u2)
+    theta = np.arctan2(u2, u1)
+    c, sn = np.cos(theta), np.sin(theta)
+    beta = _beta(u12, u3, k) * a
+    ending, beta_stop, theta_stop = _terminal_values(
+        status, math.hypot(yend[0], yend[1]), yend[2], term[0], term[3]
+    )
+    beta_stop *= a
+    stop = State(yend[5] * a, yend[6] * a, yend[7])
+    return Trajectory(
+        t=rows[:, 4] * t_unit,
+        x=rows[:, 5] * a,
+        y=rows[:, 6] * a,
+        phi=rows[:, 7].copy(),
+        vx=s * u1 * v_unit,
+        vy=s * u2 * v_unit,
+        omega=s * u3 / k / t_unit,
+        speed=s * u12 * v_unit,
+        theta=theta,
+        beta=beta,
+        tangential=-(fx * c + fy * sn) * weight,
+        normal=-(-fx * sn + fy * c) * weight,
+        moment_paper=-mm * weight * a,
+        path_length=rows[:, 8] * a,
+        t_stop=float(yend[4] * t_unit),
+        stop_state=stop,
+        beta_stop=beta_stop,
+        theta_stop=theta_stop,
+        ending=ending,
+        status=status_name(status),
+        n_steps=int(nsteps),
+        n_rhs=int(nrhs),
+        saddle_energy=math.exp(2.0 * term[1]) if math.isfinite(term[1]) else math.nan,
+        eigenvalue_ratio=float(term[2]),
+        body=body,
+        friction=friction,
+        initial_state=initial_state,
+        g=g,
+    )
+
+
+def _terminal_values(
+    status: int, u12: float, u3: float, theta_star: float, beta_nat: float
+) -> tuple[str, float, float]:
+    """(ending, β*/a, ϑ*) of a stop from its reported direction (|u₁₂|, u₃) and the
+    integrator's ϑ* and k u₁₂/u₃ (MODEL §5, §9)."""
+    status = int(status)
+    if status == _ode.ST_SPIRAL:
+        # the direction of motion turns for ever while the body stops: no terminal direction
+        return "spiral", float(beta_nat), math.nan  # inf if the spin dies out, else NaN
+    ending = classify_ending(u12, u3)
+    if status in (_ode.ST_STOPPED, _ode.ST_MARGINAL, _ode.ST_SADDLE):
+        if ending == "pure_sliding":
+            return ending, math.inf, float(theta_star)  # the sign of a vanishing ω is noise
+        if ending == "pure_spinning":
+            return ending, 0.0, float(theta_star)
+    # mixed, or not converged: the direction as reached
+    return ending, float(beta_nat), float(theta_star)
+
+
+def _html_table(title: str, items: dict[str, Any]) -> str:
+    """A two-column HTML table of ``items`` (for ``_repr_html_``)."""
+    from html import escape
+
+    def cell(x):
+        return f"{x:.6g}" if isinstance(x, float) else escape(str(x))
+
+    rows = "".join(
+        f"<tr><th style='text-align:left'>{escape(str(k))}</th><td>{cell(x)}</td></tr>"
+        for k, x in items.items()
+    )
+    return f"<table><caption>{escape(title)}</caption>{rows}</table>"

@@ -1,0 +1,446 @@
+"""Cases described in TOML files (``slidespin simulate CASE.toml``).
+
+A case file has the tables ``[patch]``, ``[pressure]``, ``[friction]``, ``[body]``,
+``[initial]`` and optionally ``[solver]`` (see ``examples/*.toml``). The patch is an ellipse
+or a circle (the paper's), or a footprint (MODEL §10): ``shape = "polygon"`` (``vertices =
+[[xi, eta], ...]``), ``"rectangle"`` (``length``, ``width``), ``"annulus"`` (``inner_radius``,
+``outer_radius``), ``"disk"`` (``radius``), each optionally placed by ``centre = [xi, eta]``
+and ``angle``/``angle_deg``, or ``"pads"`` with one ``[[patch.pads]]`` table per pad (any of
+the four footprint shapes). Every key is checked:
+an unknown key (a typo) or a missing required key is an error naming the table and the key,
+never silently ignored. Angles are in radians unless the key ends in ``_deg``.
+
+Files are read defensively (:func:`read_toml`, also used for sweep specs): only a regular file
+(a FIFO or a device such as ``/dev/zero`` is refused without waiting), at most
+:data:`MAX_FILE_BYTES` bytes, UTF-8 text, nesting of at most :data:`MAX_DEPTH` levels, integers
+within 64 bits; ``name`` has at most :data:`MAX_NAME_CHARS` characters and
+``[solver] max_steps`` at most :data:`MAX_STEPS_LIMIT`. Every refusal is one line naming the
+file and the key.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import dataclass
+
+from slidespin import _validate as v
+from slidespin._io import read_regular_file
+from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Circle, Ellipse
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.incline import Incline
+from slidespin.contact.pressure import pressure_law_from_name
+from slidespin.motion.loads import Load
+from slidespin.motion.state import State
+from slidespin.studies.load_tables import (
+    INCLINE_KEYS,
+    LOAD_KEYS,
+    incline_from_table,
+    load_from_table,
+)
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+__all__ = [
+    "Case",
+    "load_case",
+    "case_from_dict",
+    "read_toml",
+    "MAX_FILE_BYTES",
+    "MAX_NAME_CHARS",
+    "MAX_DEPTH",
+    "MAX_STEPS_LIMIT",
+]
+
+#: largest case file or sweep specification read [bytes] (real ones are about 1 kB)
+MAX_FILE_BYTES = 1_000_000
+#: longest ``name`` of a case or sweep [characters] (it is printed and drawn as a title)
+MAX_NAME_CHARS = 200
+#: deepest nesting of tables, inline tables and arrays in a case file or sweep spec
+MAX_DEPTH = 6
+#: largest ``[solver] max_steps`` (the step counter is a 64-bit integer; 10⁹ steps are hours)
+MAX_STEPS_LIMIT = 1_000_000_000
+_INT64 = 2**63 - 1
+
+#: keys of each footprint shape in [patch] (and in every [[patch.pads]] entry)
+_FOOTPRINT_KEYS = {
+    "polygon": {"vertices"},
+    "rectangle": {"length", "width"},
+    "annulus": {"inner_radius", "outer_radius"},
+    "disk": {"radius"},
+}
+_PLACEMENT = {"centre", "angle", "angle_deg"}
+_SHAPES = ("ellipse", "circle", *_FOOTPRINT_KEYS, "pads")
+
+_TABLES = {
+    "patch": {
+        "shape",
+        "a",
+        "b",
+        "eccentricity",
+        "radius",
+        "vertices",
+        "length",
+        "width",
+        "inner_radius",
+        "outer_radius",
+        "centre",
+        "angle",
+        "angle_deg",
+        "pads",
+    },
+    "pressure": {"law", "xi_c", "eta_c"},
+    "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg"},
+    "body": {"mass", "moment_of_inertia", "inertia_ratio"},
+    "initial": {
+        "x",
+        "y",
+        "phi",
+        "phi_deg",
+        "vx",
+        "vy",
+        "omega",
+        "speed",
+        "theta",
+        "theta_deg",
+    },
+    "solver": {"g", "rtol", "max_steps", "t_end"},
+    "load": set(LOAD_KEYS),
+    "incline": set(INCLINE_KEYS),
+}
+_TOP = {"name", "description"}
+
+
+@dataclass(frozen=True, slots=True)
+class Case:
+    """A complete simulation case: body, friction, initial state and solver settings."""
+
+    body: Body
+    friction: FrictionTensor
+    initial_state: State
+    g: float = 9.81
+    rtol: float = 1e-10
+    max_steps: int = 200_000
+    name: str = ""
+    load: Load | None = None
+    incline: Incline | None = None
+    t_end: float | None = None
+
+    @property
+    def loaded(self) -> bool:
+        """True if the case has applied loads, a tilt or a time bound (MODEL §11)."""
+        return self.load is not None or self.incline is not None or self.t_end is not None
+
+
+def _angle(table: dict, where: str, key: str, default: float = 0.0) -> float:
+    if key in table and f"{key}_deg" in table:
+        raise ValueError(f"[{where}] gives both {key} and {key}_deg; give one")
+    if f"{key}_deg" in table:
+        return math.radians(v.finite(f"[{where}] {key}_deg", table[f"{key}_deg"]))
+    return v.finite(f"[{where}] {key}", table.get(key, default))
+
+
+def _in(where: str, build, *args, **kwargs):
+    """Call ``build``; prefix its ValueError with the TOML table it came from."""
+    try:
+        return build(*args, **kwargs)
+    except ValueError as exc:
+        msg = str(exc)
+        raise ValueError(msg if msg.startswith("[") else f"[{where}] {msg}") from None
+
+
+def _need(table: dict, where: str, key: str):
+    if key not in table:
+        raise ValueError(f"[{where}] is missing the required key {key!r}")
+    return table[key]
+
+
+def case_from_dict(data: dict) -> Case:
+    """Build and validate a :class:`Case` from a parsed TOML document."""
+    if not isinstance(data, dict):
+        raise ValueError("a case must be a TOML table")
+    for key in data:
+        if key not in _TABLES and key not in _TOP:
+            raise ValueError(
+                f"unknown table or key {key!r} in the case file; valid: "
+                + ", ".join(sorted(set(_TABLES) | _TOP))
+            )
+    for name in ("patch", "pressure", "friction", "body", "initial"):
+        if name not in data:
+            raise ValueError(f"the case file is missing the table [{name}]")
+    for name, allowed in _TABLES.items():
+        table = data.get(name, {})
+        if not isinstance(table, dict):
+            raise ValueError(f"[{name}] must be a table, got {table!r}")
+        for key in table:
+            if key not in allowed:
+                raise ValueError(
+                    f"unknown key {key!r} in [{name}]; valid keys: {', '.join(sorted(allowed))}"
+                )
+
+    p = data["patch"]
+    shape = v.choice("[patch] shape", p.get("shape", "ellipse"), _SHAPES)
+    if shape in _FOOTPRINT_KEYS or shape == "pads":
+        patch = _footprint(p, "patch")
+    elif shape == "circle":
+        extra = sorted(set(p) - {"shape", "radius"})
+        if extra:
+            raise ValueError(f"[patch] shape 'circle' takes only 'radius', not {extra[0]!r}")
+        patch = _in("patch", Circle, v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
+    else:
+        extra = sorted(set(p) - {"shape", "a", "b", "eccentricity", "radius"})
+        if extra:
+            raise ValueError(
+                f"[patch] shape 'ellipse' takes a and b or eccentricity, not {extra[0]!r}"
+            )
+        if "radius" in p:
+            raise ValueError(
+                "[patch] 'radius' is for shape = 'circle'; an ellipse takes a and b or eccentricity"
+            )
+        a = v.positive("[patch] a", _need(p, "patch", "a"), "m")
+        if ("b" in p) == ("eccentricity" in p):
+            raise ValueError("[patch] give exactly one of 'b' and 'eccentricity' for an ellipse")
+        if "b" in p:
+            patch = _in("patch", Ellipse, a, v.positive("[patch] b", p["b"], "m"))
+        else:
+            e = v.in_range("[patch] eccentricity", p["eccentricity"], 0.0, 1.0, hi_open=True)
+            patch = _in("patch", Ellipse.from_eccentricity, a, e)
+
+    pr = dict(data["pressure"])
+    law_name = _need(pr, "pressure", "law")
+    law = _in(
+        "pressure",
+        pressure_law_from_name,
+        law_name,
+        **{k: val for k, val in pr.items() if k != "law"},
+    )
+
+    fr = data["friction"]
+    friction = _in(
+        "friction",
+        FrictionTensor,
+        fx=_need(fr, "friction", "fx"),
+        fy=_need(fr, "friction", "fy"),
+        f=fr.get("f", 0.0),
+        frame=fr.get("frame", "plane"),
+        angle=_angle(fr, "friction", "angle"),
+    )
+
+    bd = data["body"]
+    mass = v.positive("[body] mass", _need(bd, "body", "mass"), "kg")
+    if "moment_of_inertia" in bd and "inertia_ratio" in bd:
+        raise ValueError("[body] give at most one of 'moment_of_inertia' and 'inertia_ratio'")
+    if "inertia_ratio" in bd:
+        body = _in("body", Body.from_inertia_ratio, patch, law, mass, bd["inertia_ratio"])
+    else:
+        body = _in("body", Body, patch, law, mass, bd.get("moment_of_inertia"))
+
+    ini = data["initial"]
+    has_speed = "speed" in ini or "theta" in ini or "theta_deg" in ini
+    has_v = "vx" in ini or "vy" in ini
+    if has_speed and has_v:
+        raise ValueError("[initial] give either speed/theta or vx/vy, not both")
+    phi = _angle(ini, "initial", "phi")
+    omega = v.finite("[initial] omega", ini.get("omega", 0.0))
+    x0 = v.finite("[initial] x", ini.get("x", 0.0))
+    y0 = v.finite("[initial] y", ini.get("y", 0.0))
+    if has_speed:
+        speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf, hi_open=True)
+        state = _in(
+            "initial", State.from_speed, speed, omega, _angle(ini, "initial", "theta"), phi, x0, y0
+        )
+    else:
+        state = _in("initial", State, x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0), omega)
+
+    so = data.get("solver", {})
+    g = v.positive("[solver] g", so.get("g", 9.81), "m/s^2")
+    rtol = v.in_range("[solver] rtol", so.get("rtol", 1e-10), 0.0, 1e-3, lo_open=True)
+    max_steps = so.get("max_steps", 200_000)
+    if (
+        isinstance(max_steps, bool)
+        or not isinstance(max_steps, int)
+        or not 1 <= max_steps <= MAX_STEPS_LIMIT
+    ):
+        raise ValueError(
+            f"[solver] max_steps = {max_steps!r} is invalid; valid range: "
+            f"integer >= 1 and <= {MAX_STEPS_LIMIT}"
+        )
+    name = check_name(data.get("name", ""))
+    load = load_from_table(data["load"]) if "load" in data else None
+    incline = incline_from_table(data["incline"]) if "incline" in data else None
+    t_end = None
+    if "t_end" in so:
+        t_end = v.in_range("[solver] t_end", so["t_end"], 0.0, 1e9, lo_open=True)
+    return Case(body, friction, state, g, rtol, max_steps, name, load, incline, t_end)
+
+
+def _footprint(p: dict, where: str, nested: bool = False):
+    """A footprint from a [patch] table (or one [[patch.pads]] entry, ``nested``)."""
+    from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
+
+    shape = v.choice(
+        f"[{where}] shape",
+        _need(p, where, "shape"),
+        tuple(_FOOTPRINT_KEYS) if nested else (*_FOOTPRINT_KEYS, "pads"),
+    )
+    allowed = (
+        {"shape", "pads"} if shape == "pads" else ({"shape"} | _FOOTPRINT_KEYS[shape] | _PLACEMENT)
+    )
+    for key in p:
+        if key not in allowed:
+            raise ValueError(
+                f"[{where}] shape {shape!r} does not take {key!r}; valid keys: "
+                + ", ".join(sorted(allowed))
+            )
+    if shape == "pads":
+        pads = _need(p, where, "pads")
+        if not isinstance(pads, list) or not pads or not all(isinstance(x, dict) for x in pads):
+            raise ValueError(f"[{where}] pads must be one or more [[{where}.pads]] tables")
+        items = [_footprint(x, f"{where}.pads[{i}]", nested=True) for i, x in enumerate(pads)]
+        return _in(where, Pads, items)
+    place = {
+        "centre": _pair(p.get("centre", (0.0, 0.0)), where, "centre"),
+        "angle": _angle(p, where, "angle"),
+    }
+    if shape == "polygon":
+        verts = _need(p, where, "vertices")
+        if not isinstance(verts, list):
+            raise ValueError(
+                f"[{where}] vertices = {_short(verts)} is invalid; valid values: "
+                "an array of at least 3 pairs [xi, eta] in m"
+            )
+        pts = [_pair(x, where, f"vertices[{i}]") for i, x in enumerate(verts)]
+        return _in(where, Polygon, pts, **place)
+    if shape == "rectangle":
+        return _in(where, Rectangle, _need(p, where, "length"), _need(p, where, "width"), **place)
+    if shape == "annulus":
+        return _in(
+            where,
+            Annulus,
+            _need(p, where, "inner_radius"),
+            _need(p, where, "outer_radius"),
+            **place,
+        )
+    return _in(where, Disk, _need(p, where, "radius"), **place)
+
+
+def _pair(value, where: str, key: str) -> tuple[float, float]:
+    """[xi, eta] of real numbers [m]."""
+    if (
+        not isinstance(value, (list, tuple))
+        or len(value) != 2
+        or not all(isinstance(x, (int, float)) and not isinstance(x, bool) for x in value)
+    ):
+        raise ValueError(
+            f"[{where}] {key} = {_short(value)} is invalid; valid values: a pair "
+            "[xi, eta] of real numbers in m"
+        )
+    return (v.finite(f"[{where}] {key}[0]", value[0]), v.finite(f"[{where}] {key}[1]", value[1]))
+
+
+def check_name(name, key: str = "name") -> str:
+    """The ``name`` of a case or sweep: a string of at most :data:`MAX_NAME_CHARS` characters."""
+    if not isinstance(name, str):
+        raise ValueError(f"{key} = {_short(name)} must be a string")
+    if len(name) > MAX_NAME_CHARS:
+        raise ValueError(
+            f"{key} is {len(name)} characters long; valid: a string of at most "
+            f"{MAX_NAME_CHARS} characters"
+        )
+    return name
+
+
+def _short(value, n: int = 60) -> str:
+    """``repr(value)`` cut to about ``n`` characters, for messages."""
+    text = repr(value)
+    return text if len(text) <= n else text[: n - 1] + "…"
+
+
+def check_document(data, where: tuple = (), depth: int = 0) -> None:
+    """Refuse what no valid case file or sweep spec contains, naming the key: nesting deeper
+    than :data:`MAX_DEPTH`, and integers outside the 64-bit range (e.g. ``2**64``)."""
+    if depth > MAX_DEPTH:
+        raise ValueError(
+            f"{_key(where)} is nested {depth} levels deep; valid: at most "
+            f"{MAX_DEPTH} levels of tables and arrays"
+        )
+    if isinstance(data, dict):
+        items = ((where + (str(k),), val) for k, val in data.items())
+    elif isinstance(data, list):
+        items = (
+            (where[:-1] + (f"{where[-1] if where else ''}[{i}]",), val)
+            for i, val in enumerate(data)
+        )
+    else:
+        if isinstance(data, int) and not isinstance(data, bool) and abs(data) > _INT64:
+            raise ValueError(
+                f"{_key(where)} = {_short(data, 40)} does not fit a 64-bit "
+                f"integer; valid range: [-{_INT64}, {_INT64}] (and the key's own "
+                "range)"
+            )
+        return
+    for key, val in items:
+        check_document(val, key, depth + 1)
+
+
+def _key(path: tuple) -> str:
+    """``('solver', 'max_steps')`` → ``[solver] max_steps`` (the way a TOML file shows it)."""
+    if not path:
+        return "the document"
+    if len(path) == 1:
+        return path[0]
+    return f"[{path[0]}] " + ".".join(path[1:])
+
+
+def read_toml(path, what: str, max_bytes: int = MAX_FILE_BYTES) -> dict:
+    """Parse a TOML file; unreadable, oversized or malformed files raise a one-line
+    ``ValueError`` naming the file.
+
+    Only regular files are read (a FIFO, a device such as ``/dev/zero`` or a directory is
+    refused without reading), and at most ``max_bytes`` bytes (default
+    :data:`MAX_FILE_BYTES`): a larger file is refused. The text must be UTF-8. Nesting deeper
+    than :data:`MAX_DEPTH` and integers beyond 64 bits are refused naming the key.
+    """
+    name = str(path)
+    raw = read_regular_file(path, what, "TOML", max_bytes)
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise ValueError(
+            f"{what} {name!r} is not UTF-8 text (byte {raw[exc.start]:#04x} at "
+            f"offset {exc.start}); valid: a UTF-8 TOML file"
+        ) from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ValueError(f"{what} {name!r} is not valid TOML: {exc}") from None
+    except RecursionError:
+        raise ValueError(
+            f"{what} {name!r} is nested too deeply; valid: at most {MAX_DEPTH} "
+            "levels of tables and arrays"
+        ) from None
+    try:
+        check_document(data)
+    except ValueError as exc:
+        raise ValueError(f"{what} {name!r}: {exc}") from None
+    return data
+
+
+def load_case(path) -> Case:
+    """Read and validate a case file.
+
+    Raises
+    ------
+    ValueError
+        Unreadable or malformed TOML, unknown or missing keys, or invalid values; the message
+        names the file, the key, the value and the valid range.
+    """
+    data = read_toml(path, "case file")
+    try:
+        return case_from_dict(data)
+    except ValueError as exc:
+        raise ValueError(f"{path}: {exc}") from None
