@@ -20,7 +20,7 @@ import os
 import numpy as np
 
 import slidespin as ss
-from slidespin.analysis.fit import trajectory_at
+from slidespin.analysis.fit_data import trajectory_at
 
 TRUTH = {"fx": 0.42, "fy": 0.54, "f": 0.03}
 SIGMA = {"x": 5e-4, "y": 5e-4, "phi": 1e-2}

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from slidespin.motion import simulate
 from slidespin.studies.case import load_case
-from slidespin.viz.plotting import plot_trajectory
+from slidespin.viz.trajectory_plot import plot_trajectory
 
 HERE = Path(__file__).resolve().parent
 CASES = ("curling_stone", "box", "sled", "robot_part")

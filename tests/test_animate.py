@@ -177,7 +177,7 @@ def test_cli_refuses_outputs_before_reading_the_case(tmp_path, monkeypatch, argv
     def boom(*a, **k):
         raise AssertionError("the case was read before the outputs were checked")
 
-    monkeypatch.setattr(slidespin.case, "load_case", boom)
+    monkeypatch.setattr(slidespin.studies.case, "load_case", boom)
     argv = ["no-such-case.toml"] + [a.format(d=tmp_path) for a in argv]
     with pytest.raises(ValueError, match=match):
         _cli(argv)
@@ -186,7 +186,9 @@ def test_cli_refuses_outputs_before_reading_the_case(tmp_path, monkeypatch, argv
 
 def test_main_cli_exit_status_2_and_nothing_written(tmp_path, capsys, monkeypatch):
     # through slidespin.cli.main, with the plugin registered as the lead registers it
-    from slidespin.cli.main import main as cli
+    import importlib
+
+    cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
 
     if not any(name == "animate" for name, *_ in cli._PLUGINS):
         monkeypatch.setattr(

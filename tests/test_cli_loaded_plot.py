@@ -27,7 +27,7 @@ from slidespin.cli.main import main  # noqa: E402
 from slidespin.motion import outcomes  # noqa: E402
 from slidespin.motion.simulate import simulate  # noqa: E402
 from slidespin.studies.case import load_case  # noqa: E402
-from slidespin.viz.plotting import STICK_GID, plot_loaded_trajectory, plot_trajectory  # noqa: E402
+from slidespin.viz.trajectory_plot import STICK_GID, plot_loaded_trajectory, plot_trajectory  # noqa: E402
 
 MU, G, MASS = 0.3, 9.81, 1.0
 PEAK = 2.0 * MU * MASS * G  # the force at t = 2 s [N]
@@ -297,7 +297,7 @@ def test_a_name_outside_the_vocabulary_is_refused(name, loaded):
 def test_every_outcome_the_loaded_engine_can_report_is_in_the_vocabulary():
     """Read from loaded.py's source (not from outcomes.py): every status and ending it can
     assign has a name and a message here."""
-    src = SRC / "loaded.py"
+    src = SRC / "motion" / "loaded.py"
     statuses = _literals(src, {"status"})
     endings = _literals(src, {"ending"})
     assert "ok" in statuses and "max_phases" in statuses and "no_onset" in statuses

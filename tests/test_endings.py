@@ -29,7 +29,7 @@ import pytest
 from scipy.integrate import quad, solve_ivp
 
 import slidespin as ss
-from slidespin.analysis.terminal import inertia_intervals
+from slidespin.analysis.intervals import inertia_intervals
 from slidespin.motion.batch import simulate_cases
 from slidespin.motion.outcomes import STATUSES
 
@@ -57,7 +57,7 @@ def _angle_diff(a, b):
 
 
 # ------------------------------------------------------------------------------------------
-# Table 2 written independently of slidespin.analysis.terminal
+# Table 2 written independently of slidespin.analysis.intervals
 # ------------------------------------------------------------------------------------------
 def table2_printed(law, fx, fy):
     """(I₁, I₂, I₃) from the paper's Table 2 (uniform row 1 with its parenthesis restored,

@@ -17,15 +17,9 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.analysis.fit import (
-    FitResult,
-    FitWarning,
-    IdentifiabilityWarning,
-    as_runs,
-    fit,
-    read_runs,
-    trajectory_at,
-)
+from slidespin.analysis.fit import FitWarning, IdentifiabilityWarning, fit
+from slidespin.analysis.fit_data import as_runs, read_runs, trajectory_at
+from slidespin.analysis.fit_result import FitResult
 
 G = 9.81
 A = 0.1
@@ -404,7 +398,7 @@ def test_read_runs_missing_file(tmp_path):
 def test_unfinished_quick_simulations_are_redone_in_full(monkeypatch):
     """Inside a fit a simulation first gets a small step budget; one that ends still moving
     must be run again with the full budget, so the result cannot depend on that budget."""
-    import slidespin.analysis.fit as fit_module
+    import slidespin.analysis._fit_problem as fit_module
 
     rng = np.random.default_rng(12)
     runs = synthetic(TRUE, STATES[:1], 60, SIGMA, rng)

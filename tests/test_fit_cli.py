@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.cli.main import main as cli
+
+cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXAMPLES = os.path.join(ROOT, "examples")

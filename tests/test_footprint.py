@@ -20,7 +20,7 @@ from scipy.special import ellipe, ellipk
 import slidespin as ss
 from footprint_reference import reference_power, reference_pressure, reference_wrench
 from slidespin.contact import _kernel_footprint as K
-from slidespin.contact.footprint_wrench import footprint_wrench
+from slidespin.contact.wrench import footprint_wrench
 from slidespin.contact.pressure_map import (
     PressureMap,
     area_rule,
@@ -713,7 +713,7 @@ def test_kernel_runs_as_python():
 
     code = (
         "import numpy as np\n"
-        "from slidespin import _footprint_kernel as K\n"
+        "from slidespin.contact import _kernel_footprint as K\n"
         "from slidespin.contact.shapes import Annulus, Pads, Polygon, Rectangle\n"
         "from slidespin.contact.pressure_map import kernel_geometry\n"
         "from slidespin.contact.pressure import LinearPressure\n"

@@ -25,7 +25,7 @@ from scipy.integrate import quad
 
 import slidespin as ss
 from slidespin.contact._kernel_blade import NEAR
-from slidespin.contact.footprint_wrench import footprint_wrench
+from slidespin.contact.wrench import footprint_wrench
 from slidespin.contact.pressure_map import PressureMap, density, mass_centre
 from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle
 

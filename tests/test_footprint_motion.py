@@ -469,7 +469,7 @@ def test_example_robot_part():
 def test_plot_draws_the_footprint_outline(tmp_path):
     """The path panel draws every outline of the footprint (both runners) along the path."""
     pytest.importorskip("matplotlib")
-    from slidespin.viz.plotting import outline_world, plot_trajectory
+    from slidespin.viz.trajectory_plot import outline_world, plot_trajectory
 
     c, tr = _example("sled")
     ol = outline_world(c.body, 1.0, 2.0, 0.5)

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import slidespin as ss
+from slidespin.contact.wrench import footprint_wrench
 from slidespin.contact.shapes import MAX_VERTICES, Disk, Pads, Polygon, Rectangle
 
 # ---------------------------------------------------------------------------------------------
@@ -178,20 +179,20 @@ def test_hertz_shaped_map_matches_exact_hertz_disk():
         warnings.simplefilter("error")  # accurate, so no warning either
         for f in (ss.FrictionTensor(0.3, 0.3), ss.FrictionTensor(0.2, 0.5, 0.1)):
             for vx, vy, om in [(0, 0, 1), (1, 0.5, 0), (0.03, 0.01, 1), (0.5, 0.2, 1)]:
-                w = ss.footprint_wrench(disk, hz, f, vx, vy, om, load=load)
-                e = ss.footprint_wrench(disk, ss.HertzPressure(), f, vx, vy, om, load=load)
+                w = footprint_wrench(disk, hz, f, vx, vy, om, load=load)
+                e = footprint_wrench(disk, ss.HertzPressure(), f, vx, vy, om, load=load)
                 assert abs(w.force_x - e.force_x) < 1e-8 * load
                 assert abs(w.force_y - e.force_y) < 1e-8 * load
                 assert abs(w.moment - e.moment) < 1e-8 * load * r
     # the pure-spin moment in closed form: −(3π/16) μ P R (MODEL §3)
-    w = ss.footprint_wrench(disk, hz, ss.FrictionTensor(0.3, 0.3), 0, 0, 1, load=load)
+    w = footprint_wrench(disk, hz, ss.FrictionTensor(0.3, 0.3), 0, 0, 1, load=load)
     assert abs(w.moment + 3 * math.pi / 16 * 0.3 * load * r) < 1e-10 * load * r
 
 
 def test_rough_map_warns():
     kink = ss.PressureMap(lambda x, y: np.abs(x - 0.0123) + 0.01)
     with pytest.warns(RuntimeWarning, match="reached only"):
-        ss.footprint_wrench(Disk(0.1), kink, ss.FrictionTensor(0.3, 0.3), 1, 0, 0)
+        footprint_wrench(Disk(0.1), kink, ss.FrictionTensor(0.3, 0.3), 1, 0, 0)
 
 
 def test_inertia_intervals_accepts_a_body():

@@ -32,8 +32,11 @@ from hypothesis import HealthCheck, event, given, reject, settings
 from hypothesis import strategies as st
 
 import slidespin as ss
+from slidespin.contact.shapes import is_footprint
+from slidespin.contact.wrench import footprint_wrench
 import test_fuzz
 from slidespin.analysis import fit as ssfit
+from slidespin.analysis import fit_data
 from slidespin.viz.animate import animate
 from test_fuzz import (
     EXAMPLES,
@@ -297,7 +300,7 @@ def test_pads(data):
             items.append(data.draw(st.one_of(numbers, st.just(ss.Circle(0.1))), label="pad"))
         else:
             items.append(data.draw(simple_patches((spacing * size * i, 0.0), size), label="pad"))
-    if k >= 2 and data.draw(st.booleans(), label="nest") and ss.footprint.is_footprint(items[0]):
+    if k >= 2 and data.draw(st.booleans(), label="nest") and is_footprint(items[0]):
         items = [ss.Pads(items[:1])] + items[1:]
     patches = data.draw(st.one_of(st.just(items), st.just(tuple(items)), numbers), label="patches")
     p = call(ss.Pads, ("patches",), patches)
@@ -349,7 +352,7 @@ def test_pressure_map(data):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)  # a documented accuracy warning
         w = call(
-            ss.footprint_wrench,
+            footprint_wrench,
             ("map_tol", "footprint", "pressure"),
             footprint,
             pressure,
@@ -399,7 +402,7 @@ def test_footprint_wrench(data):
     fp = args("footprint", footprints())
     law = args(
         "pressure",
-        footprint_laws(fp) if ss.footprint.is_footprint(fp) else st.just(ss.UniformPressure()),
+        footprint_laws(fp) if is_footprint(fp) else st.just(ss.UniformPressure()),
     )
     friction = args("friction", frictions)
     vx, vy, omega = (args(n, finite_arrays) for n in ("vx", "vy", "omega"))
@@ -417,7 +420,7 @@ def test_footprint_wrench(data):
         "broadcast",
         "LinearPressure(",
     )
-    w = call(ss.footprint_wrench, names, fp, law, friction, vx, vy, omega, phi, load)
+    w = call(footprint_wrench, names, fp, law, friction, vx, vy, omega, phi, load)
     if w is None:
         return
     finite_everywhere(w)
@@ -445,12 +448,12 @@ def test_footprint_body_and_simulate(data):
     fp = args("patch", footprints())
     law = args(
         "pressure",
-        footprint_laws(fp) if ss.footprint.is_footprint(fp) else st.just(ss.UniformPressure()),
+        footprint_laws(fp) if is_footprint(fp) else st.just(ss.UniformPressure()),
     )
     mass = args("mass", MASS)
     inertia = None
     if data.draw(st.booleans(), label="explicit inertia"):
-        ok = _real(mass) and ss.footprint.is_footprint(fp)
+        ok = _real(mass) and is_footprint(fp)
         i_star = data.draw(I_STAR, label="I*")
         inertia = args(
             "moment_of_inertia", st.just(i_star * float(mass) * fp.extent**2 if ok else 1.0)
@@ -868,7 +871,7 @@ def test_read_runs(data, tmp_path_factory):
         st.sampled_from(["file", "file", "file", "missing", "directory"]), label="path kind"
     )
     target = {"file": path, "missing": path.with_name("none.csv"), "directory": path.parent}[where]
-    runs = call(ssfit.read_runs, ("data file", str(path.parent)), target)
+    runs = call(fit_data.read_runs, ("data file", str(path.parent)), target)
     event(f"read_runs: {where}, {'raw bytes' if raw is not None else 'text'}")
     if runs is not None:
         for r in runs:
@@ -1186,7 +1189,7 @@ def test_regression_footprint_wrench_huge_velocity():
     """Fixed (was a strict xfail): the speed |v| overflowed to NaN; the velocity triple is
     now scaled first, as in friction_wrench."""
     clean(
-        ss.footprint_wrench,
+        footprint_wrench,
         ("vx", "vy"),
         ss.Disk(0.05),
         ss.UniformPressure(),
@@ -1336,14 +1339,14 @@ def test_regression_animate_path_type(short_trajectory):
 @pytest.mark.parametrize("path", [None, 1.5], ids=["None", "float"])
 def test_regression_read_runs_path_type(path):
     """None and 1.5 once gave a TypeError from open()."""
-    clean(ssfit.read_runs, ("data file", "path"), path)
+    clean(fit_data.read_runs, ("data file", "path"), path)
 
 
 def test_regression_read_runs_pipe():
     """An int path was once read as a file descriptor: a pipe blocked for ever."""
     r, w = os.pipe()
     try:
-        clean(ssfit.read_runs, ("data file", "path"), r, soft=3)
+        clean(fit_data.read_runs, ("data file", "path"), r, soft=3)
     finally:
         for fd in (r, w):
             try:
@@ -1356,7 +1359,7 @@ def test_regression_read_runs_fifo(tmp_path):
     """A FIFO with no writer once blocked for ever in open()."""
     fifo = tmp_path / "runs.csv"
     os.mkfifo(fifo)
-    clean(ssfit.read_runs, ("data file",), str(fifo), soft=3)
+    clean(fit_data.read_runs, ("data file",), str(fifo), soft=3)
 
 
 # hangs that allocate memory: run in a subprocess with a memory limit and a time limit
@@ -1400,8 +1403,8 @@ def _in_subprocess(expr, name, seconds=20):
 def test_regression_map_tol_hang():
     """map_tol=1e-300 once bisected without bound (memory)."""
     _in_subprocess(
-        "ss.footprint_wrench(ss.Rectangle(0.1, 0.05), ss.PressureMap(lambda x, y: "
-        "1.0 + 0.0 * x), F, 1.0, 0.0, 1.0, map_tol=1e-300)",
+        "ss.friction_wrench(ss.Body(ss.Rectangle(0.1, 0.05), ss.PressureMap(lambda x, y: "
+        "1.0 + 0.0 * x), 1.0), F, 1.0, 0.0, 1.0, map_tol=1e-300)",
         "map_tol",
     )
 

@@ -15,6 +15,7 @@ import pytest
 
 from reference import reference_wrench
 from slidespin.contact import _kernel_ellipse as K
+from slidespin.contact import _kernel_ellipse_rules as R
 
 TOL = 1e-10  # the contract, absolute, unit load and a = 1
 LAW = {"uniform": 0, "linear": 1, "boussinesq": 2, "hertz": 3}
@@ -32,7 +33,7 @@ def kernel(bn, law, cx, cy, om=1.3, tol=1e-12, tensor=TENSOR):
     fx, fy, m, status, method, nodes = K.wrench_body_info(
         bn, LAW[law], xg, yg, *tensor, vx, vy, om, tol
     )
-    return np.array([fx, fy, m]), status, K.METHOD_NAMES[method], nodes
+    return np.array([fx, fy, m]), status, R.METHOD_NAMES[method], nodes
 
 
 def reference(bn, law, cx, cy, om=1.3, tensor=TENSOR):
@@ -165,15 +166,15 @@ def test_trapezoid_converges_at_the_predicted_rate():
     """Error of the inside trapezoid rule vs N: the log-linear slope is at least the rate
     2d predicted from the singularity distance d (Trefethen & Weideman 2014, Thm 3.2)."""
     bn, cx, cy = 0.5, 0.35, 0.2
-    lam1, lam2, c2, s2 = K._q_form(1.0 / bn**2, cx, cy)
+    lam1, lam2, c2, s2 = R._q_form(1.0 / bn**2, cx, cy)
     d = min(math.atanh(bn), math.atanh(math.sqrt(lam1 / lam2)))  # plain angle, uniform law
     W = K.workspace()
 
     def T(n):
         return np.array(
-            K._run_rule(
+            R._run_rule(
                 W,
-                K.METHOD_TRAPEZOID,
+                R.METHOD_TRAPEZOID,
                 n,
                 0,
                 1 / bn**2,
@@ -214,17 +215,17 @@ def test_node_rule_grows_as_the_branch_point_approaches():
 
 
 def test_estimate_of_nested_rules():
-    assert K._estimate(1e-3, 0.0) == 0.0
-    assert K._estimate(1e-3, 2e-3) == 2e-3  # not converging: the difference itself
-    assert K._estimate(1e-2, 1e-4) == pytest.approx(1e-8)  # geometric: e2³/e1²
+    assert R._estimate(1e-3, 0.0) == 0.0
+    assert R._estimate(1e-3, 2e-3) == 2e-3  # not converging: the difference itself
+    assert R._estimate(1e-2, 1e-4) == pytest.approx(1e-8)  # geometric: e2³/e1²
 
 
 def test_clenshaw_curtis_tables_are_exact_for_polynomials():
-    for n in K.CC_SIZES:
-        o = K._CC_OFFSETS[K._CC_INDEX[n]]
-        on = K._NODE_OFFSETS[K._NODE_INDEX[n]]
-        x = K._COS[on : on + n + 1]
-        for w, m in ((K._CC_W1, n), (K._CC_W2, n // 2), (K._CC_W4, n // 4)):
+    for n in R.CC_SIZES:
+        o = R._CC_OFFSETS[R._CC_INDEX[n]]
+        on = R._NODE_OFFSETS[R._NODE_INDEX[n]]
+        x = R._COS[on : on + n + 1]
+        for w, m in ((R._CC_W1, n), (R._CC_W2, n // 2), (R._CC_W4, n // 4)):
             ww = w[o : o + n + 1]
             for p in range(0, m + 1, 3):
                 exact = 0.0 if p % 2 else 2.0 / (p + 1)
@@ -232,17 +233,17 @@ def test_clenshaw_curtis_tables_are_exact_for_polynomials():
 
 
 def test_node_tables():
-    for n in K.NODE_SIZES:
-        o = K._NODE_OFFSETS[K._NODE_INDEX[n]]
+    for n in R.NODE_SIZES:
+        o = R._NODE_OFFSETS[R._NODE_INDEX[n]]
         t = np.arange(n + 1) * math.pi / n
-        assert np.max(np.abs(K._COS[o : o + n + 1] - np.cos(t))) < 1e-15
-        assert np.max(np.abs(K._SIN[o : o + n + 1] - np.sin(t))) < 1e-15
-        assert K._SIN[o] == 0.0 and K._SIN[o + n] == 0.0
+        assert np.max(np.abs(R._COS[o : o + n + 1] - np.cos(t))) < 1e-15
+        assert np.max(np.abs(R._SIN[o : o + n + 1] - np.sin(t))) < 1e-15
+        assert R._SIN[o] == 0.0 and R._SIN[o + n] == 0.0
 
 
 def test_polynomial_sine_and_cosine():
     t = np.linspace(-math.pi / 2, math.pi / 2, 2001)
-    got = np.array([K._sincos(x) for x in t])
+    got = np.array([R._sincos(x) for x in t])
     assert np.max(np.abs(got[:, 0] - np.cos(t))) < 4e-16
     assert np.max(np.abs(got[:, 1] - np.sin(t))) < 4e-16
 
@@ -295,7 +296,7 @@ def test_every_rule_as_plain_python():
     states = [(bn, LAW[law], cx, cy) for bn, law, (cx, cy) in RULE_STATES.values()]
     code = (
         "import json, sys\n"
-        "from slidespin import _kernel as K\n"
+        "from slidespin.contact import _kernel_ellipse as K\n"
         "out = []\n"
         f"for bn, law, cx, cy in {states!r}:\n"
         "    xg, yg = (0.12, -0.08 * bn) if law == 1 else (0.0, 0.0)\n"
@@ -312,5 +313,5 @@ def test_every_rule_as_plain_python():
     for (bn, law, cx, cy), got in zip(states, json.loads(r.stdout)):
         name = [k for k, v in LAW.items() if v == law][0]
         want, _, method, _ = kernel(bn, name, cx, cy)
-        assert K.METHOD_NAMES[got[3]] == method
+        assert R.METHOD_NAMES[got[3]] == method
         assert np.allclose(got[:3], want, atol=1e-13, rtol=0)

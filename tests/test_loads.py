@@ -20,9 +20,10 @@ from scipy.integrate import quad
 from scipy.optimize import brentq
 
 import slidespin as ss
-from slidespin.motion.loaded import simulate_loaded
 from slidespin.contact.incline import Incline
+from slidespin.motion.loaded import simulate_loaded
 from slidespin.motion.loads import Load, applied_wrench
+from slidespin.studies.load_tables import load_from_table
 
 G = 9.81
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -393,7 +394,7 @@ def _off_centre_pushes():
         [0.0, 1.0, 2.0], [0.0, 5.0, 0.0], [0.0, 0.0, 0.0], at=(0.0, 0.02)
     )
     written = Load(force=lambda t: (5.0 * max(0.0, 1.0 - abs(t - 1.0)), 0.0), at=(0.0, 0.02))
-    table = ss.loads.load_from_table(
+    table = load_from_table(
         {
             "times": [0.0, 1.0, 2.0],
             "profile_fx": [0.0, 5.0, 0.0],
@@ -485,7 +486,7 @@ def test_a_profile_that_reaches_the_threshold_at_a_kink_or_stays_on_it():
 def test_an_integrator_that_gives_up_ends_the_run_with_a_status(monkeypatch):
     """An integrator failure (forced here) ends the run with status "step_too_small", the
     values as reached and the integrator's message, in the slow start and in a slip."""
-    import slidespin.motion.loaded as lo
+    import slidespin.motion._stick_slip as lo
 
     real = lo.solve_ivp
 

@@ -16,6 +16,7 @@ import pytest
 from scipy.integrate import quad_vec
 
 import slidespin as ss
+from slidespin.contact.wrench import footprint_wrench
 from footprint_reference import (
     _breaks,
     _ray_intervals,
@@ -24,7 +25,7 @@ from footprint_reference import (
     reference_wrench,
     regions_of,
 )
-from slidespin.contact import statics
+from slidespin.contact import static_set, statics
 from slidespin.contact.limit_surface import limit_surface
 from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
 from slidespin.motion.loaded import simulate_loaded
@@ -157,7 +158,7 @@ def test_limit_surface_of_a_polygon_equals_its_wrenches():
     body = ss.Body(POLY, ss.LinearPressure(0.08, 0.035), mass=0.7)
     fr = ss.FrictionTensor(0.3, 0.4, 0.05)
     ls = limit_surface(body, fr, n=40, phi=0.2)
-    w = ss.footprint_wrench(
+    w = footprint_wrench(
         POLY, ss.LinearPressure(0.08, 0.035), fr, ls.vx, ls.vy, ls.omega, 0.2, load=0.7 * G
     )
     assert np.array_equal(ls.force_x, w.force_x)
@@ -258,7 +259,7 @@ def _law(pressure):
 def test_support_function_anisotropic(patch, pressure, friction, d):
     body = ss.Body(patch, pressure, mass=2.0)
     phi = 0.35
-    h, point = statics.support_function(body, friction, d, phi)
+    h, point = static_set.support_function(body, friction, d, phi)
     h_ref, point_ref = reference_support(patch, _law(pressure), friction, d, phi, 2.0 * G)
     scale = 2.0 * G * friction.norm
     assert abs(h - h_ref) < 1e-9 * scale * (abs(d[0]) + abs(d[1]) + abs(d[2]) * patch.extent)
@@ -271,7 +272,7 @@ def test_support_function_pure_force_direction():
     # d_M = 0: h = P |𝔽ᵀ d_F| whatever the footprint
     fr = ss.FrictionTensor(0.3, 0.5, 0.1, "plane", 0.2)
     body = ss.Body(SUPPORT_CASES[2][0], ss.UniformPressure(), mass=2.0)
-    h, _ = statics.support_function(body, fr, (0.6, -0.8, 0.0), 0.3)
+    h, _ = static_set.support_function(body, fr, (0.6, -0.8, 0.0), 0.3)
     assert h == pytest.approx(2.0 * G * np.linalg.norm(fr.matrix.T @ (0.6, -0.8)), rel=1e-13)
 
 

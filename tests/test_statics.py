@@ -19,7 +19,8 @@ from scipy.integrate import dblquad, quad
 from scipy.optimize import minimize_scalar
 
 import slidespin as ss
-from slidespin.contact.statics import OnsetNotFound, can_stick, load_factor, onset, support_function
+from slidespin.contact.static_set import support_function
+from slidespin.contact.statics import OnsetNotFound, can_stick, load_factor, onset
 from slidespin.contact.incline import Incline
 
 G = 9.81

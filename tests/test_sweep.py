@@ -13,7 +13,10 @@ import numpy as np
 import pytest
 
 import slidespin as ss
-from slidespin.studies.sweep import SweepError, load_spec, read_sweep, sweep
+from slidespin.studies.sweep import sweep
+from slidespin.studies.sweep_parse import load_spec
+from slidespin.studies.sweep_read import read_sweep
+from slidespin.studies.sweep_spec import SweepError
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 

@@ -29,16 +29,12 @@ from slidespin import (
     State,
     UniformPressure,
 )
-from slidespin.motion import simulate
-from slidespin.studies.sweep import (
-    CHUNK_COLUMNS,
-    SweepError,
-    chunk_columns,
-    load_spec,
-    read_sweep,
-    sweep,
-    to_pandas,
-)
+from slidespin.motion.simulate import simulate
+from slidespin.studies.sweep import sweep
+from slidespin.studies.sweep_chunk import CHUNK_COLUMNS, chunk_columns
+from slidespin.studies.sweep_parse import load_spec
+from slidespin.studies.sweep_read import read_sweep, to_pandas
+from slidespin.studies.sweep_spec import SweepError
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 G = 9.81

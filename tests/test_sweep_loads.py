@@ -15,14 +15,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from slidespin.studies.sweep import (
-    SweepError,
-    SweepResult,
-    load_spec,
-    read_sweep,
-    split_unconverged,
-    sweep,
-)
+from slidespin.studies.sweep import SweepResult, sweep
+from slidespin.studies.sweep_parse import load_spec
+from slidespin.studies.sweep_read import read_sweep, split_unconverged
+from slidespin.studies.sweep_spec import SweepError
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 G = 9.81

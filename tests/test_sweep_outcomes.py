@@ -19,15 +19,13 @@ import numpy as np
 import pytest
 
 from slidespin.cli.main import main
-from slidespin.studies import sweep as sw
-from slidespin.studies.sweep import (
-    SweepError,
-    count_outcomes,
-    load_spec,
-    read_sweep,
-    split_unconverged,
-    sweep,
-)
+from slidespin.studies import sweep_chunk as sw
+from slidespin.studies import sweep_store as store
+from slidespin.studies.sweep import sweep
+from slidespin.studies.sweep_parse import load_spec
+from slidespin.studies.sweep_read import read_sweep, split_unconverged
+from slidespin.studies.sweep_spec import SweepError
+from slidespin.studies.sweep_store import count_outcomes
 
 
 class FakeResults:
@@ -212,7 +210,7 @@ def test_resume_keeps_sound_chunks(tmp_path, fake):
 HOLD = """
 import sys, time
 from pathlib import Path
-from slidespin.studies.sweep import _Lock
+from slidespin.studies.sweep_store import _Lock
 with _Lock(Path(sys.argv[1])):
     print("locked", flush=True)
     time.sleep(60)
@@ -259,7 +257,7 @@ def test_lock_of_a_live_process_on_this_host_is_respected(tmp_path, fake):
 def test_failed_chunk_write_is_reported_and_resumable(
     tmp_path, fake, monkeypatch, capsys, code, words
 ):
-    real = sw._parquet_write
+    real = store._parquet_write
 
     def failing(table, path):
         if ".chunk-000001.parquet" in str(path):
@@ -267,7 +265,7 @@ def test_failed_chunk_write_is_reported_and_resumable(
             raise OSError(code, os.strerror(code), str(path))
         real(table, path)
 
-    monkeypatch.setattr(sw, "_parquet_write", failing)
+    monkeypatch.setattr(store, "_parquet_write", failing)
     spec = write_spec(tmp_path, grid_spec())
     out = tmp_path / "s"
     assert main(["sweep", str(spec), "--out", str(out), "--quiet"]) == 2
@@ -280,7 +278,7 @@ def test_failed_chunk_write_is_reported_and_resumable(
     assert not (out / ".lock").exists()
     man = json.loads((out / "manifest.json").read_text())
     assert man["chunks_done"] == [0] and not man["complete"]
-    monkeypatch.setattr(sw, "_parquet_write", real)
+    monkeypatch.setattr(store, "_parquet_write", real)
     assert main(["sweep", str(spec), "--out", str(out), "--resume", "--quiet"]) == 1
     assert len(read_sweep(out, include_unconverged=True)["case_id"]) == 12
 

@@ -12,7 +12,7 @@ import pytest
 matplotlib.use("Agg")
 
 from slidespin.cli.main import main  # noqa: E402
-from slidespin.viz.plotting import axis_label, plot_sweep  # noqa: E402
+from slidespin.viz.sweep_plot import axis_label, plot_sweep  # noqa: E402
 
 MU = np.array([0.0, 0.1, 0.2])
 ISTAR = np.array([0.2, 0.5, 0.8, 1.1])
@@ -164,7 +164,7 @@ SPEC = (
 
 @pytest.fixture
 def sweep_dir(tmp_path, monkeypatch):
-    from slidespin.studies import sweep as sw
+    from slidespin.studies import sweep_chunk as sw
     from test_sweep_outcomes import fake_engine
 
     monkeypatch.setattr(sw, "simulate_cases", fake_engine)

@@ -24,16 +24,15 @@ from slidespin import (
     UniformPressure,
     friction_wrench,
 )
-from slidespin.analysis.terminal import (
+from slidespin.analysis.intervals import (
     circle_terminal_ratio,
     inertia_for_ratio,
     inertia_intervals,
     paper_inertia_intervals,
-    phase_portrait,
-    terminal_ratio,
-    terminal_states,
 )
-from slidespin.motion import simulate
+from slidespin.analysis.phase_portrait import phase_portrait
+from slidespin.analysis.terminal import terminal_ratio, terminal_states
+from slidespin.motion.simulate import simulate
 
 ELLIPSE = Ellipse.from_eccentricity(1.0, 0.866)
 FR = FrictionTensor(0.42, 0.54)

@@ -1,4 +1,4 @@
-"""Terminal motion: how the body stops (paper eq. 14–16, appendix Table 2; MODEL §5–6).
+"""Terminal motion: how the body stops (paper eq. 14–16; MODEL §5–6).
 
 Near the stop the wrench depends only on the direction of motion, so the direction
 
@@ -23,12 +23,9 @@ What is here
 :func:`terminal_states`
     The true terminal motions at a frozen orientation φ: every fixed point of the sphere flow,
     its kind (``mixed``, ``pure_sliding``, ``pure_spinning``) and whether it attracts.
-:func:`inertia_intervals`, :func:`paper_inertia_intervals`, :func:`inertia_for_ratio`,
-:func:`circle_terminal_ratio`
-    Table 2 (circular patch, orthotropic friction): the inertia ratios I₁ < I₂ < I₃ at which
-    the ending changes, from J(β) = β M_Cζ/F_τ at ϑ = 0 (MODEL §6), and the printed formulas.
-:func:`phase_portrait`
-    Trajectories in the (a ω, v) plane from many initial states, with the terminal ratios.
+
+Table 2 (circular patch, orthotropic friction) is in :mod:`slidespin.analysis.intervals`;
+trajectories in the (a ω, v) plane in :mod:`slidespin.analysis.phase_portrait`.
 
 Departures from the paper: the paper solves eq. 16 with ϑ* = 0 imposed ("zero for orthotropic
 friction") and reports that root as the terminal ratio. For an ellipse turned by φ ≠ 0, π/2
@@ -41,67 +38,27 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq, root
 
 from slidespin import _validate as v
+from slidespin.analysis._natural import _WRENCH_TOL, _fp_world, _missed, _params, _wrench_nat
 from slidespin.contact import _engine
-from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_array, wrench_world
-from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
-from slidespin.contact._kernel_footprint import wrench_world as fp_wrench_world
+from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_array
 from slidespin.contact.body import Body, check_body_friction
-from slidespin.contact.ellipse import Circle
 from slidespin.contact.friction import FrictionTensor
-from slidespin.contact.pressure import (
-    BoussinesqPressure,
-    HertzPressure,
-    LinearPressure,
-    PressureLaw,
-    UniformPressure,
-)
-from slidespin.motion import _ode
-from slidespin.motion.state import State
+from slidespin.contact.pressure_map import symmetry
 
-if TYPE_CHECKING:
-    from slidespin.contact.shapes import Annulus
+__all__ = ["terminal_ratio", "terminal_states", "TerminalState"]
 
-__all__ = [
-    "terminal_ratio",
-    "terminal_states",
-    "TerminalState",
-    "inertia_intervals",
-    "paper_inertia_intervals",
-    "InertiaIntervals",
-    "inertia_for_ratio",
-    "circle_terminal_ratio",
-    "phase_portrait",
-    "PhasePortrait",
-]
-
-_WRENCH_TOL = 1e-13  # absolute target of the wrench quadrature (units of m g and m g a)
 _FP_TOL = 1e-9  # |du/dτ| below which a refined point is accepted as a fixed point
 
 
 # ------------------------------------------------------------------------------------------
-# input checks and the compiled wrench in natural units (a = m = g = 1)
+# input checks and the sphere flow in natural units (a = m = g = 1)
 # ------------------------------------------------------------------------------------------
-_check_body_friction = check_body_friction
-
-
-def _missed(par) -> str:
-    """Message of the quadrature guard: only reached by a bug, since every input is checked."""
-    return (
-        f"terminal: the wrench quadrature missed its error target {_WRENCH_TOL:g} (b/a = "
-        f"{par[_engine.P_BN]!r}, tensor [[{par[_engine.P_T00]!r}, {par[_engine.P_T01]!r}], "
-        f"[{par[_engine.P_T10]!r}, {par[_engine.P_T11]!r}]], law {int(par[_engine.P_LAW])}); every input "
-        "is inside its valid range (docs/errors.md), so this is a bug in slidespin: please "
-        "report it"
-    )
-
-
 def _check_bracket(bracket, a: float) -> tuple[float, float]:
     """(lo, hi) of a β bracket [m], each in [1e-9 a, 1e9 a], lo < hi."""
     lo_r, hi_r = v.RATIO
@@ -115,56 +72,6 @@ def _check_bracket(bracket, a: float) -> tuple[float, float]:
     if not lo < hi:
         raise ValueError(f"bracket = ({lo!r}, {hi!r}) m is invalid; valid values: lo < hi")
     return lo, hi
-
-
-class _Par(np.ndarray):
-    """The engine's parameter vector, carrying the footprint arrays (``fp``: (edges, circles,
-    geo) in natural units, or None for an ellipse) to the wrench wrappers below."""
-
-    fp = None
-
-
-def _params(body, friction, tol=_WRENCH_TOL):
-    """:meth:`slidespin.Body.engine_params` as one :class:`_Par` (natural units, ℓ = 1)."""
-    par, fe, fc, geo = body.engine_params(friction, tol)
-    p = par.view(_Par)
-    p.fp = (fe, fc, geo) if body.is_footprint else None
-    return p
-
-
-def _fp_world(par, phi, vx, vy, omega):
-    """(Fx, Fy, M) per unit load on a footprint (exact kernel), arrays or scalars."""
-    fe, fc, geo = par.fp
-    args = (
-        fe,
-        fc,
-        geo,
-        par[_engine.P_T00],
-        par[_engine.P_T01],
-        par[_engine.P_T10],
-        par[_engine.P_T11],
-        par[_engine.P_BODY] != 0.0,
-    )
-    if np.ndim(vx) == 0:
-        return fp_wrench_world(*args, float(phi), float(vx), float(vy), float(omega))
-    return fp_wrench_array(*args, phi, vx, vy, omega)
-
-
-def _wrench_nat(par, phi, vx, vy, omega):
-    """(Fx, Fy, M) per unit load, a = 1, for a velocity of G (vx, vy) and spin ω."""
-    if getattr(par, "fp", None) is not None:
-        return _fp_world(par, phi, vx, vy, omega)
-    fx, fy, m, st = wrench_world(
-        *_engine.elliptic_args(par),
-        phi,
-        vx,
-        vy,
-        omega,
-        _WRENCH_TOL,
-    )
-    if st != STATUS_OK or not (math.isfinite(fx) and math.isfinite(fy) and math.isfinite(m)):
-        raise RuntimeError(_missed(par))  # pragma: no cover - guard
-    return fx, fy, m
 
 
 def _acc(par, phi, u):
@@ -271,7 +178,7 @@ def terminal_ratio(
     >>> round(terminal_ratio(disk, FrictionTensor(0.3, 0.3), phi=0.0), 3)  # published 0.653
     0.653
     """
-    _check_body_friction(body, friction)
+    check_body_friction(body, friction)
     phi = v.finite("phi", phi)
     theta = v.finite("theta", theta)
     par = _params(body, friction)
@@ -461,8 +368,6 @@ def _rotationally_symmetric(body, friction) -> bool:
     footprint: a centred disk or ring under uniform pressure
     (:func:`slidespin.contact.pressure_map.symmetry`)."""
     if body.is_footprint:
-        from slidespin.contact.pressure_map import symmetry
-
         return bool(symmetry(body.patch, body.pressure)[1] and friction.fx == friction.fy)
     patch = body.patch
     centred = body.mass_centre == (0.0, 0.0)
@@ -637,7 +542,7 @@ def terminal_states(body: Body, friction: FrictionTensor, phi: float) -> tuple[T
     >>> best.ending, round(best.beta_ratio, 3), round(best.theta, 6) + 0.0
     ('mixed', 0.637, 0.0)
     """
-    _check_body_friction(body, friction)
+    check_body_friction(body, friction)
     phi = v.finite("phi", phi)
     par = _params(body, friction)
     a_len = body.length_unit
@@ -665,418 +570,3 @@ def terminal_states(body: Body, friction: FrictionTensor, phi: float) -> tuple[T
         return (0 if s.stable else 1, spin_first, th)
 
     return tuple(sorted(states, key=key))
-
-
-# ------------------------------------------------------------------------------------------
-# Table 2: circular patch, orthotropic friction
-# ------------------------------------------------------------------------------------------
-class InertiaIntervals(NamedTuple):
-    """Boundaries I₁ < I₂ < I₃ of the dimensionless inertia I* = I/(m a²) (paper Table 2).
-
-    I* in (0, I₁): the spin dies first (ω/v → 0, ``pure_sliding``); (I₁, I₂): v = k a ω with
-    k > 1; (I₂, I₃): k < 1 (both ``mixed``); (I₃, ∞): the sliding dies first (v/ω → 0,
-    ``pure_spinning``).
-    """
-
-    i1: float
-    i2: float
-    i3: float
-
-    def regime(self, inertia_ratio: float) -> int:
-        """Row of Table 2 (1–4) that contains ``inertia_ratio``."""
-        x = v.positive("inertia_ratio", inertia_ratio)
-        return 1 + int(x > self.i1) + int(x > self.i2) + int(x > self.i3)
-
-    def ending(self, inertia_ratio: float) -> str:
-        """Ending for ``inertia_ratio``: ``pure_sliding``, ``mixed`` or ``pure_spinning``."""
-        return {1: "pure_sliding", 2: "mixed", 3: "mixed", 4: "pure_spinning"}[
-            self.regime(inertia_ratio)
-        ]
-
-
-_TABLE2_LAWS = (UniformPressure, BoussinesqPressure, HertzPressure)
-
-
-def _check_table2(pressure, friction):
-    if isinstance(pressure, LinearPressure):
-        if pressure.centroid != (0.0, 0.0):
-            raise ValueError(
-                f"pressure = {pressure!r} is invalid for Table 2; valid values: a law "
-                "symmetric about the centre (UniformPressure(), BoussinesqPressure(), "
-                "HertzPressure(), or LinearPressure(0, 0))"
-            )
-    elif not isinstance(pressure, _TABLE2_LAWS):
-        raise ValueError(
-            f"pressure = {pressure!r} is invalid; valid values: UniformPressure(), "
-            "BoussinesqPressure(), HertzPressure()"
-        )
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
-    if friction.f != 0.0:
-        raise ValueError(
-            f"friction.f = {friction.f!r} is invalid for Table 2; valid range: 0 (orthotropic "
-            "friction, paper eq. 17)"
-        )
-    if friction.angle != 0.0:
-        raise ValueError(
-            f"friction.angle = {friction.angle!r} is invalid for Table 2; valid range: 0 "
-            "(principal axes along OX, OY)"
-        )
-    if friction.mu < 0.0:
-        raise ValueError(
-            f"mu = fy - fx = {friction.mu!r} is invalid for Table 2; valid range: >= 0 "
-            "(fx is the lower coefficient; swap fx and fy)"
-        )
-
-
-def _circle_params(pressure, friction, patch=None):
-    """Engine parameters of the round patch of Table 2 in units of its radius: the unit
-    Circle, or a centred Disk or Annulus (scaled to outer radius 1)."""
-    if patch is None or isinstance(patch, Circle):
-        body = Body(Circle(1.0), pressure, 1.0)
-        return _params(body, friction)
-    from slidespin.contact.pressure_map import symmetry
-    from slidespin.contact.shapes import Annulus, Disk, is_footprint
-
-    if isinstance(patch, Disk) and not Body(patch, pressure, 1.0).is_footprint:
-        # a Disk under Boussinesq or Hertz pressure is a circle for the engine (G at its centre)
-        return _params(Body(Circle(1.0), pressure, 1.0), friction)
-    ok = isinstance(patch, Annulus) and is_footprint(patch)
-    if ok:
-        ring = Annulus(patch.inner_radius / patch.outer_radius, 1.0)
-        body = Body(ring, pressure, 1.0)
-        ok = symmetry(ring, pressure)[1] and patch.centre == (0.0, 0.0)
-    if not ok:
-        raise ValueError(
-            f"patch = {patch!r} is invalid for Table 2; valid values: None or a Circle, or a "
-            "centred Disk or Annulus under uniform pressure (an axisymmetric footprint), or a "
-            "Disk under Boussinesq or Hertz pressure"
-        )
-    return _params(body, friction)
-
-
-def _j_values(par, beta):
-    """J(β) = β M_Cζ/F_τ at ϑ = 0, φ = 0, ω = 1 for an array of β (units of a)."""
-    beta = np.ascontiguousarray(np.ravel(beta), dtype=float)
-    n = beta.size
-    if getattr(par, "fp", None) is not None:
-        fx, fy, m = _fp_world(par, np.zeros(n), beta, np.zeros(n), np.ones(n))
-        return beta * (-m) / (-fx)
-    fx, fy, m, st = wrench_array(
-        *_engine.elliptic_args(par),
-        np.zeros(n),
-        beta,
-        np.zeros(n),
-        np.ones(n),
-        _WRENCH_TOL,
-    )
-    if (st != STATUS_OK).any() or not np.all(np.isfinite(fx + fy + m)):
-        raise RuntimeError(_missed(par))  # pragma: no cover - guard
-    return beta * (-m) / (-fx)
-
-
-def inertia_for_ratio(
-    pressure: PressureLaw,
-    friction: FrictionTensor,
-    ratio: ArrayLike,
-    patch: Circle | Annulus | None = None,
-) -> float | NDArray[np.float64]:
-    """J(β): the inertia ratio I* whose terminal ratio is β = v/(a ω) (circle, MODEL §6).
-
-    Parameters
-    ----------
-    pressure : UniformPressure, BoussinesqPressure or HertzPressure
-        Pressure law on the circular patch.
-    friction : FrictionTensor
-        Orthotropic tensor (f = 0, angle 0) with fx ≤ fy; the terminal velocity is along the
-        low-friction axis OX (ϑ* = 0).
-    ratio : float or array_like
-        β/a = v/(a ω), in [1e-9, 1e9].
-    patch : Circle, Disk or Annulus, optional
-        The round patch (default a circle); a centred ``Annulus`` under uniform pressure
-        gives the ring's J(β), with a its outer radius.
-
-    Returns
-    -------
-    float or ndarray
-        J(β) = β M_Cζ(β)/F_τ(β) at ϑ = 0 (eq. 15–16 solved for I*).
-    """
-    _check_table2(pressure, friction)
-    arr = v.real_array("ratio", ratio, *v.RATIO)
-    out = _j_values(_circle_params(pressure, friction, patch), arr).reshape(arr.shape)
-    return float(out) if out.ndim == 0 else out
-
-
-def _richardson(values, factor):
-    """Two Richardson steps for an expansion in h², h⁴ sampled at h, h/q, h/q² (q = factor)."""
-    j0, j1, j2 = values
-    q2 = factor * factor
-    r1 = (q2 * j1 - j0) / (q2 - 1.0)
-    r2 = (q2 * j2 - j1) / (q2 - 1.0)
-    q4 = q2 * q2
-    return (q4 * r2 - r1) / (q4 - 1.0)
-
-
-def inertia_intervals(
-    pressure, friction: FrictionTensor, patch: Circle | Annulus | None = None
-) -> InertiaIntervals:
-    """Boundaries (I₁, I₂, I₃) of Table 2, computed numerically from J(β) (MODEL §6).
-
-    Parameters
-    ----------
-    pressure : UniformPressure, BoussinesqPressure, HertzPressure or Body
-        Pressure law on a circular patch; or a ``Body`` on a circle, disk or centred ring
-        (its law and patch are used; ``patch`` must then be None).
-    friction : FrictionTensor
-        Orthotropic friction (f = 0, principal axes along OX, OY) with μ = fy − fx ≥ 0.
-    patch : Circle, Disk or Annulus, optional
-        The round patch: a circle by default; a centred ``Annulus(r, R)`` (or ``Disk``)
-        under uniform pressure gives the ring's boundaries, with I* = I/(m R²). For isotropic
-        friction they are I₁ = (R² + r²)/(4R²), I₃ = (2/3)(R² + Rr + r²)/R² (from the
-        small- and large-β limits of the wrench), and a thin ring has I₂ → 1 (MODEL §10).
-
-    Returns
-    -------
-    InertiaIntervals
-        I₁ = J(∞), I₂ = J(1), I₃ = J(0⁺).
-
-    Notes
-    -----
-    J(β) = β M_Cζ/F_τ at ϑ = 0 is evaluated with the compiled wrench (absolute error 1e-13).
-    J(β) − I₁ = O(β⁻²) and J(β) − I₃ = O(β²), so both limits are Richardson-extrapolated
-    from β = 100, 200, 400 and β = 1e-2, 5e-3, 2.5e-3 (error below 1e-10). The paper's
-    appendix gives closed forms (:func:`paper_inertia_intervals`); no formula is used here.
-
-    Examples
-    --------
-    >>> from slidespin import UniformPressure, FrictionTensor
-    >>> [round(x, 6) for x in inertia_intervals(UniformPressure(), FrictionTensor(0.3, 0.3))]
-    [0.25, 0.333333, 0.666667]
-    """
-    from slidespin.contact.body import Body
-
-    if isinstance(pressure, Body):  # inertia_intervals(body, friction), like its siblings
-        if patch is not None:
-            raise ValueError(
-                f"patch = {patch!r} is invalid with a Body; valid values: None (the body's "
-                "own patch)"
-            )
-        body = pressure
-        pressure, patch = body.pressure, body.patch  # type: ignore[assignment]
-    _check_table2(pressure, friction)
-    par = _circle_params(pressure, friction, patch)
-    big = _j_values(par, np.array([100.0, 200.0, 400.0]))
-    small = _j_values(par, np.array([1e-2, 5e-3, 2.5e-3]))
-    i2 = float(_j_values(par, np.array([1.0]))[0])
-    return InertiaIntervals(float(_richardson(big, 2.0)), i2, float(_richardson(small, 2.0)))
-
-
-def paper_inertia_intervals(pressure: PressureLaw, friction: FrictionTensor) -> InertiaIntervals:
-    """Boundaries (I₁, I₂, I₃) from the formulas printed in the paper's Table 2.
-
-    ======================  ==================  ======================  ================
-    law                     I₁                  I₂                      I₃
-    ======================  ==================  ======================  ================
-    uniform                 (fx+μ)/(4fx)        (5fx+4μ)/(15fx)         (2fx+μ)/(3fx)
-    Boussinesq              (fx+μ)/(3fx)        (4fx+3μ)/(8fx)          (2fx+μ)/(2fx)
-    Hertz                   (fx+μ)/(5fx)        (6fx+5μ)/(24fx)         (2fx+μ)/(4fx)
-    ======================  ==================  ======================  ================
-
-    Notes
-    -----
-    The uniform law's row 1 is printed "(0, (fx+μ)) / (4fx)"; the parenthesis is restored
-    here (MODEL §7, erratum 9).
-    """
-    _check_table2(pressure, friction)
-    fx, mu = friction.fx, friction.mu
-    if isinstance(pressure, (UniformPressure, LinearPressure)):
-        vals = ((fx + mu) / (4 * fx), (5 * fx + 4 * mu) / (15 * fx), (2 * fx + mu) / (3 * fx))
-    elif isinstance(pressure, BoussinesqPressure):
-        vals = ((fx + mu) / (3 * fx), (4 * fx + 3 * mu) / (8 * fx), (2 * fx + mu) / (2 * fx))
-    else:
-        vals = ((fx + mu) / (5 * fx), (6 * fx + 5 * mu) / (24 * fx), (2 * fx + mu) / (4 * fx))
-    return InertiaIntervals(*vals)
-
-
-def circle_terminal_ratio(
-    pressure: PressureLaw,
-    friction: FrictionTensor,
-    inertia_ratio: float,
-    patch: Circle | Annulus | None = None,
-) -> float:
-    """Terminal ratio k = v/(a ω) of a circular patch with inertia ratio I* (J⁻¹, MODEL §6).
-
-    Returns ``inf`` for I* ≤ I₁ (pure sliding) and ``0.0`` for I* ≥ I₃ (pure spinning);
-    otherwise the root of J(k) = I*, along the low-friction axis (ϑ* = 0). ``inertia_ratio``
-    must lie in [1e-8, 1e8], the range of :class:`slidespin.Body`. ``patch``: as in
-    :func:`inertia_intervals` (a centred ring gives v/(R ω)).
-
-    Examples
-    --------
-    >>> from slidespin import UniformPressure, FrictionTensor
-    >>> round(circle_terminal_ratio(UniformPressure(), FrictionTensor(0.2, 0.2), 0.5), 3)
-    0.653
-    """
-    _check_table2(pressure, friction)
-    i_star = v.bounded("inertia_ratio", inertia_ratio, *v.INERTIA_RATIO)
-    par = _circle_params(pressure, friction, patch)
-
-    def g(log_beta):
-        return float(_j_values(par, np.array([math.exp(log_beta)]))[0]) - i_star
-
-    lo, hi = math.log(1e-7), math.log(1e7)
-    glo, ghi = g(lo), g(hi)
-    if glo <= 0.0:
-        return 0.0
-    if ghi >= 0.0:
-        return math.inf
-    return math.exp(brentq(g, lo, hi, xtol=1e-14, rtol=1e-15, maxiter=300))
-
-
-# ------------------------------------------------------------------------------------------
-# phase portrait
-# ------------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class PhasePortrait:
-    """Trajectories of one body in the (a ω, v) plane, converging on its terminal ratios.
-
-    Attributes
-    ----------
-    body, friction : Body, FrictionTensor
-        The system.
-    spin : tuple of ndarray
-        a ω(t) [m/s] along each trajectory (a: semi-axis along ξ).
-    speed : tuple of ndarray
-        v(t) [m/s] along each trajectory.
-    beta_stop : ndarray
-        Terminal ratio β*/a of each trajectory (inf: pure sliding, 0: pure spinning).
-    endings : tuple of str
-        Ending of each trajectory.
-    terminal : tuple of TerminalState
-        Fixed points at the initial body angle (the rays v = β* ω of the portrait).
-    phi, theta : float
-        Initial body angle and direction of the velocity [rad].
-    """
-
-    body: Body
-    friction: FrictionTensor
-    spin: tuple[NDArray[np.float64], ...]
-    speed: tuple[NDArray[np.float64], ...]
-    beta_stop: NDArray[np.float64]
-    endings: tuple[str, ...]
-    terminal: tuple[TerminalState, ...]
-    phi: float
-    theta: float
-
-
-def _dense_curve(par, y0, s_end, points):
-    """(u, s) sampled evenly in the regularised time τ from y0 until s = s_end (MODEL §5).
-
-    Integrates the compiled right-hand side of :mod:`slidespin.motion._ode` with scipy's DOP853 and
-    its dense output; used only to draw smooth curves (the stop itself comes from simulate).
-    """
-    from scipy.integrate import solve_ivp
-
-    out = np.empty(_ode.NY)
-    fe, fc, geo = par.fp if getattr(par, "fp", None) is not None else _engine.no_footprint()
-    plain = np.asarray(par).copy()
-
-    def f(tau, y):
-        _ode.rhs(plain, fe, fc, geo, y, out)
-        return out.copy()
-
-    def reached(tau, y):
-        return y[3] - math.log(s_end)
-
-    reached.terminal = True
-    sol = solve_ivp(
-        f, (0.0, 1e4), y0, method="DOP853", rtol=1e-9, atol=1e-12, dense_output=True, events=reached
-    )
-    tau = np.linspace(0.0, sol.t[-1], points)
-    y = sol.sol(tau)
-    u = y[:3] / np.linalg.norm(y[:3], axis=0)
-    return u, np.exp(y[3])
-
-
-def phase_portrait(
-    body: Body,
-    friction: FrictionTensor,
-    *,
-    n: int = 13,
-    speed: float = 1.0,
-    phi: float = 0.0,
-    theta: float = 0.0,
-    g: float = 9.81,
-    points: int = 300,
-) -> PhasePortrait:
-    """Simulate ``n`` motions starting on a quarter ellipse of equal kinetic energy.
-
-    The initial states are v₀ = s cos α, k ω₀ = s sin α (k = √(I/m)) for n angles α evenly
-    spaced in (0, π/2), so every ratio v₀/(a ω₀) is represented. Each is integrated to its
-    stop with :func:`slidespin.motion.simulate` (terminal ratio and ending); the curve drawn is the
-    same regularised system sampled densely until s has fallen to 1e-4 of its start, then
-    closed at the origin.
-
-    Parameters
-    ----------
-    body, friction : Body, FrictionTensor
-        The system.
-    n : int, default 13
-        Number of trajectories (1 to 200).
-    speed : float, default 1
-        s = √(v₀² + k² ω₀²) [m/s] in [1e-12, 1e8], the same for every trajectory.
-    phi, theta : float, default 0
-        Initial body angle φ₀ and direction ϑ₀ of the velocity [rad].
-    g : float, default 9.81
-        Gravitational acceleration [m/s²] in [1e-6, 1e6].
-    points : int, default 300
-        Points per curve (10 to 100000).
-
-    Returns
-    -------
-    PhasePortrait
-    """
-    from slidespin.motion.simulate import simulate
-
-    _check_body_friction(body, friction)
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 1 <= n <= 200:
-        raise ValueError(f"n = {n!r} is invalid; valid range: integer in [1, 200]")
-    if (
-        isinstance(points, bool)
-        or not isinstance(points, (int, np.integer))
-        or not 10 <= points <= 100_000
-    ):
-        raise ValueError(f"points = {points!r} is invalid; valid range: integer in [10, 100000]")
-    s0 = v.bounded("speed", speed, 1e-12, v.SPEED, "m/s")
-    phi = v.finite("phi", phi)
-    theta = v.finite("theta", theta)
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    k = body.radius_of_gyration
-    a = body.length_unit
-    par = _params(body, friction, 1e-12)
-    kn = par[_engine.P_K]  # k/a
-    v_unit, t_unit = math.sqrt(a * g), math.sqrt(a / g)
-    spins, speeds, betas, endings = [], [], [], []
-    for i in range(n):
-        alpha = 0.5 * math.pi * (i + 0.5) / n
-        st = State.from_speed(s0 * math.cos(alpha), s0 * math.sin(alpha) / k, theta, phi)
-        tr = simulate(body, friction, st, g=g, rtol=1e-9)
-        betas.append(tr.beta_stop / a if math.isfinite(tr.beta_stop) else tr.beta_stop)
-        endings.append(tr.ending)
-        vxn, vyn, wn = st.vx / v_unit, st.vy / v_unit, st.omega * t_unit
-        sn = math.sqrt(vxn * vxn + vyn * vyn + (kn * wn) ** 2)
-        y0 = np.array([vxn / sn, vyn / sn, kn * wn / sn, math.log(sn), 0.0, 0.0, 0.0, phi, 0.0])
-        u, s = _dense_curve(par, y0, 1e-4 * sn, points - 1)
-        spins.append(np.append(s * u[2] / kn * v_unit, 0.0))  # a ω = (s u₃/k) · a
-        speeds.append(np.append(s * np.hypot(u[0], u[1]) * v_unit, 0.0))
-    return PhasePortrait(
-        body=body,
-        friction=friction,
-        spin=tuple(spins),
-        speed=tuple(speeds),
-        beta_stop=np.array(betas),
-        endings=tuple(endings),
-        terminal=terminal_states(body, friction, phi),
-        phi=phi,
-        theta=theta,
-    )

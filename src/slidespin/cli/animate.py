@@ -13,13 +13,15 @@ from __future__ import annotations
 
 import os
 
+from slidespin._io import check_output_path
+from slidespin.cli.main import CLI_MAX_STEP, DEFAULT_OUT_DIR, _exit_status
+from slidespin.viz.animate import MAX_FPS, MAX_FRAMES, _check_int, animate
+
 __all__ = ["configure", "run"]
 
 
 def configure(parser) -> None:
     """Add the arguments of ``slidespin animate`` to an argparse (sub)parser."""
-    from slidespin.viz.animate import MAX_FPS, MAX_FRAMES
-
     parser.description = (
         "Simulate a case file and write an animated GIF of the body sliding and turning, "
         "with the velocity of G and the instantaneous centre of rotation (Pillow; no ffmpeg)."
@@ -49,14 +51,6 @@ def configure(parser) -> None:
 
 def run(args) -> int:
     """Check the outputs, simulate, draw and write; returns the exit status."""
-    from slidespin.cli.main import (
-        CLI_MAX_STEP,
-        DEFAULT_OUT_DIR,
-        _exit_status,
-        check_output_path,
-    )
-    from slidespin.viz.animate import MAX_FPS, MAX_FRAMES, _check_int
-
     default = args.out is None
     out = args.out
     if default:
@@ -71,9 +65,9 @@ def run(args) -> int:
     _check_int("--fps", args.fps, 1, MAX_FPS)
     _check_int("--frames", args.frames, 2, MAX_FRAMES)
 
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.motion.simulate import simulate
     from slidespin.studies.case import load_case
-    from slidespin.viz.animate import animate
 
     case = load_case(args.case)
     if getattr(case, "loaded", False):

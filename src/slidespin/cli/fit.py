@@ -27,19 +27,24 @@ before any work. This module follows the plugin contract of :mod:`slidespin.cli.
 from __future__ import annotations
 
 import dataclasses
+import io
 import json
+import os
 import sys
 import warnings
 
 import numpy as np
+
+from slidespin import _validate as v
+from slidespin._io import check_figure_path, write_outputs
+from slidespin.analysis.fit import LOSSES, PARAMETERS, _check_free, compare_frames, fit
+from slidespin.analysis.fit_data import CHANNELS, read_runs
 
 __all__ = ["configure", "load_fit_case", "parse_sigma", "plot_fit", "run"]
 
 
 def configure(parser) -> None:
     """Add the arguments of ``slidespin fit`` to an argparse (sub)parser."""
-    from slidespin.analysis.fit import LOSSES, PARAMETERS
-
     parser.description = (
         "Fit friction parameters (and each run's start state) to tracked positions and angles "
         "by least squares, with standard errors, correlations and an identifiability check."
@@ -99,9 +104,6 @@ def configure(parser) -> None:
 
 def parse_sigma(text: str | None) -> dict | None:
     """``"x=1e-3,phi=0.01"`` → ``{'x': 0.001, 'phi': 0.01}`` (validated)."""
-    from slidespin import _validate as v
-    from slidespin.analysis.fit import CHANNELS
-
     if text is None:
         return None
     out = {}
@@ -134,6 +136,7 @@ def load_fit_case(path):
     Returns the :class:`~slidespin.studies.case.Case` (at rest at the origin without ``[initial]``)
     and whether the file had an ``[initial]`` table.
     """
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.studies.case import case_from_dict, read_toml
 
     data = read_toml(path, "case file")
@@ -147,8 +150,6 @@ def load_fit_case(path):
 
 
 def _free(text: str, body):
-    from slidespin.analysis.fit import _check_free
-
     names = tuple(s.strip() for s in text.split(",") if s.strip())
     try:
         return _check_free(names, body)
@@ -158,9 +159,6 @@ def _free(text: str, body):
 
 def run(args) -> int:
     """Run ``slidespin fit``; returns the exit status."""
-    from slidespin.analysis.fit import compare_frames, fit, read_runs
-    from slidespin._io import check_figure_path, write_outputs
-
     if args.plot:
         check_figure_path(args.plot, "--plot")
     sigma = parse_sigma(args.sigma)
@@ -192,9 +190,6 @@ def run(args) -> int:
         print(f"slidespin: warning: {message}", file=sys.stderr)
     files = []
     if args.plot:
-        import io
-        import os
-
         fig = plot_fit(res, labels=labels, title=case.name or None)
         buf = io.BytesIO()
         fig.savefig(buf, format=os.path.splitext(args.plot)[1].lower().lstrip("."), dpi=150)
@@ -230,7 +225,8 @@ def plot_fit(result, labels=None, title=None):
     Panels: the path y(x) of G; φ(t); the position residuals x, y against t [mm]; the angle
     residuals against t [mrad]. Each run has its own colour. Returns the figure.
     """
-    from slidespin.viz.plotting import _plt
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin.viz._mpl import _plt
 
     plt = _plt()
     fig, axes = plt.subplots(2, 2, figsize=(11, 8), constrained_layout=True)

@@ -10,7 +10,13 @@ optionally writes JSON, npz and a 3-D figure. Plugin of :mod:`slidespin.cli.main
 
 from __future__ import annotations
 
+import io
 import json
+import os
+
+import numpy as np
+
+from slidespin._io import check_figure_path, check_output_path, write_outputs
 
 __all__ = ["configure", "run"]
 
@@ -50,7 +56,7 @@ def configure(parser) -> None:
 
 def run(args) -> int:
     """Compute, print and write; returns the exit status."""
-    from slidespin._io import check_figure_path, check_output_path, write_outputs
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.contact.limit_surface import limit_surface
     from slidespin.studies.case import load_case
 
@@ -72,18 +78,11 @@ def run(args) -> int:
     )
     files = []
     if npz:
-        import io
-
-        import numpy as np
-
         buf = io.BytesIO()
         np.savez(buf, **ls.arrays())
         files.append((npz, buf.getvalue()))
     if plot:
-        import io
-        import os
-
-        import matplotlib
+        import matplotlib  # lazy: matplotlib is needed only for --plot
 
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt

@@ -20,11 +20,13 @@ never straight into the working directory.
 from __future__ import annotations
 
 import argparse
+import csv
 import importlib
 import json
 import math
 import os
 import sys
+from pathlib import Path
 
 import numpy as np
 
@@ -36,6 +38,15 @@ from slidespin._io import (
     render_figure,
     write_failure,
     write_outputs,
+)
+
+# the root package is where __version__ is defined (nothing else is imported from it)
+from slidespin._version import __version__
+from slidespin.motion.outcomes import (
+    LOADED_UNCONVERGED,
+    UNCONVERGED,
+    ending_message,
+    status_message,
 )
 
 __all__ = [
@@ -57,7 +68,7 @@ CLI_MAX_STEP = 0.05
 
 # Subcommands living in other modules: each exposes ``configure(parser)`` and ``run(args)``.
 _PLUGINS = (
-    ("reproduce", "slidespin.paper.cli", "reproduce the paper's tables and figures"),
+    ("reproduce", "slidespin.cli.reproduce", "reproduce the paper's tables and figures"),
     ("bench", "slidespin.cli.bench", "benchmark the compiled engine against naive approaches"),
     ("fit", "slidespin.cli.fit", "fit friction parameters to tracked motion (CSV of t, x, y, phi)"),
     (
@@ -78,6 +89,7 @@ ISSUE_URL = "https://github.com/slidespin/slidespin/issues"
 def demo_case():
     """The demo: elliptic plate e = 0.866, a = 0.1 m, uniform pressure, fx = 0.42, fy = 0.54,
     v₀ = 1 m/s, ω₀ = 5 rad/s, ϑ₀ = π/4 (``examples/demo.toml`` describes the same case)."""
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.contact.body import Body
     from slidespin.contact.ellipse import Ellipse
     from slidespin.contact.friction import FrictionTensor
@@ -95,8 +107,6 @@ def demo_case():
 
 
 def _print_summary(case, traj, out) -> None:
-    from slidespin.motion.outcomes import status_message
-
     s = traj.summary()
     a = case.body.length_unit
     unit = "extent" if case.body.is_footprint else "a"
@@ -127,12 +137,11 @@ def _print_summary(case, traj, out) -> None:
 
 def _exit_status(status: str) -> int:
     """0 for a converged or flagged (analytic-limit) stop, 1 for an unconverged one."""
-    from slidespin.motion.outcomes import UNCONVERGED
-
     return 1 if status in UNCONVERGED else 0
 
 
 def _run_case(case, args) -> int:
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.motion.simulate import simulate
 
     # every output path and format first: nothing is computed or written if one is bad
@@ -157,7 +166,7 @@ def _run_case(case, args) -> int:
     if args.csv:
         files.append((args.csv, traj.to_csv().encode("utf-8")))
     if args.plot:
-        from slidespin.viz.plotting import plot_trajectory
+        from slidespin.viz.trajectory_plot import plot_trajectory
 
         fig = plot_trajectory(traj, title=case.name or None)
         files.append((args.plot, render_figure(fig, args.plot)))
@@ -175,6 +184,7 @@ def _run_case(case, args) -> int:
 
 def _run_loaded_case(case, args) -> int:
     """A case with ``[load]``, ``[incline]`` or ``[solver] t_end``: the stick-slip engine."""
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.motion.simulate import simulate
 
     traj = simulate(
@@ -193,7 +203,7 @@ def _run_loaded_case(case, args) -> int:
     if args.csv:
         files.append((args.csv, traj.to_csv().encode("utf-8")))
     if args.plot:
-        from slidespin.viz.plotting import plot_loaded_trajectory
+        from slidespin.viz.trajectory_plot import plot_loaded_trajectory
 
         fig = plot_loaded_trajectory(traj, title=case.name or None)
         files.append((args.plot, render_figure(fig, args.plot)))
@@ -212,8 +222,6 @@ def _run_loaded_case(case, args) -> int:
 def _loaded_summary(traj) -> dict:
     """``LoadedTrajectory.summary()`` with the vocabulary's explanations of its status and
     ending (:mod:`slidespin.motion.outcomes`); a name outside the vocabulary is an internal error."""
-    from slidespin.motion.outcomes import ending_message, status_message
-
     summary = dict(traj.summary())
     try:
         summary["status_message"] = status_message(summary["status"], loaded=True)
@@ -259,8 +267,6 @@ def _phases_text(phases, limit: int = 6) -> str:
 
 def _loaded_exit_status(status: str) -> int:
     """0 for a loaded run that reached its end, 1 for one that ended early."""
-    from slidespin.motion.outcomes import LOADED_UNCONVERGED
-
     return 1 if status in LOADED_UNCONVERGED else 0
 
 
@@ -272,6 +278,7 @@ def _cmd_demo(args) -> int:
 
 
 def _cmd_simulate(args) -> int:
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.studies.case import load_case
 
     args.plot_is_default = False
@@ -279,9 +286,10 @@ def _cmd_simulate(args) -> int:
 
 
 def _cmd_sweep(args) -> int:
-    from pathlib import Path
-
-    from slidespin.studies.sweep import _check_out, connect_dask, load_spec, sweep
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin.studies.sweep import connect_dask, sweep
+    from slidespin.studies.sweep_parse import load_spec
+    from slidespin.studies.sweep_store import _check_out
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"--workers = {args.workers} is invalid; valid range: integer >= 1")
@@ -333,14 +341,13 @@ def _counts_text(counts: dict) -> str:
 
 
 def _unconverged_text(counts: dict) -> str:
-    from slidespin.motion.outcomes import UNCONVERGED
-
     return _counts_text({k: v for k, v in counts.items() if k in UNCONVERGED})
 
 
 def _read_table(args):
     """The sweep table for sweep-read/sweep-plot, and a note on the cases left out."""
-    from slidespin.studies.sweep import read_sweep, split_unconverged
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin.studies.sweep_read import read_sweep, split_unconverged
 
     table = read_sweep(args.dir, include_unconverged=True)
     if not table:
@@ -351,8 +358,6 @@ def _read_table(args):
 
 
 def _cmd_sweep_read(args) -> int:
-    import csv
-
     check_output_path(args.csv, "--csv")
     table, left = _read_table(args)
     names = list(table)
@@ -392,16 +397,14 @@ def _cell(x):
 
 
 def _cmd_sweep_plot(args) -> int:
-    from pathlib import Path
-
-    from slidespin.studies.sweep import _read_manifest
-    from slidespin.viz.plotting import plot_sweep
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin.studies.sweep_read import read_sweep, split_unconverged
+    from slidespin.studies.sweep_store import _read_manifest
+    from slidespin.viz.sweep_plot import plot_sweep
 
     default = args.out is None
     out = args.out or os.path.join(DEFAULT_OUT_DIR, "sweep.png")
     out = check_figure_path(out, "--out", create_parent=default)
-    from slidespin.studies.sweep import read_sweep, split_unconverged
-
     table = read_sweep(args.dir, include_unconverged=True)
     if not table:
         raise ValueError(f"{args.dir!r} holds no finished chunk yet")
@@ -466,8 +469,6 @@ class _Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from slidespin import __version__
-
     parser = _Parser(
         prog="slidespin",
         description="Sliding and spinning of a flat body on a plane under anisotropic dry "

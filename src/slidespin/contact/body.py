@@ -1,8 +1,10 @@
-"""The sliding body and its kinematic state.
+"""The sliding body: its contact patch, pressure law, mass and moment of inertia.
 
 Paper symbols and code names (MODEL §1): m → ``mass``, I → ``moment_of_inertia`` (about the
-vertical axis through the mass centre G), I* = I/(m a²) → ``inertia_ratio``; the state
-(x, y, φ, ẋ, ẏ, φ̇) of paper eq. 3–4 → ``State(x, y, phi, vx, vy, omega)``.
+vertical axis through the mass centre G), I* = I/(m a²) → ``inertia_ratio``. The body lives
+with the contact (not with the motion, whose state is :class:`slidespin.State`): the wrench,
+the static-friction set and the limit surface are functions of the patch, of G above it and
+of the load m g.
 
 Beyond the paper (MODEL §10) the patch may be any footprint of :mod:`slidespin.contact.shapes`
 (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``, ``Pads``) under uniform or linear
@@ -34,6 +36,17 @@ from slidespin.contact.pressure import (
     PressureLaw,
     UniformPressure,
 )
+from slidespin.contact.pressure_map import (
+    PressureMap,
+    footprint_law_error,
+    kernel_geometry,
+    map_scale,
+    pressure_coefficients,
+    round_law,
+    scaled_arrays,
+    symmetry,
+)
+from slidespin.contact.pressure_map import mass_centre as pressure_centroid
 
 __all__ = ["Body", "check_body_friction"]
 
@@ -51,15 +64,16 @@ class Body:
         :mod:`slidespin.contact.shapes` (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``,
         ``Pads``, ``Blade``; MODEL §10). A ``Blade`` works with :func:`slidespin.friction_wrench`
         only: the integrating functions refuse it (``docs/guide/patches.md``).
-    pressure : UniformPressure, LinearPressure, BoussinesqPressure or HertzPressure
+    pressure : UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure or PressureMap
         Normal-pressure law on the patch. The mass centre G lies above the pressure
         centroid: the patch centre (the area centroid of a footprint), or (ξc, ηc) for the
         linear law. Footprints take the uniform and linear laws (the linear law must stay
         ≥ 0 on the footprint); a ``Disk`` also takes ``BoussinesqPressure()`` and
         ``HertzPressure()`` (G at the disk's centre; the body is then the circle of that
         radius, run by the elliptic engine: :attr:`is_footprint` is False); a user
-        ``PressureMap`` works with :func:`slidespin.contact.footprint_wrench` only (no compiled
-        integration).
+        ``PressureMap`` on an area footprint (G at its centroid) works with
+        :func:`slidespin.friction_wrench` only: simulation, statics and terminal analysis need
+        a compiled kernel and refuse it with a ``ValueError``.
     mass : float
         Mass m [kg], in [1e-12, 1e12].
     moment_of_inertia : float or None
@@ -96,13 +110,14 @@ class Body:
                 f"patch = {patch!r} is invalid; valid values: an Ellipse or a Circle, or a "
                 "footprint (Polygon, Rectangle, Disk, Annulus, Pads, Blade)"
             )
-        footprint = _fp.is_footprint(patch) and not _round_law(patch, self.pressure)
+        footprint = _fp.is_footprint(patch) and not round_law(patch, self.pressure)
         if footprint:
-            from slidespin.contact.pressure_map import pressure_coefficients
-
-            if not isinstance(self.pressure, (UniformPressure, LinearPressure)):
-                raise ValueError(_footprint_law_error(patch, self.pressure))
-            pressure_coefficients(patch, self.pressure)  # raises where p < 0
+            if isinstance(self.pressure, PressureMap) and not isinstance(patch, _fp.Blade):
+                map_scale(patch, self.pressure)  # raises for a map < 0, non-finite or zero
+            elif not isinstance(self.pressure, (UniformPressure, LinearPressure)):
+                raise ValueError(footprint_law_error(patch, self.pressure))
+            else:
+                pressure_coefficients(patch, self.pressure)  # raises where p < 0
         elif not isinstance(self.pressure, _LAWS):
             raise ValueError(
                 f"pressure = {self.pressure!r} is invalid; valid values: UniformPressure(), "
@@ -164,7 +179,7 @@ class Body:
         """True if the body runs on the footprint kernel: its patch is a footprint of
         :mod:`slidespin.contact.shapes`, except a ``Disk`` under Boussinesq or Hertz pressure,
         which is a circle and runs on the elliptic engine (False, as for an ellipse)."""
-        return _fp.is_footprint(self.patch) and not _round_law(self.patch, self.pressure)
+        return _fp.is_footprint(self.patch) and not round_law(self.patch, self.pressure)
 
     @property
     def length_unit(self) -> float:
@@ -195,12 +210,10 @@ class Body:
     def mass_centre(self) -> tuple[float, float]:
         """G in the body frame [m] (the pressure centroid)."""
         patch = self.patch
-        if isinstance(patch, _fp.Disk) and _round_law(patch, self.pressure):
+        if isinstance(patch, _fp.Disk) and round_law(patch, self.pressure):
             return (float(patch.centre[0]), float(patch.centre[1]))  # G over the disk's centre
         if not isinstance(patch, Ellipse):
-            from slidespin.contact.pressure_map import mass_centre
-
-            return mass_centre(patch, self.pressure)
+            return pressure_centroid(patch, self.pressure)
         return self.pressure.centroid
 
     def kernel_params(self, friction: FrictionTensor, wrench_tol: float = 1e-12) -> np.ndarray:
@@ -225,11 +238,15 @@ class Body:
         ``par`` carries the shape flag and the symmetry flags of
         :func:`slidespin.contact.pressure_map.symmetry` (MODEL §9–10).
         """
+        if isinstance(self.pressure, PressureMap):
+            raise ValueError(
+                f"pressure = {self.pressure!r} works with friction_wrench only (an adaptive "
+                "quadrature, not a compiled kernel); valid values for simulation, statics and "
+                "terminal analysis: UniformPressure(), LinearPressure(xi_c, eta_c)"
+            )
         t = friction.matrix
         patch = self.patch
         if self.is_footprint and not isinstance(patch, Ellipse):  # the footprint kernel
-            from slidespin.contact.pressure_map import kernel_geometry, scaled_arrays, symmetry
-
             ell = self.length_unit
             arrays = patch.to_arrays()
             sc = scaled_arrays(arrays, ell)
@@ -275,43 +292,6 @@ def _length_unit(patch: Ellipse | _fp.Footprint) -> float:
     """ℓ: the semi-axis a of an ellipse, the extent of a footprint [m] (the radius of a disk,
     its a, whatever the pressure law)."""
     return patch.a if isinstance(patch, Ellipse) else float(patch.extent)
-
-
-def _round_law(patch: object, pressure: object) -> bool:
-    """A ``Disk`` under the Boussinesq or Hertz law: a circle, for the elliptic engine."""
-    return isinstance(patch, _fp.Disk) and isinstance(pressure, (BoussinesqPressure, HertzPressure))
-
-
-def _footprint_law_error(patch, pressure) -> str:
-    """The message for a pressure law a footprint does not take (MODEL §10)."""
-    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
-        law = type(pressure).__name__
-        if isinstance(patch, _fp.Pads):
-            why = (
-                "on Pads the pads' load shares are not determined by the law; give "
-                "UniformPressure() or LinearPressure(xi_c, eta_c), or one Disk"
-            )
-        elif isinstance(patch, _fp.Annulus) and patch.inner_radius == 0.0:
-            why = f"use Disk({patch.outer_radius!r}) for a full disk"
-        else:
-            name = type(patch).__name__
-            why = f"it is not defined on {'an' if name[0] in 'AEIOU' else 'a'} {name}"
-        valid = (
-            "UniformPressure()"
-            if isinstance(patch, _fp.Blade)
-            else "UniformPressure(), LinearPressure(xi_c, eta_c)"
-        )
-        return (
-            f"pressure = {law}() is invalid on patch = {v._short(patch, 100)}: {why}; "
-            f"{law} is defined on an Ellipse, a Circle or a single Disk (MODEL §3, §10); "
-            f"valid values on this patch: {valid}"
-        )
-    return (
-        f"pressure = {pressure!r} is invalid on a footprint; valid values: "
-        "UniformPressure(), LinearPressure(xi_c, eta_c), and on a single Disk also "
-        "BoussinesqPressure() and HertzPressure() (a PressureMap works with "
-        "footprint_wrench only)"
-    )
 
 
 def check_body_friction(body, friction, *, elliptic_only: str | None = None) -> None:

@@ -3,15 +3,16 @@
 For a unit twist û = (vx, vy, ℓ ω)/|·| (ℓ a length scale) the sliding friction wrench W(û)
 = (Fx, Fy, M about G) is that of MODEL §2; it depends on the direction only. The set
 L = {W(û)} is the limit surface of planar-pushing work (Goyal, Ruina & Papadopoulos 1991).
-For isotropic friction L bounds the static-friction set C of :mod:`slidespin.contact.statics` and the
-twist is normal to it (maximum dissipation: −W(û)·û = h(û), the support function of C). For
-an anisotropic tensor τ = −p 𝔽 ŵ is not of maximum dissipation and L may lie inside C;
+For isotropic friction L bounds the static-friction set C of
+:mod:`slidespin.contact.static_set` and the twist is normal to it (maximum dissipation:
+−W(û)·û = h(û), the support function of C). For an anisotropic tensor τ = −p 𝔽 ŵ is not of
+maximum dissipation and L may lie inside C;
 ``dissipation_gap`` = h(û) − (−W(û)·û) ≥ 0 reports by how much.
 
 Every patch: the paper's ellipses and circles and the footprints of MODEL §10, a
 ``Blade`` (a line contact) included. The samples are
 :func:`slidespin.friction_wrench`'s exact wrenches; the support h is that of
-``slidespin.contact.statics.static_support``.
+``slidespin.contact.static_set.static_support``.
 
 Fits used in planar pushing, in the normalised wrench w = (Fx/P, Fy/P, M/(P ℓ)):
 
@@ -42,7 +43,7 @@ from slidespin.contact._engine import TwistWrench
 from slidespin.contact.body import Body, check_body_friction
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
-from slidespin.contact.statics import check_anisotropy, static_support
+from slidespin.contact.static_set import check_anisotropy, static_support
 from slidespin.contact.wrench import friction_wrench
 
 __all__ = ["QUARTIC_EXPONENTS", "LimitSurface", "limit_surface", "sphere_directions"]
@@ -234,7 +235,7 @@ class LimitSurface:
 
         Returns the matplotlib ``Axes3D``.
         """
-        import matplotlib.pyplot as plt
+        import matplotlib.pyplot as plt  # lazy: matplotlib is slow to import, needed only to draw
 
         if ax is None:
             fig = plt.figure(figsize=(6.4, 5.6))

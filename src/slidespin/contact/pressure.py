@@ -23,15 +23,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, ClassVar, Protocol
+from typing import ClassVar, Protocol
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
-
-if TYPE_CHECKING:
-    from slidespin.contact.ellipse import Ellipse
+from slidespin.contact.ellipse import Ellipse
 
 __all__ = [
     "UniformPressure",
@@ -87,8 +85,6 @@ class _Law:
         load : float
             Normal load P = m g [N], in [0, 1e300].
         """
-        from slidespin.contact.ellipse import Ellipse
-
         if not isinstance(patch, Ellipse):
             raise ValueError(
                 f"patch = {v._short(patch)} is invalid; valid values: an Ellipse or a Circle"

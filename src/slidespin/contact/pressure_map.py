@@ -33,6 +33,8 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.contact._kernel_footprint import NGEO
+from slidespin.contact.ellipse import Circle
+from slidespin.contact.footprint_arrays import FootprintArrays
 from slidespin.contact.pressure import (
     BoussinesqPressure,
     HertzPressure,
@@ -43,7 +45,6 @@ from slidespin.contact.shapes import (
     Annulus,
     Blade,
     Disk,
-    FootprintArrays,
     Pads,
     Polygon,
     Rectangle,
@@ -435,9 +436,7 @@ def _round_disk(footprint, pressure) -> bool:
     if not isinstance(pressure, (BoussinesqPressure, HertzPressure)):
         return False
     if not isinstance(footprint, Disk):
-        from slidespin.contact.body import _footprint_law_error
-
-        raise ValueError(_footprint_law_error(footprint, pressure))
+        raise ValueError(footprint_law_error(footprint, pressure))
     return True
 
 
@@ -470,8 +469,6 @@ def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
     eta = np.asarray(eta, dtype=float)
     _check_footprint(footprint)
     if _round_disk(footprint, pressure):
-        from slidespin.contact.ellipse import Circle
-
         cx, cy = footprint.centre
         return np.asarray(pressure.density(Circle(footprint.radius), xi - cx, eta - cy, load))
     inside = contains(footprint, xi, eta)
@@ -570,3 +567,40 @@ def symmetry(footprint, pressure, rtol: float = 1e-12) -> tuple[bool, bool]:
 
     central = matched(refl_e, e) and matched(refl_c, c)
     return bool(central), bool(axial)
+
+
+def round_law(patch: object, pressure: object) -> bool:
+    """A ``Disk`` under the Boussinesq or Hertz law: a circle, for the elliptic engine."""
+    return isinstance(patch, Disk) and isinstance(pressure, (BoussinesqPressure, HertzPressure))
+
+
+def footprint_law_error(patch, pressure) -> str:
+    """The message for a pressure law a footprint does not take (MODEL §10)."""
+    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        law = type(pressure).__name__
+        if isinstance(patch, Pads):
+            why = (
+                "on Pads the pads' load shares are not determined by the law; give "
+                "UniformPressure() or LinearPressure(xi_c, eta_c), or one Disk"
+            )
+        elif isinstance(patch, Annulus) and patch.inner_radius == 0.0:
+            why = f"use Disk({patch.outer_radius!r}) for a full disk"
+        else:
+            name = type(patch).__name__
+            why = f"it is not defined on {'an' if name[0] in 'AEIOU' else 'a'} {name}"
+        valid = (
+            "UniformPressure()"
+            if isinstance(patch, Blade)
+            else "UniformPressure(), LinearPressure(xi_c, eta_c)"
+        )
+        return (
+            f"pressure = {law}() is invalid on patch = {v._short(patch, 100)}: {why}; "
+            f"{law} is defined on an Ellipse, a Circle or a single Disk (MODEL §3, §10); "
+            f"valid values on this patch: {valid}"
+        )
+    return (
+        f"pressure = {pressure!r} is invalid on a footprint; valid values: "
+        "UniformPressure(), LinearPressure(xi_c, eta_c), and on a single Disk also "
+        "BoussinesqPressure() and HertzPressure() (a PressureMap works with "
+        "footprint_wrench only)"
+    )

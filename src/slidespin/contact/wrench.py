@@ -1,14 +1,27 @@
-"""The friction force and moment on the body for a given motion state (paper eq. 1–4).
+"""The friction force and moment on the body for a given motion state (paper eq. 1–4, MODEL §2, §10).
 
-``friction_wrench`` returns the force in the fixed frame and the moment about the mass centre
-G (counter-clockwise positive), and the paper's components (MODEL §4):
+:func:`friction_wrench` is the one public wrench, for every patch: it returns the force in the
+fixed frame and the moment about the mass centre G (counter-clockwise positive), and the
+paper's components (MODEL §4):
 
     F_τ = −F·(cos ϑ, sin ϑ),   F_n = −F·(−sin ϑ, cos ϑ),   M_paper = −M,
 
-so that v̇ = −F_τ/m, ϑ̇ = −F_n/(m v), ω̇ = −M_paper/I (paper eq. 4). The integrals are
-evaluated by the compiled kernel (:mod:`slidespin.contact._kernel_ellipse`) to an absolute error of about
-1e-12 m g (force) and 1e-12 m g a (moment) for every state, including an instantaneous
-centre of rotation inside the patch or on its rim.
+so that v̇ = −F_τ/m, ϑ̇ = −F_n/(m v), ω̇ = −M_paper/I (paper eq. 4). By patch:
+
+* An ellipse or circle (and a ``Disk`` under Boussinesq or Hertz pressure, the circle of its
+  radius): the compiled quadrature of :mod:`slidespin.contact._kernel_ellipse`, to an absolute
+  error of about 1e-12 m g (force) and 1e-12 m g a (moment) for every state, including an
+  instantaneous centre of rotation inside the patch or on its rim.
+* A footprint under uniform or linear pressure: the compiled exact kernel
+  (:mod:`slidespin.contact._kernel_footprint`: closed forms for polygons, complete elliptic
+  integrals for disks and rings), to ≲ 3e-12 P and P·extent in the tests, for every state.
+* A ``Blade`` (a line contact under a uniform line load): the closed form of
+  :mod:`slidespin.contact._kernel_blade`, exact for every motion state.
+* A user pressure map (:class:`~slidespin.PressureMap`): the adaptive quadrature about the
+  instantaneous centre of :mod:`slidespin.contact._map_wrench` (to ``map_tol``).
+
+:func:`footprint_wrench` is the same wrench for a patch and a pressure given without a body
+(a normal load ``load`` in place of m g); :func:`friction_wrench` calls it for footprints.
 
 Departure from the printed paper: eq. 3's y′ and moment are garbled in print; slidespin uses
 y′ = ξ sin φ + η cos φ and mom = x′τ_y − y′τ_x (MODEL §7, erratum 1), with positions
@@ -24,11 +37,27 @@ from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
 from slidespin.contact import _engine
+from slidespin.contact._kernel_blade import blade_wrench_array
 from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_array
+from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
+from slidespin.contact._map_wrench import MAP_TOL, MAP_TOL_RANGE, map_prepare, map_wrench_world
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.pressure import (
+    BoussinesqPressure,
+    HertzPressure,
+    LinearPressure,
+    UniformPressure,
+)
+from slidespin.contact.pressure_map import (
+    PressureMap,
+    _blade_law,
+    footprint_law_error,
+    kernel_geometry,
+)
+from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle
 
-__all__ = ["Wrench", "friction_wrench"]
+__all__ = ["Wrench", "footprint_wrench", "friction_wrench"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -152,6 +181,7 @@ def friction_wrench(
     g: float = 9.81,
     *,
     tol: float = 1e-12,
+    map_tol: float = MAP_TOL,
 ) -> Wrench:
     """Friction force and moment on ``body`` for the motion state (vx, vy, ω) at angle φ.
 
@@ -181,7 +211,7 @@ def friction_wrench(
     Notes
     -----
     For a footprint patch (:mod:`slidespin.contact.shapes`) this is
-    :func:`slidespin.contact.footprint_wrench` with the load m g: exact (closed forms, MODEL §10) for
+    :func:`footprint_wrench` with the load m g: exact (closed forms, MODEL §10) for
     every motion state, and ``tol`` is not used.
 
     The wrench depends only on the direction of (vx, vy, a ω): it is homogeneous of degree 0
@@ -204,10 +234,16 @@ def friction_wrench(
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     tol = v.bounded("tol", tol, *v.WRENCH_TOL)
     if body.is_footprint:  # the exact footprint kernel (MODEL §10); ``tol`` is not needed
-        from slidespin.contact.footprint_wrench import footprint_wrench
-
         return footprint_wrench(
-            body.patch, body.pressure, friction, vx, vy, omega, phi, load=body.mass * g
+            body.patch,
+            body.pressure,
+            friction,
+            vx,
+            vy,
+            omega,
+            phi,
+            load=body.mass * g,
+            map_tol=map_tol,
         )
     vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
     a = body.length_unit  # the semi-axis a of the ellipse
@@ -235,3 +271,159 @@ def friction_wrench(
     fy = fy * load
     mm = mm * load * a
     return Wrench.from_world(fx, fy, mm, np.arctan2(vya, vxa), shape, scalar)
+
+
+def footprint_wrench(
+    footprint,
+    pressure,
+    friction: FrictionTensor,
+    vx,
+    vy,
+    omega,
+    phi=0.0,
+    load: float = 1.0,
+    *,
+    map_tol: float = MAP_TOL,
+) -> Wrench:
+    """Friction force and moment on a body on ``footprint`` for the motion (vx, vy, ω) at φ.
+
+    Parameters
+    ----------
+    footprint : Polygon, Rectangle, Disk, Annulus, Pads or Blade
+        The contact footprint in the body frame [m] (a Blade: uniform pressure only).
+    pressure : UniformPressure, LinearPressure, PressureMap, BoussinesqPressure or HertzPressure
+        Normal pressure on the footprint (normalised to ``load``); the mass centre G is its
+        centroid (:func:`slidespin.contact.pressure_map.mass_centre`). Boussinesq and Hertz on a
+        single ``Disk`` only (G at its centre; the elliptic kernel, module notes).
+    friction : FrictionTensor
+        Friction tensor (plane- or body-fixed).
+    vx, vy : float or array_like
+        Velocity of G in the fixed frame [m/s].
+    omega : float or array_like
+        Spin rate [rad/s], counter-clockwise positive.
+    phi : float or array_like, default 0
+        Body angle [rad].
+    load : float, default 1
+        Normal load P = m g [N].
+    map_tol : float in [1e-12, 1e-2], default 1e-9
+        Error target of the user-map quadrature, in units of P (force) and P × extent
+        (moment); unused for uniform and linear pressure (exact).
+
+    Returns
+    -------
+    Wrench
+        Force in the fixed frame [N], moment about G [N m] and the paper's components;
+        floats for scalar input, arrays of the broadcast shape otherwise.
+
+    Notes
+    -----
+    MODEL §2 (traction −p 𝔽 ŵ) over the footprint of MODEL §10. The wrench depends only on the
+    direction of (vx, vy, ω); at rest (v = ω = 0) a zero wrench is returned.
+
+    Examples
+    --------
+    >>> from slidespin import FrictionTensor, UniformPressure
+    >>> from slidespin.contact.shapes import Annulus
+    >>> w = footprint_wrench(Annulus(0.05, 0.1), UniformPressure(), FrictionTensor(0.3, 0.3),
+    ...                      0.0, 0.0, 1.0, load=10.0)
+    >>> round(w.moment, 12)  # −(2/3) μ P (R³ − r³)/(R² − r²)
+    -0.233333333333
+    """
+    if not isinstance(footprint, (Polygon, Rectangle, Annulus, Pads, Blade)):
+        raise ValueError(
+            f"footprint = {footprint!r} is invalid; valid values: Polygon, Rectangle, Disk, "
+            "Annulus, Pads or Blade"
+        )
+    if isinstance(footprint, Blade) and not isinstance(
+        pressure, (BoussinesqPressure, HertzPressure)
+    ):
+        _blade_law(footprint, pressure)  # a Blade takes the uniform line load only
+    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        if not isinstance(footprint, Disk):
+            raise ValueError(footprint_law_error(footprint, pressure))
+    elif not isinstance(pressure, (UniformPressure, LinearPressure, PressureMap)):
+        raise ValueError(
+            f"pressure = {pressure!r} is invalid; valid values: UniformPressure(), "
+            "LinearPressure(xi_c, eta_c), PressureMap(function), and on a single Disk "
+            "BoussinesqPressure(), HertzPressure()"
+        )
+    if not isinstance(friction, FrictionTensor):
+        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    load = v.positive("load", load, "N")
+    map_tol = v.bounded("map_tol", map_tol, *MAP_TOL_RANGE)
+    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
+        return _round_wrench(footprint, pressure, friction, vx, vy, omega, phi, load)
+    vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
+    theta = np.arctan2(vya, vxa)
+    # the dry-friction wrench depends on the direction of (v, ω) only (MODEL §2): scale each
+    # triple by a power of two (exact) to magnitude ≤ 1, so that no product in the kernel
+    # overflows for velocities near the largest float
+    _, expo = np.frexp(np.maximum(np.maximum(np.abs(vxa), np.abs(vya)), np.abs(oma)))
+    vxa, vya, oma = (np.ldexp(x, -expo) for x in (vxa, vya, oma))
+    t = friction.matrix
+    body_frame = friction.frame == "body"
+    arrays = footprint.to_arrays()
+    if isinstance(pressure, PressureMap):
+        fx = np.empty(vxa.size)
+        fy = np.empty(vxa.size)
+        mm = np.empty(vxa.size)
+        prep = map_prepare(footprint, pressure, arrays, map_tol)
+        for i in range(vxa.size):
+            fx[i], fy[i], mm[i] = map_wrench_world(
+                prep, t, body_frame, pha[i], vxa[i], vya[i], oma[i], map_tol
+            )
+    elif isinstance(footprint, Blade):  # the exact line-contact kernel
+        fx, fy, mm = blade_wrench_array(
+            *arrays.edges[0],
+            *footprint.centroid,
+            1.0,
+            t[0, 0],
+            t[0, 1],
+            t[1, 0],
+            t[1, 1],
+            body_frame,
+            pha,
+            vxa,
+            vya,
+            oma,
+        )
+    else:
+        geo = kernel_geometry(footprint, pressure, arrays)
+        fx, fy, mm = fp_wrench_array(
+            arrays.edges,
+            arrays.circles,
+            geo,
+            t[0, 0],
+            t[0, 1],
+            t[1, 0],
+            t[1, 1],
+            body_frame,
+            pha,
+            vxa,
+            vya,
+            oma,
+        )
+    fx = fx * load
+    fy = fy * load
+    mm = mm * load
+    return Wrench.from_world(fx, fy, mm, theta, shape, scalar)
+
+
+def _round_wrench(disk, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
+    """The wrench on a disk under Boussinesq or Hertz pressure: the circle of its radius with
+    G at its centre, by the elliptic kernel (:func:`slidespin.friction_wrench`, unit load),
+    scaled to ``load``."""
+    w = friction_wrench(Body(disk, pressure, 1.0), friction, vx, vy, omega, phi, g=1.0)
+    return Wrench(
+        w.force_x * load,
+        w.force_y * load,
+        w.moment * load,
+        w.tangential * load,
+        w.normal * load,
+        w.moment_paper * load,
+        w.theta,
+    )
+
+
+# ---------------------------------------------------------------------------------------------
+# user pressure maps

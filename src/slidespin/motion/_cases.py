@@ -13,6 +13,7 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.contact.pressure import LAW_NAMES
+from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
 
 __all__ = [
     "CASE_FIELDS",
@@ -256,8 +257,6 @@ def footprint_patch(shape: str, geo: dict, vertices=None, pad_shape: str = "disk
     the first on the η axis, neighbours ``pad_spacing`` apart (two pads: at η = ±spacing/2,
     runners side by side).
     """
-    from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
-
     if shape == "disk":
         return Disk(geo["radius"])
     if shape == "annulus":

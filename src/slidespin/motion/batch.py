@@ -7,13 +7,14 @@ law, tensor, inertia, g, state) as columns, which is what parameter sweeps need.
 a :class:`StopResults` of arrays.
 
 Memory: no per-step data is kept. The cases run in chunks of ``CHUNK`` through
-:func:`slidespin.motion._ode.integrate_many` (``prange`` over the cases of a chunk), so besides the
-inputs only the results are held for all N (67 bytes per case) and the working arrays for one
-chunk; each worker thread integrates in a fixed ~20 kB.
+:func:`slidespin.motion._parallel.integrate_many` (``prange`` over the cases of a chunk), so
+besides the inputs only the results are held for all N (67 bytes per case) and the working
+arrays for one chunk; each worker thread integrates in a fixed ~20 kB.
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -25,10 +26,12 @@ from slidespin import _validate as v
 from slidespin.contact import _engine
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
-from slidespin.motion import _ode
+from slidespin.motion import _integrator, _parallel
 from slidespin.motion._cases import CASE_FIELDS, validated_columns
+from slidespin.motion._report import _html_table
+from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.outcomes import ENDINGS, STATUSES
-from slidespin.motion.simulate import ENDING_TOL, check_solver_options
+from slidespin.motion.simulate import check_solver_options
 
 if TYPE_CHECKING:
     import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
@@ -86,8 +89,6 @@ class StopResults:
         return self.t_stop.size
 
     def __repr__(self) -> str:
-        from collections import Counter
-
         counts = Counter(self.status.tolist())
         ends = Counter(self.ending.tolist())
         fmt = lambda c: ", ".join(f"{k}: {n}" for k, n in sorted(c.items()))  # noqa: E731
@@ -97,6 +98,7 @@ class StopResults:
         """The stop results as a :class:`pandas.DataFrame`, one row per case (the columns of
         :meth:`as_dict`, SI units; ``ending`` and ``status`` as strings). Needs pandas."""
         try:
+            # lazy: pandas is optional and slow to import
             import pandas as pd  # type: ignore[import-untyped]
         except ImportError:  # pragma: no cover - depends on the environment
             raise ImportError("StopResults.to_pandas needs pandas: pip install pandas") from None
@@ -104,8 +106,6 @@ class StopResults:
 
     def _repr_html_(self) -> str:
         """Cases per status and per ending, for notebooks (no arrays)."""
-        from slidespin.motion.simulate import _html_table
-
         c = self.counts()
         items = {"cases": len(self)}
         items.update({f"status {k}": n for k, n in sorted(c["status"].items())})
@@ -114,8 +114,6 @@ class StopResults:
 
     def counts(self) -> dict[str, dict[str, int]]:
         """Number of cases per status and per ending: ``{"status": {...}, "ending": {...}}``."""
-        from collections import Counter
-
         return {
             "status": dict(Counter(self.status.tolist())),
             "ending": dict(Counter(self.ending.tolist())),
@@ -210,7 +208,8 @@ def _run(col, inertia, rtol, max_steps) -> StopResults:
 
 
 def _no_footprints(n):
-    """Footprint arguments of :func:`slidespin.motion._ode.integrate_many` for n elliptic cases."""
+    """Footprint arguments of :func:`slidespin.motion._parallel.integrate_many` for n elliptic
+    cases."""
     empty = np.empty((0, 4))
     zeros = np.zeros((n, 2), dtype=np.int64)
     return empty, empty, zeros, zeros, np.zeros((n, _engine.NGEO))
@@ -223,8 +222,8 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
     unit (semi-axis or footprint extent) and gravity (arrays of length n, or scalars); ``st``:
     mapping with the initial ``x, y, phi, vx, vy, omega`` (SI, arrays of length n);
     ``footprints_of(lo, hi)``: the footprint arguments (edges, circles, edge row ranges,
-    circle row ranges, geo rows) of :func:`slidespin.motion._ode.integrate_many` for cases lo..hi
-    (None: all ellipses). Only the results are held for all n cases.
+    circle row ranges, geo rows) of :func:`slidespin.motion._parallel.integrate_many` for cases
+    lo..hi (None: all ellipses). Only the results are held for all n cases.
     """
     a = np.broadcast_to(np.asarray(a, dtype=float), (n,))
     g = np.broadcast_to(np.asarray(g, dtype=float), (n,))
@@ -257,7 +256,7 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
         init[:, 4] = st["y"][lo:hi] / ac
         init[:, 5] = st["phi"][lo:hi]
         fps = _no_footprints(hi - lo) if footprints_of is None else footprints_of(lo, hi)
-        yend, status, steps, _, nf, term = _ode.integrate_many(
+        yend, status, steps, _, nf, term = _parallel.integrate_many(
             pars, *fps, init, rtol, rtol, rtol, min(rtol, 1e-8), max_steps
         )
         fails += int((nf > 0).sum())
@@ -272,11 +271,13 @@ def _integrate_all(n, pars_of, a, g, st, rtol, max_steps, footprints_of=None) ->
 def _stop_values(res, lo, hi, yend, status, steps, term, k, a, t_unit, st):
     """Fill cases lo..hi of ``res`` from the stop states, exactly as simulate() does
     (:func:`slidespin.motion.simulate._terminal_values`, vectorised)."""
-    rest = status == _ode.ST_AT_REST
+    rest = status == _integrator.ST_AT_REST
     u3 = yend[:, 2]
-    u12, _ = _ode.stop_direction(yend)
-    converged = np.isin(status, (_ode.ST_STOPPED, _ode.ST_MARGINAL, _ode.ST_SADDLE))
-    spiral = status == _ode.ST_SPIRAL
+    u12, _ = _parallel.stop_direction(yend)
+    converged = np.isin(
+        status, (_integrator.ST_STOPPED, _integrator.ST_MARGINAL, _integrator.ST_SADDLE)
+    )
+    spiral = status == _integrator.ST_SPIRAL
     # classification and β* from u*, then the spiral override
     ending = np.where(np.abs(u3) <= ENDING_TOL, 1, np.where(u12 <= ENDING_TOL, 2, 0))
     beta = term[:, 3].copy()
@@ -287,7 +288,7 @@ def _stop_values(res, lo, hi, yend, status, steps, term, k, a, t_unit, st):
     ending = np.where(spiral, 4, ending)
     # a body at rest stays where it is
     res.ending_code[lo:hi] = np.where(rest, 3, ending)
-    res.status_code[lo:hi] = np.where(spiral, _ode.ST_STOPPED, status)
+    res.status_code[lo:hi] = np.where(spiral, _integrator.ST_STOPPED, status)
     res.beta_stop[lo:hi] = np.where(rest, np.nan, beta * a)
     res.theta_stop[lo:hi] = np.where(rest | spiral, np.nan, theta)
     res.t_stop[lo:hi] = np.where(rest, 0.0, yend[:, 4] * t_unit)

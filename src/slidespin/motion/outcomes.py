@@ -77,7 +77,8 @@ __all__ = [
     "ending_message",
 ]
 
-#: status names, indexed by the integer codes of the compiled integrator (``_ode.ST_*``)
+#: status names, indexed by the integer codes of the compiled integrator
+#: (``slidespin.motion._integrator.ST_*``)
 STATUSES = (
     "stopped",
     "max_steps",
@@ -173,7 +174,8 @@ def status_message(status: str, *, loaded: bool = False) -> str:
     status : str
         A name of :data:`STATUSES`, or of :data:`LOADED_STATUSES` with ``loaded=True``.
     loaded : bool, default False
-        Explain the status of a loaded run (:class:`slidespin.motion.loaded.LoadedTrajectory`).
+        Explain the status of a loaded run
+        (:class:`slidespin.motion.loaded_trajectory.LoadedTrajectory`).
 
     Raises
     ------
@@ -193,7 +195,8 @@ def ending_message(ending: str, *, loaded: bool = False) -> str:
     ending : str
         A name of :data:`ENDINGS`, or of :data:`LOADED_ENDINGS` with ``loaded=True``.
     loaded : bool, default False
-        Explain the ending of a loaded run (:class:`slidespin.motion.loaded.LoadedTrajectory`).
+        Explain the ending of a loaded run
+        (:class:`slidespin.motion.loaded_trajectory.LoadedTrajectory`).
 
     Raises
     ------

@@ -32,20 +32,20 @@ from slidespin.contact._kernel_ellipse import wrench_array
 from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
-from slidespin.motion import _ode
+from slidespin.contact.incline import Incline
+from slidespin.motion import _integrator
+from slidespin.motion._report import _html_table
+from slidespin.motion._stops import ENDING_TOL
+from slidespin.motion.loaded import simulate_loaded
+from slidespin.motion.loaded_trajectory import LoadedTrajectory
+from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES, status_message
 from slidespin.motion.state import State
 
 if TYPE_CHECKING:
     import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
 
-    from slidespin.contact.incline import Incline
-    from slidespin.motion.loaded import LoadedTrajectory
-    from slidespin.motion.loads import Load
-
 __all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "status_name"]
-
-ENDING_TOL = _ode.ENDING_TOL
 
 
 #: largest step budget (the integrator counts steps in 64-bit integers; 1e9 steps of a few
@@ -68,10 +68,10 @@ def check_solver_options(rtol: float, max_steps: int) -> tuple[float, int]:
 
 
 def status_name(code: int) -> str:
-    """Status name (:data:`slidespin.motion.outcomes.STATUSES`) of an integrator status code; a spiral
-    stop is ``stopped`` (its ending says ``spiral``)."""
+    """Status name (:data:`slidespin.motion.outcomes.STATUSES`) of an integrator status code; a
+    spiral stop is ``stopped`` (its ending says ``spiral``)."""
     code = int(code)
-    return "stopped" if code == _ode.ST_SPIRAL else STATUSES[code]
+    return "stopped" if code == _integrator.ST_SPIRAL else STATUSES[code]
 
 
 def classify_ending(u_plane: float, u_spin: float, tol: float = ENDING_TOL) -> str:
@@ -260,6 +260,7 @@ class Trajectory:
         columns of :meth:`to_csv` (SI units); the stop summary is in ``DataFrame.attrs``.
         Needs pandas (``pip install pandas``)."""
         try:
+            # lazy: pandas is optional and slow to import
             import pandas as pd  # type: ignore[import-untyped]
         except ImportError:  # pragma: no cover - depends on the environment
             raise ImportError("Trajectory.to_pandas needs pandas: pip install pandas") from None
@@ -429,8 +430,8 @@ def simulate(
     Returns
     -------
     Trajectory, or LoadedTrajectory
-        A :class:`~slidespin.motion.loaded.LoadedTrajectory` (with stick and slip phases and the
-        energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
+        A :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory` (with stick and slip
+        phases and the energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
         :func:`slidespin.motion.loaded.simulate_loaded` (ellipses and circles for now).
 
     Notes
@@ -454,11 +455,8 @@ def simulate(
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
         )
-    from slidespin.contact.incline import Incline as _Incline
-    from slidespin.motion.loads import Load as _Load
-
     for name, val in (("g", g), ("rtol", rtol)):
-        if isinstance(val, (_Load, _Incline)):  # simulate(body, friction, state, load)
+        if isinstance(val, (Load, Incline)):  # simulate(body, friction, state, load)
             raise ValueError(
                 f"{name} = {v._short(val)} is invalid: the 4th and 5th positional arguments "
                 "are g and rtol; pass load=, incline=, t_end= by keyword, e.g. "
@@ -466,8 +464,6 @@ def simulate(
             )
     if load is not None or incline is not None or t_end is not None:
         # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11)
-        from slidespin.motion.loaded import simulate_loaded
-
         return simulate_loaded(
             body,
             friction,
@@ -541,7 +537,7 @@ def simulate(
             0.0,
         ]
     )
-    yend, status, nsteps, nrhs, fails, rate, rec, term = _ode.integrate_on(
+    yend, status, nsteps, nrhs, fails, rate, rec, term = _integrator.integrate_on(
         par, fe, fc, geo, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
     )
     if fails:  # pragma: no cover - guard, not reached in tests
@@ -623,28 +619,14 @@ def _terminal_values(
     """(ending, β*/a, ϑ*) of a stop from its reported direction (|u₁₂|, u₃) and the
     integrator's ϑ* and k u₁₂/u₃ (MODEL §5, §9)."""
     status = int(status)
-    if status == _ode.ST_SPIRAL:
+    if status == _integrator.ST_SPIRAL:
         # the direction of motion turns for ever while the body stops: no terminal direction
         return "spiral", float(beta_nat), math.nan  # inf if the spin dies out, else NaN
     ending = classify_ending(u12, u3)
-    if status in (_ode.ST_STOPPED, _ode.ST_MARGINAL, _ode.ST_SADDLE):
+    if status in (_integrator.ST_STOPPED, _integrator.ST_MARGINAL, _integrator.ST_SADDLE):
         if ending == "pure_sliding":
             return ending, math.inf, float(theta_star)  # the sign of a vanishing ω is noise
         if ending == "pure_spinning":
             return ending, 0.0, float(theta_star)
     # mixed, or not converged: the direction as reached
     return ending, float(beta_nat), float(theta_star)
-
-
-def _html_table(title: str, items: dict[str, Any]) -> str:
-    """A two-column HTML table of ``items`` (for ``_repr_html_``)."""
-    from html import escape
-
-    def cell(x):
-        return f"{x:.6g}" if isinstance(x, float) else escape(str(x))
-
-    rows = "".join(
-        f"<tr><th style='text-align:left'>{escape(str(k))}</th><td>{cell(x)}</td></tr>"
-        for k, x in items.items()
-    )
-    return f"<table><caption>{escape(title)}</caption>{rows}</table>"

@@ -19,7 +19,8 @@ module         reproduces
 =============  ===========================================================================
 
 ``semianalytic`` is the paper's own route (eq. 8–9, 12–13) in vectorised NumPy, used by
-``errata`` and as a benchmark baseline. ``cli`` is the ``slidespin reproduce`` command.
+``errata`` and as a benchmark baseline. The ``slidespin reproduce`` command is
+:mod:`slidespin.cli.reproduce`.
 """
 
 #: the names ``slidespin reproduce`` takes (besides ``all``): one per table, figure or check

@@ -18,6 +18,8 @@ from slidespin.contact.friction import FrictionTensor
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 from slidespin.paper import _shared as sh
+from slidespin.paper.table1 import infer_fx
+from slidespin.viz.trajectory_plot import draw_path
 
 DEFAULT_MU = 0.12
 
@@ -78,8 +80,6 @@ class FigureRuns:
 def resolve_fx(fx):
     """fx from Table 1's least-squares fit unless given."""
     if fx is None:
-        from slidespin.paper.table1 import infer_fx
-
         return infer_fx().fx
     return v.positive("fx", fx)
 
@@ -109,8 +109,6 @@ def _time(tr):
 
 
 def _path_panels(fig, gs, row, res):
-    from slidespin.viz.plotting import draw_path
-
     axes = []
     for i, (lab, tr) in enumerate(zip(sh.PHI_LABELS, res.runs)):
         ax = fig.add_subplot(gs[row, 2 * i : 2 * i + 2])

@@ -126,6 +126,7 @@ def emit_table(name: str, res, out, as_json: bool, stream, plot=None, fmt: str =
 
 def new_figure(width: float, height: float):
     """A matplotlib Figure with an Agg canvas, made without pyplot (no global state)."""
+    # lazy: matplotlib is slow to import and needed only to draw
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import brentq
 
+from slidespin.analysis.intervals import inertia_intervals
 from slidespin.contact.body import Body
 from slidespin.contact.ellipse import Circle
 from slidespin.contact.friction import FrictionTensor
@@ -24,7 +25,11 @@ from slidespin.contact.wrench import friction_wrench
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 from slidespin.paper import _shared as sh
+from slidespin.paper import fig2
 from slidespin.paper import semianalytic as sa
+from slidespin.paper._figures import resolve_fx
+from slidespin.paper.table1 import PRINTED
+from slidespin.paper.table1 import compute as t1
 
 __all__ = ["Erratum", "ErrataResult", "direct_wrench", "compute", "main"]
 
@@ -244,8 +249,6 @@ def _eq16_root(model, phi):
 
 
 def _e3(kappa):
-    from slidespin.paper.table1 import PRINTED
-
     model = sa.PaperModel(kappa, FX, FY)
     wrong = model.with_(i1="printed")
     body = Body(sh.patch(), UniformPressure(), 1.0)
@@ -466,8 +469,6 @@ def _e8():
 
 def _e9():
     fx, mu = 0.3, 0.15
-    from slidespin.analysis.terminal import inertia_intervals
-
     num = inertia_intervals(UniformPressure(), FrictionTensor(fx, fx + mu)).i1
     literal = fx + mu
     fixed = (fx + mu) / (4 * fx)
@@ -488,8 +489,6 @@ def _e9():
 
 
 def _e10():
-    from slidespin.paper.table1 import compute as t1
-
     res = t1()  # the least-squares fit and the consistency scan are cached
     lo, hi = res.best_interval
     return Erratum(
@@ -516,8 +515,6 @@ def _e10():
 
 
 def _e11(fx):
-    from slidespin.paper import fig2
-
     disk = Body.from_inertia_ratio(Circle(sh.A), UniformPressure(), sh.MASS, 0.5)
     fr = FrictionTensor(fx, fx + 0.12)
     st = State.from_speed(sh.SPEED_UNIT, sh.SPIN_UNIT, sh.THETA0, 0.0)
@@ -554,8 +551,6 @@ def compute(fx: float | None = None) -> ErrataResult:
     fx : float, optional
         fx for the runs of errata 2, 6, 7, 11; by default the value inferred from Table 1.
     """
-    from slidespin.paper._figures import resolve_fx
-
     fx = resolve_fx(fx)
     kappa = sh.patch().aspect
     return ErrataResult(

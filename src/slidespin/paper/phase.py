@@ -6,7 +6,7 @@ ray v = k a ω (a mixed ending), along the v-axis (ω/v → 0) or along the a ω
 :func:`compute` draws the uniformly loaded disk under isotropic friction, for which the motion
 stays in this plane, with one inertia ratio I* in each of the four intervals of Table 2; the
 third panel (I* = 1/2) is the published case, k = 0.653. :func:`plot_phase_portrait` draws any
-:class:`slidespin.analysis.terminal.PhasePortrait`.
+:class:`slidespin.analysis.phase_portrait.PhasePortrait`.
 """
 
 from __future__ import annotations
@@ -16,11 +16,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from slidespin.analysis.terminal import PhasePortrait, inertia_intervals, phase_portrait
+from slidespin.analysis.intervals import inertia_intervals
+from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
 from slidespin.contact.body import Body
 from slidespin.contact.ellipse import Circle
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import UniformPressure
+from slidespin.paper import _figures as fg
 from slidespin.paper import _shared as sh
 
 __all__ = ["PhaseResult", "compute", "plot_phase_portrait", "plot", "main"]
@@ -93,7 +95,7 @@ def plot_phase_portrait(
     Parameters
     ----------
     portrait : PhasePortrait
-        Result of :func:`slidespin.analysis.terminal.phase_portrait`.
+        Result of :func:`slidespin.analysis.phase_portrait.phase_portrait`.
     ax : matplotlib Axes, optional
         Axes to draw on; a new figure is made if omitted.
     color : str
@@ -171,6 +173,7 @@ def _ending_text(pp):
 
 def plot(result: PhaseResult):
     """The four phase portraits in a 2 × 2 figure."""
+    # lazy: matplotlib is slow to import and needed only to draw
     from matplotlib.lines import Line2D
 
     with sh.style():
@@ -197,8 +200,6 @@ def plot(result: PhaseResult):
 
 def main(out=None, *, as_json: bool = False, fmt: str = "png", stream=None) -> PhaseResult:
     """Print the endings and write ``phase.<fmt>`` (and phase.json) into ``out``."""
-    from slidespin.paper import _figures as fg
-
     return fg.main_figure("phase", lambda: compute(), plot, out, as_json, fmt, stream)
 
 

@@ -17,6 +17,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from slidespin._version import __version__
 from slidespin.paper import _shared as sh
 from slidespin.paper import errata, fig2, fig3, fig4, phase, table1, table2
 from slidespin.paper._figures import FigureRuns
@@ -215,8 +216,6 @@ def _errata_html(res) -> str:
 
 def write_html(rep: Report, out: str) -> str:
     """Write ``out/index.html`` for a :class:`Report` whose figures are already in ``out``."""
-    from slidespin import __version__
-
     t1 = rep.table1
     lo, hi = t1.best_interval or (math.nan, math.nan)  # None without the consistency scan
     rms = f" (rms {t1.fit.rms * 1e3:.2f}·10⁻³)" if t1.fit is not None else ""

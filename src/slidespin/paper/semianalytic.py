@@ -528,6 +528,7 @@ def integrate(
     t_max : float
         Upper bound of the time span (paper units).
     """
+    # lazy: scipy.integrate is slow to import and needed only here
     from scipy.integrate import solve_ivp
 
     if not isinstance(model, PaperModel):

@@ -5,7 +5,7 @@ splits at I₁ < I₂ < I₃ into four endings (appendix, statement 1): ω/v →
 v = k a ω with k > 1, with k < 1 (both ``mixed``) and v/ω → 0 (``pure_spinning``). The
 boundaries are values of J(β) = β M_Cζ/F_τ at ϑ = 0 (MODEL §6): I₁ = J(∞), I₂ = J(1),
 I₃ = J(0⁺). :func:`compute` evaluates them numerically for the three laws (uniform,
-Boussinesq, Hertz) with :func:`slidespin.analysis.terminal.inertia_intervals`, compares them with the
+Boussinesq, Hertz) with :func:`slidespin.analysis.intervals.inertia_intervals`, compares them with the
 printed formulas (the uniform law's row 1 with its parenthesis restored, erratum 9), and
 simulates one motion inside each of the four intervals to show the stated ending.
 """
@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from slidespin import _validate as v
-from slidespin.analysis.terminal import (
+from slidespin.analysis.intervals import (
     circle_terminal_ratio,
     inertia_for_ratio,
     inertia_intervals,
@@ -228,6 +228,7 @@ def compute(fx: float = 0.3, mu: float = 0.15, *, runs: bool = True) -> Table2Re
 
 def plot(result: Table2Result):
     """Terminal ratio k = v/(aω) against I* for the three laws, boundaries marked."""
+    # lazy: matplotlib is slow to import and needed only to draw
     from matplotlib.lines import Line2D
 
     mus = sorted({r.mu for r in result.rows})

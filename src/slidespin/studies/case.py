@@ -31,6 +31,7 @@ from slidespin.contact.ellipse import Circle, Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.contact.pressure import pressure_law_from_name
+from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
 from slidespin.motion.loads import Load
 from slidespin.motion.state import State
 from slidespin.studies.load_tables import (
@@ -280,8 +281,6 @@ def case_from_dict(data: dict) -> Case:
 
 def _footprint(p: dict, where: str, nested: bool = False):
     """A footprint from a [patch] table (or one [[patch.pads]] entry, ``nested``)."""
-    from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
-
     shape = v.choice(
         f"[{where}] shape",
         _need(p, where, "shape"),

@@ -23,7 +23,7 @@ are not used.
 
 ``compute = "loaded"`` (:func:`slidespin.motion.simulate` with ``load=``, ``incline=``, ``t_end=``,
 i.e. :func:`~slidespin.motion.loaded.simulate_loaded`): the ending and status of the run
-(:class:`~slidespin.motion.loaded.LoadedTrajectory`) and its final state.
+(:class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`) and its final state.
 
 Both call Python per case (one case is one statics solve or one loaded integration), so they
 are far slower than the compiled stop sweeps: ``docs/guide/sweeps.md`` gives the measured
@@ -35,6 +35,12 @@ from __future__ import annotations
 import math
 
 import numpy as np
+
+from slidespin.contact import statics  # module attribute: tests patch statics.critical_tilt
+from slidespin.contact.incline import Incline
+from slidespin.motion.loads import Load, applied_wrench
+from slidespin.motion.simulate import simulate
+from slidespin.motion.state import State
 
 __all__ = [
     "CaseError",
@@ -167,9 +173,6 @@ def load_columns(cols: dict, n: int, mode: str) -> dict:
 
 def _load_objects(loads: dict, i: int, given: set):
     """(Load or None, Incline or None) of case ``i``: None for a group the spec omits."""
-    from slidespin.contact.incline import Incline
-    from slidespin.motion.loads import Load
-
     load = None
     if given & set(_LOAD_KEYS):
         load = Load(
@@ -205,9 +208,6 @@ def compute_statics(
     dict
         The columns of :data:`STATICS_COLUMNS`.
     """
-    from slidespin.contact.statics import critical_tilt, load_factor
-    from slidespin.motion.loads import applied_wrench
-
     n = len(bodies)
     tilt = np.empty(n)
     lam = np.empty(n)
@@ -215,10 +215,10 @@ def compute_statics(
         body, fr, phi = bodies[i], frictions[i], float(states[i, 2])
         try:
             load, incline = _load_objects(loads, i, given)
-            tilt[i] = critical_tilt(body, fr, float(loads["incline_downhill"][i]), phi)
+            tilt[i] = statics.critical_tilt(body, fr, float(loads["incline_downhill"][i]), phi)
             # load_factor adds the tilt's downhill pull itself (MODEL §11)
             w = applied_wrench(body, 0.0, phi, load, None, float(g[i]))
-            lam[i] = load_factor(body, fr, w, phi, float(g[i]), incline=incline)
+            lam[i] = statics.load_factor(body, fr, w, phi, float(g[i]), incline=incline)
         except (ValueError, RuntimeError) as exc:
             raise CaseError(i, exc) from exc
     sticks = lam >= 1.0
@@ -237,9 +237,6 @@ def compute_loaded(
     """One loaded run per case (:func:`slidespin.motion.simulate` with ``load``, ``incline`` and
     ``t_end``); the columns of :data:`LOADED_COLUMNS` (final state at the end of the run,
     number and total time of the slip phases, energy-balance error, right-hand sides)."""
-    from slidespin.motion.simulate import simulate
-    from slidespin.motion.state import State
-
     n = len(bodies)
     num = {
         k: np.empty(n) for k in LOADED_COLUMNS if k not in ("ending", "status", "n_slip", "n_rhs")

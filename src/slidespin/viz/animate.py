@@ -12,7 +12,7 @@ evenly in time from the first recorded instant to the last one (the stop, for a
 angle are interpolated between the integrator's steps by cubic Hermite polynomials on the
 recorded velocities (ẋ = vx, ẏ = vy, φ̇ = ω), the velocities linearly. Any object with arrays
 ``t, x, y, phi, vx, vy, omega`` and a ``body`` works (:class:`~slidespin.Trajectory`,
-:class:`~slidespin.motion.loaded.LoadedTrajectory`).
+:class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`).
 
 Geometry (MODEL §1-2): a point r = (ξ, η) of the body frame is drawn at
 G + R(φ)(r − r_G) with r_G = ``body.mass_centre``; the ICR, where the velocity of the body
@@ -26,6 +26,8 @@ import os
 from typing import Any, NamedTuple
 
 import numpy as np
+
+from slidespin._io import check_output_path, write_failure
 
 __all__ = ["MAX_FPS", "MAX_FRAMES", "FrameStates", "animate", "frame_states"]
 
@@ -210,8 +212,6 @@ def animate(
     >>> animate(traj, "run.gif", fps=20, frames=60)               # doctest: +SKIP
     'run.gif'
     """
-    from slidespin._io import check_output_path
-
     if not isinstance(path, (str, os.PathLike)):
         raise ValueError(
             f"path = {path!r} ({type(path).__name__}) is invalid; valid values: "
@@ -228,6 +228,7 @@ def animate(
     body = trajectory.body
 
     # a bare Figure (no pyplot): no window, no global state, any backend
+    # lazy: matplotlib (and Pillow, through PillowWriter) are imported only to draw
     from matplotlib.animation import FuncAnimation, PillowWriter
     from matplotlib.figure import Figure
 
@@ -306,8 +307,6 @@ def animate(
         anim.save(tmp, writer=PillowWriter(fps=fps), dpi=dpi)
         os.replace(tmp, path)
     except OSError as exc:
-        from slidespin._io import write_failure
-
         raise ValueError(write_failure(exc, path)) from None
     finally:
         if os.path.exists(tmp):

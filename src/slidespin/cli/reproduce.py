@@ -13,12 +13,14 @@ Tables and errata print to the terminal and, with ``--out``, also write JSON/tex
 figure for the tables). Figures go to ``--out``; ``all``
 writes everything with an ``index.html``. Without ``--out``, figures and ``all`` go to
 ``./slidespin-out`` (never straight into the working directory); tables only print.
-This module follows the plugin contract of :mod:`slidespin.cli.main`: ``configure(parser)`` and
-``run(args) -> int``.
+The tables and figures themselves live in :mod:`slidespin.paper` (MODEL §6–7), one module per
+target; this module is only the command. It follows the plugin contract of
+:mod:`slidespin.cli.main`: ``configure(parser)`` and ``run(args) -> int``.
 """
 
 from __future__ import annotations
 
+import importlib
 import math
 
 from slidespin import _validate as v
@@ -126,13 +128,12 @@ def run(args) -> int:
     """Run ``slidespin reproduce TARGET``; returns the exit status."""
     kw = _check(args)
     target = args.target
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     if target == "all":
         from slidespin.paper import report
 
         report.main(args.out, as_json=args.json, **kw)
         return 0
-    import importlib
-
     module = importlib.import_module(f"slidespin.paper.{target}")
     module.main(args.out, as_json=args.json, **kw)
     return 0

@@ -1,35 +1,23 @@
-"""The friction force and moment on a body resting on any footprint (MODEL §2, §10).
+"""The friction wrench of a user pressure map (:class:`~slidespin.PressureMap`) by adaptive
+quadrature about the instantaneous centre of rotation (MODEL §2, §10).
 
-:func:`footprint_wrench` is :func:`slidespin.friction_wrench` for the footprints of
-:mod:`slidespin.contact.shapes` (polygons, rectangles, disks, rings, several pads) and the pressure
-laws of :mod:`slidespin.contact.pressure_map`. It returns the same :class:`~slidespin.Wrench`.
-
-* Uniform and linear pressure: the compiled exact kernel
-  (:mod:`slidespin.contact._kernel_footprint`: closed forms for polygons, complete elliptic integrals
-  for disks and rings), to ≲ 3e-12 P and P·extent in the tests, for every motion state.
-* A ``Disk`` under Boussinesq or Hertz pressure (defined on circles, MODEL §3): the circle of
-  its radius with G at its centre, on the elliptic kernel of :func:`slidespin.friction_wrench`
-  (the same numbers as a ``Body`` on ``Circle(radius)``, to round-off).
-* A ``Blade`` (a line contact under a uniform line load): the closed form of
-  :mod:`slidespin.contact._kernel_blade`, exact for every motion state.
-* A user pressure map (:class:`~slidespin.contact.pressure_map.PressureMap`): a quadrature in
-  polar coordinates about the instantaneous centre of rotation c, which removes its
-  singularity: on each ray c + ρ ê the slip direction is constant, the footprint cuts exact
-  intervals (ray–edge crossings, ray–circle roots), and the radial integral of p ρ (1, r − r_G)
-  is Gauss–Legendre (24 nodes) on each interval. The angle is split at every vertex
-  direction, every circle tangent and the directions ±90° from each circle's centre, and, for
-  an edge at a distance d from c, at the directions of its points s_V/2^k from the foot of
-  the perpendicular (k = 1, 2, ... while s_V/2^k > d; s_V the vertex's offset): the area
-  beyond a near edge crowds into angles ~d/s_V wide beside its vertices. Each panel gets 12
-  Gauss–Legendre nodes in u with ψ = ψ_a + (ψ_b − ψ_a)(1 − cos πu)/2 (square-root ends of
-  tangent panels become smooth) and is bisected, all panels at once, until the halves agree
-  with the whole to ``map_tol`` × (panel width)/2π (default map_tol 1e-9 P and P·extent; a
-  RuntimeWarning if 40 levels do not suffice). For ω = 0 or a far ICR (|c − o| > 24 × extent)
-  the integrand is smooth and the 24 × 24 Gauss rule of
-  :func:`~slidespin.contact.pressure_map.area_rule` is used. Measured: the linear law given as
-  a map agrees with the exact kernel to ≤ 1e-12 with the ICR inside, at 1e-11 … 1e-3 of an
-  edge, near a ring's rim and outside; 2–30 ms per wrench (pure NumPy, ~1e4–1e5 map
-  evaluations), up to ~0.1 s with the ICR within 1e-10 of an edge.
+A quadrature in polar coordinates about the instantaneous centre of rotation c, which removes
+its singularity: on each ray c + ρ ê the slip direction is constant, the footprint cuts exact
+intervals (ray–edge crossings, ray–circle roots), and the radial integral of p ρ (1, r − r_G)
+is Gauss–Legendre (24 nodes) on each interval. The angle is split at every vertex
+direction, every circle tangent and the directions ±90° from each circle's centre, and, for
+an edge at a distance d from c, at the directions of its points s_V/2^k from the foot of
+the perpendicular (k = 1, 2, ... while s_V/2^k > d; s_V the vertex's offset): the area
+beyond a near edge crowds into angles ~d/s_V wide beside its vertices. Each panel gets 12
+Gauss–Legendre nodes in u with ψ = ψ_a + (ψ_b − ψ_a)(1 − cos πu)/2 (square-root ends of
+tangent panels become smooth) and is bisected, all panels at once, until the halves agree
+with the whole to ``map_tol`` × (panel width)/2π (default map_tol 1e-9 P and P·extent; a
+RuntimeWarning if 40 levels do not suffice). For ω = 0 or a far ICR (|c − o| > 24 × extent)
+the integrand is smooth and the 24 × 24 Gauss rule of
+:func:`~slidespin.contact.pressure_map.area_rule` is used. Measured: the linear law given as
+a map agrees with the exact kernel to ≤ 1e-12 with the ICR inside, at 1e-11 … 1e-3 of an
+edge, near a ring's rim and outside; 2–30 ms per wrench (pure NumPy, ~1e4–1e5 map
+evaluations), up to ~0.1 s with the ICR within 1e-10 of an edge.
 """
 
 from __future__ import annotations
@@ -39,28 +27,11 @@ import warnings
 
 import numpy as np
 
-from slidespin import _validate as v
-from slidespin.contact._kernel_blade import blade_wrench_array
-from slidespin.contact._kernel_footprint import FAR_RATIO, wrench_array
-from slidespin.contact.friction import FrictionTensor
-from slidespin.contact.pressure import (
-    BoussinesqPressure,
-    HertzPressure,
-    LinearPressure,
-    UniformPressure,
-)
-from slidespin.contact.pressure_map import (
-    PressureMap,
-    _blade_law,
-    _unit_rule,
-    area_rule,
-    kernel_geometry,
-    map_scale,
-)
-from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle, as_patches
-from slidespin.contact.wrench import Wrench, motion_arrays
+from slidespin.contact._kernel_footprint import FAR_RATIO
+from slidespin.contact.pressure_map import _unit_rule, area_rule, map_scale
+from slidespin.contact.shapes import Annulus, Polygon, as_patches
 
-__all__ = ["MAP_TOL", "footprint_wrench"]
+__all__ = ["MAP_TOL", "MAP_TOL_RANGE", "map_prepare", "map_wrench_world"]
 
 #: default target of the user-map quadrature (units of P and P × extent)
 MAP_TOL = 1e-9
@@ -73,168 +44,7 @@ _MAP_CHECK = 16  # the coarser graded rule per ray interval that checks it
 _MAP_MAX_LEVELS = 40
 
 
-def footprint_wrench(
-    footprint,
-    pressure,
-    friction: FrictionTensor,
-    vx,
-    vy,
-    omega,
-    phi=0.0,
-    load: float = 1.0,
-    *,
-    map_tol: float = MAP_TOL,
-) -> Wrench:
-    """Friction force and moment on a body on ``footprint`` for the motion (vx, vy, ω) at φ.
-
-    Parameters
-    ----------
-    footprint : Polygon, Rectangle, Disk, Annulus, Pads or Blade
-        The contact footprint in the body frame [m] (a Blade: uniform pressure only).
-    pressure : UniformPressure, LinearPressure, PressureMap, BoussinesqPressure or HertzPressure
-        Normal pressure on the footprint (normalised to ``load``); the mass centre G is its
-        centroid (:func:`slidespin.contact.pressure_map.mass_centre`). Boussinesq and Hertz on a
-        single ``Disk`` only (G at its centre; the elliptic kernel, module notes).
-    friction : FrictionTensor
-        Friction tensor (plane- or body-fixed).
-    vx, vy : float or array_like
-        Velocity of G in the fixed frame [m/s].
-    omega : float or array_like
-        Spin rate [rad/s], counter-clockwise positive.
-    phi : float or array_like, default 0
-        Body angle [rad].
-    load : float, default 1
-        Normal load P = m g [N].
-    map_tol : float in [1e-12, 1e-2], default 1e-9
-        Error target of the user-map quadrature, in units of P (force) and P × extent
-        (moment); unused for uniform and linear pressure (exact).
-
-    Returns
-    -------
-    Wrench
-        Force in the fixed frame [N], moment about G [N m] and the paper's components;
-        floats for scalar input, arrays of the broadcast shape otherwise.
-
-    Notes
-    -----
-    MODEL §2 (traction −p 𝔽 ŵ) over the footprint of MODEL §10. The wrench depends only on the
-    direction of (vx, vy, ω); at rest (v = ω = 0) a zero wrench is returned.
-
-    Examples
-    --------
-    >>> from slidespin import FrictionTensor, UniformPressure
-    >>> from slidespin.contact.shapes import Annulus
-    >>> w = footprint_wrench(Annulus(0.05, 0.1), UniformPressure(), FrictionTensor(0.3, 0.3),
-    ...                      0.0, 0.0, 1.0, load=10.0)
-    >>> round(w.moment, 12)  # −(2/3) μ P (R³ − r³)/(R² − r²)
-    -0.233333333333
-    """
-    if not isinstance(footprint, (Polygon, Rectangle, Annulus, Pads, Blade)):
-        raise ValueError(
-            f"footprint = {footprint!r} is invalid; valid values: Polygon, Rectangle, Disk, "
-            "Annulus, Pads or Blade"
-        )
-    if isinstance(footprint, Blade) and not isinstance(
-        pressure, (BoussinesqPressure, HertzPressure)
-    ):
-        _blade_law(footprint, pressure)  # a Blade takes the uniform line load only
-    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
-        if not isinstance(footprint, Disk):
-            from slidespin.contact.body import _footprint_law_error
-
-            raise ValueError(_footprint_law_error(footprint, pressure))
-    elif not isinstance(pressure, (UniformPressure, LinearPressure, PressureMap)):
-        raise ValueError(
-            f"pressure = {pressure!r} is invalid; valid values: UniformPressure(), "
-            "LinearPressure(xi_c, eta_c), PressureMap(function), and on a single Disk "
-            "BoussinesqPressure(), HertzPressure()"
-        )
-    if not isinstance(friction, FrictionTensor):
-        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
-    load = v.positive("load", load, "N")
-    map_tol = v.bounded("map_tol", map_tol, *MAP_TOL_RANGE)
-    if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
-        return _round_wrench(footprint, pressure, friction, vx, vy, omega, phi, load)
-    vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
-    theta = np.arctan2(vya, vxa)
-    # the dry-friction wrench depends on the direction of (v, ω) only (MODEL §2): scale each
-    # triple by a power of two (exact) to magnitude ≤ 1, so that no product in the kernel
-    # overflows for velocities near the largest float
-    _, expo = np.frexp(np.maximum(np.maximum(np.abs(vxa), np.abs(vya)), np.abs(oma)))
-    vxa, vya, oma = (np.ldexp(x, -expo) for x in (vxa, vya, oma))
-    t = friction.matrix
-    body_frame = friction.frame == "body"
-    arrays = footprint.to_arrays()
-    if isinstance(pressure, PressureMap):
-        fx = np.empty(vxa.size)
-        fy = np.empty(vxa.size)
-        mm = np.empty(vxa.size)
-        prep = _map_prepare(footprint, pressure, arrays, map_tol)
-        for i in range(vxa.size):
-            fx[i], fy[i], mm[i] = _map_wrench_world(
-                prep, t, body_frame, pha[i], vxa[i], vya[i], oma[i], map_tol
-            )
-    elif isinstance(footprint, Blade):  # the exact line-contact kernel
-        fx, fy, mm = blade_wrench_array(
-            *arrays.edges[0],
-            *footprint.centroid,
-            1.0,
-            t[0, 0],
-            t[0, 1],
-            t[1, 0],
-            t[1, 1],
-            body_frame,
-            pha,
-            vxa,
-            vya,
-            oma,
-        )
-    else:
-        geo = kernel_geometry(footprint, pressure, arrays)
-        fx, fy, mm = wrench_array(
-            arrays.edges,
-            arrays.circles,
-            geo,
-            t[0, 0],
-            t[0, 1],
-            t[1, 0],
-            t[1, 1],
-            body_frame,
-            pha,
-            vxa,
-            vya,
-            oma,
-        )
-    fx = fx * load
-    fy = fy * load
-    mm = mm * load
-    return Wrench.from_world(fx, fy, mm, theta, shape, scalar)
-
-
-def _round_wrench(disk, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
-    """The wrench on a disk under Boussinesq or Hertz pressure: the circle of its radius with
-    G at its centre, by the elliptic kernel (:func:`slidespin.friction_wrench`, unit load),
-    scaled to ``load``."""
-    from slidespin.contact.body import Body
-    from slidespin.contact.wrench import friction_wrench
-
-    w = friction_wrench(Body(disk, pressure, 1.0), friction, vx, vy, omega, phi, g=1.0)
-    return Wrench(
-        w.force_x * load,
-        w.force_y * load,
-        w.moment * load,
-        w.tangential * load,
-        w.normal * load,
-        w.moment_paper * load,
-        w.theta,
-    )
-
-
-# ---------------------------------------------------------------------------------------------
-# user pressure maps
-
-
-def _map_prepare(footprint, pmap, arrays, tol=MAP_TOL):
+def map_prepare(footprint, pmap, arrays, tol=MAP_TOL):
     total, sx, sy = map_scale(footprint, pmap, tol)
     pts, w = area_rule(footprint, graded=True)
     scale = 1.0 / total  # unit load
@@ -257,7 +67,7 @@ def _map_prepare(footprint, pmap, arrays, tol=MAP_TOL):
     }
 
 
-def _map_wrench_world(prep, t, body_frame, phi, vx, vy, omega, tol):
+def map_wrench_world(prep, t, body_frame, phi, vx, vy, omega, tol):
     c, s = math.cos(phi), math.sin(phi)
     rot = np.array([[c, -s], [s, c]])
     tb = t if body_frame else rot.T @ t @ rot

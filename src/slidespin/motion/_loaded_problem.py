@@ -1,0 +1,187 @@
+"""One loaded run in natural units (MODEL §11): the slip equations with applied loads, and
+the static-friction set C that decides stick.
+
+During slip the Newton–Euler equations are m dv/dt = F + Q, I dω/dt = M + T + r_Q × Q
+(:mod:`slidespin.motion.loads`). They are integrated in the regularised time of MODEL §5: with
+s = √(vx² + vy² + k² ω²), k = √(I/m), u = (vx, vy, k ω)/s, the friction accelerations
+A(u) = cos α (Fx, Fy, M/k)/(m g) (degree 0 in the speed) and the applied ones
+B(t, φ) = (Qx, Qy, T_G/k)/(m g), Newton–Euler read dv/dt = A + B, so s ds/dt = s u·(A + B) and
+
+    ds/dt = u·X,    du/dt = (X − (u·X) u)/s,     X = A + B,
+
+and with dt = s dτ:
+
+    du/dτ = X − (u·X) u,   d ln s/dτ = u·X,   dt/dτ = s,
+    dx/dτ = s² u₁,  dy/dτ = s² u₂,  dφ/dτ = s² u₃/k,
+
+plus the friction and load work, dW_f/dτ = s² u·A and dW_Q/dτ = s² u·B. This is MODEL §5's
+system with X in place of A; B does not scale with s, so u·X may be positive (the body
+speeds up). The stop (s → 0 with u·X < 0) is an exponential approach in τ as before.
+
+Every patch: the ellipses and circles of the paper and the footprints of MODEL §10 (a
+``Blade``, a line contact, included); the friction wrench comes from
+:class:`slidespin.contact._engine.TwistWrench` (the elliptic or the exact footprint kernel)
+and the static-friction set C from ``slidespin.contact.static_set.static_support``. Natural
+units use the body's length unit (:attr:`slidespin.Body.length_unit`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from slidespin._validate import _short
+from slidespin.contact._engine import TwistWrench
+from slidespin.contact.static_set import static_support
+from slidespin.contact.statics import WRENCH_MAX, _load_factor_nat, _onset_from_par
+
+_TOL = 1e-13
+
+
+class _Problem:
+    """Everything in natural units (a = m = g = 1, time √(a/g)) for one loaded run."""
+
+    def __init__(self, body, friction, load, incline, g):
+        self.body, self.friction, self.load, self.incline, self.g = body, friction, load, incline, g
+        self.a = body.length_unit
+        self.t_unit = math.sqrt(self.a / g)
+        self.v_unit = math.sqrt(self.a * g)
+        self.tw = TwistWrench(body, friction, _TOL)  # the wrench of any patch
+        self.k = self.tw.k
+        # a constant tilt keeps its factors as numbers (bit for bit the fixed-plane run)
+        self.fixed_tilt = incline is None or incline.is_constant
+        self.nf = 1.0 if incline is None or not self.fixed_tilt else incline.normal_factor
+        if incline is None or not self.fixed_tilt:
+            self.grav = (0.0, 0.0)
+        else:
+            dx, dy = incline.direction
+            self.grav = (incline.downhill_factor * dx, incline.downhill_factor * dy)
+        self.constant = (load is None or load.is_constant) and self.fixed_tilt
+        self.n_rhs = 0
+        self.failure = ""
+        self._support = {}
+        self._d_last = None
+
+    def nf_at(self, t):
+        """cos α at the natural time t (the constant cos α for a fixed tilt)."""
+        if self.fixed_tilt:
+            return self.nf
+        return self.incline.normal_factor_at(t * self.t_unit)
+
+    def b(self, t, phi):
+        """Applied accelerations (Qx, Qy, T_G/k)/(m g), scaled natural coordinates."""
+        if self.fixed_tilt:
+            bx, by = self.grav
+        else:
+            sa = self.incline.downhill_factor_at(t * self.t_unit)
+            dx, dy = self.incline.direction
+            bx, by = sa * dx, sa * dy
+        bm = 0.0
+        if self.load is not None:
+            qx, qy, mz = self.load.wrench(t * self.t_unit, phi, self.body.mass_centre)
+            mg = self.body.mass * self.g
+            bx += qx / mg
+            by += qy / mg
+            bm = mz / (mg * self.a * self.k)
+            big = max(abs(qx), abs(qy), abs(mz) / self.a) / mg
+            if not big <= WRENCH_MAX:
+                raise ValueError(
+                    f"load = {_short(self.load)} gives (Qx, Qy, T) = ({qx:.6g} N, {qy:.6g} N, "
+                    f"{mz:.6g} N m) at t = {t * self.t_unit:.6g} s, {big:.3g} in units of "
+                    f"(m g, m g, m g a); valid range: force and torque up to {WRENCH_MAX:g} "
+                    "m g (m g a)"
+                )
+        return bx, by, bm
+
+    def friction_acc(self, u1, u2, u3, phi, t=0.0):
+        fx, fy, m = self.tw(phi, u1, u2, u3 / self.k)
+        nf = self.nf if self.fixed_tilt else self.nf_at(t)
+        return fx * nf, fy * nf, m * nf / self.k
+
+    def rhs(self, tau, y):
+        self.n_rhs += 1
+        u1, u2, u3 = y[0], y[1], y[2]
+        inv = 1.0 / math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
+        u1 *= inv
+        u2 *= inv
+        u3 *= inv
+        ax, ay, am = self.friction_acc(u1, u2, u3, y[7], y[4])
+        bx, by, bm = self.b(y[4], y[7])
+        xx, xy, xm = ax + bx, ay + by, am + bm
+        ux = u1 * xx + u2 * xy + u3 * xm
+        s = math.exp(y[3])
+        s2 = s * s
+        return np.array(
+            [
+                xx - ux * u1,
+                xy - ux * u2,
+                xm - ux * u3,
+                ux,
+                s,
+                s2 * u1,
+                s2 * u2,
+                s2 * u3 / self.k,
+                s2 * (u1 * ax + u2 * ay + u3 * am),
+                s2 * (u1 * bx + u2 * by + u3 * bm),
+            ]
+        )
+
+    def jac(self, tau, y):
+        """Forward-difference Jacobian of :meth:`rhs` (the columns of x, y, W vanish)."""
+        f0 = self.rhs(tau, y)
+        jm = np.zeros((10, 10))
+        for j in (0, 1, 2, 3, 4, 7):
+            h = 1e-7 * max(1.0, abs(y[j]))
+            yh = y.copy()
+            yh[j] += h
+            jm[:, j] = (self.rhs(tau, yh) - f0) / h
+        return jm
+
+    def stiffness(self, y):
+        """Ratio of the fastest relaxation rate of u to the growth rate |u·X| (in τ)."""
+        jm = self.jac(0.0, y)[:3, :3]
+        u = y[:3] / np.linalg.norm(y[:3])
+        proj = np.eye(3) - np.outer(u, u)
+        kappa = float(np.max(np.abs(np.linalg.eigvals(proj @ jm @ proj))))
+        rate = abs(float(self.rhs(0.0, y)[3]))
+        return kappa / max(rate, 1e-300)
+
+    def support(self, phi):
+        key = float(phi)
+        if key not in self._support:
+            if len(self._support) > 8:
+                self._support.clear()
+            self._support[key] = static_support(self.tw, self.friction, key)
+        return self._support[key]
+
+    def w_nat(self, t, phi):
+        """The applied wrench per unit normal load, in the coordinates of C (natural)."""
+        bx, by, bm = self.b(t, phi)
+        return np.array([bx, by, bm * self.k]) / self.nf_at(t)
+
+    def gauge(self, t, phi, w=None):
+        """γ = 1/λ*: the body at rest holds iff γ ≤ 1."""
+        if w is None:
+            w = self.w_nat(t, phi)
+        if not w.any():
+            return 0.0
+        lam, self._d_last = _load_factor_nat(self.support(phi), w, self._d_last)
+        return 1.0 / lam
+
+    def onset(self, t, phi):
+        """Onset (u, λ, residual) at a time where :meth:`gauge` has found γ > 1.
+
+        Raises :class:`~slidespin.contact.statics.OnsetNotFound` if the solve fails.
+        """
+        b = np.array(self.b(t, phi))
+        return _onset_from_par(
+            self.tw,
+            self.friction,
+            phi,
+            b,
+            self.nf_at(t),
+            self.support(phi),
+            slipping=True,
+            d0=self._d_last,
+        )
