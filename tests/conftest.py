@@ -1,13 +1,24 @@
-"""Shared fixtures: bodies and tensors used across the test modules."""
+"""Shared fixtures: bodies and tensors used across the test modules.
+
+The tests mirror the package's layers (``contact/``, ``motion/``, ``analysis/``, ``studies/``,
+``viz/``, ``cli/``, ``paper/``; ``api/`` checks the whole public surface, ``docs/`` the site
+and the gallery). The slow independent references they compare against live apart in
+``references/`` (written from MODEL.md, importing nothing of slidespin's kernels) and are put
+on the import path here, as ``reference`` and ``footprint_reference``.
+"""
 
 from __future__ import annotations
 
 import math
+import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
 
 import slidespin as ss
+
+sys.path.insert(0, str(Path(__file__).resolve().parent / "references"))
 
 LAWS = ("uniform", "linear", "boussinesq", "hertz")
 

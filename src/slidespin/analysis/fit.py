@@ -274,7 +274,7 @@ def fit(
     g : float, default 9.81
         Gravitational acceleration [m/s²].
     rtol, max_step : float
-        Passed to :func:`slidespin.motion.simulate`. With the defaults (1e-12, the integrator's own
+        Passed to :func:`slidespin.simulate`. With the defaults (1e-12, the integrator's own
         steps) the model between steps (cubic Hermite) is within 1e-6 a and 1e-5 rad of a
         dense run (tests/test_fit.py), far below tracking noise.
     fd_step : float, default 1e-4

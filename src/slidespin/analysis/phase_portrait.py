@@ -105,7 +105,7 @@ def phase_portrait(
 
     The initial states are v₀ = s cos α, k ω₀ = s sin α (k = √(I/m)) for n angles α evenly
     spaced in (0, π/2), so every ratio v₀/(a ω₀) is represented. Each is integrated to its
-    stop with :func:`slidespin.motion.simulate` (terminal ratio and ending); the curve drawn is the
+    stop with :func:`slidespin.simulate` (terminal ratio and ending); the curve drawn is the
     same regularised system sampled densely until s has fallen to 1e-4 of its start, then
     closed at the origin.
 

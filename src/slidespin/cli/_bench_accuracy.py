@@ -1,6 +1,6 @@
 """What ``slidespin bench`` measures the engine against (:mod:`slidespin.cli.bench`).
 
-* accuracy: the wrench against the slow adaptive reference (``tests/reference.py`` of a source
+* accuracy: the wrench against the slow adaptive reference (``tests/references/reference.py`` of a source
   checkout) and the demo trajectory against a run at rtol = 1e-13;
 * the baselines: (a) the naive route, ``scipy.integrate.dblquad`` for Fx, Fy and M at every
   right-hand side driven by ``solve_ivp`` RK45 with a stop event, time-boxed; (b) the paper's
@@ -30,8 +30,8 @@ from slidespin.contact.wrench import friction_wrench
 
 
 def _reference_module(name="reference.py"):
-    """``tests/<name>`` of a source checkout as a module, or None (an installed package)."""
-    path = Path(__file__).resolve().parents[3] / "tests" / name
+    """``tests/references/<name>`` of a source checkout as a module, or None (an installed package)."""
+    path = Path(__file__).resolve().parents[3] / "tests" / "references" / name
     if not path.is_file():
         return None
     spec = importlib.util.spec_from_file_location("_slidespin_" + path.stem, path)
@@ -48,7 +48,7 @@ def bench_accuracy(quick):
     out = {}
     ref = _reference_module()
     if ref is None:
-        out["wrench"] = {"note": "tests/reference.py not found (installed package)"}
+        out["wrench"] = {"note": "tests/references/reference.py not found (installed package)"}
     else:
         rng = np.random.default_rng(11)
         worst = 0.0

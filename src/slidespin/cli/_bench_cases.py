@@ -48,7 +48,7 @@ def _demo():
 
 
 def _natural(body, friction, state, g):
-    """Parameter vector and regularised initial state of :func:`slidespin.motion.simulate`."""
+    """Parameter vector and regularised initial state of :func:`slidespin.simulate`."""
     # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.motion import _flow
 

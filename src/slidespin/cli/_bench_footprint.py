@@ -2,7 +2,7 @@
 
 On an irregular convex octagon and on a ring (:mod:`slidespin.contact.shapes`): the exact
 footprint wrench from compiled code (ICR near and far), its error against the slow reference
-(``tests/footprint_reference.py`` of a source checkout), a trajectory to the converged stop, and
+(``tests/references/footprint_reference.py`` of a source checkout), a trajectory to the converged stop, and
 the batch throughput as a ratio to the demo ellipse's measured in the same run.
 """
 

@@ -8,15 +8,15 @@ Everything is measured in one run on this machine and printed as a table (or as 
   (the engine's inner call: constants and workspace reused), with its node counts;
 * one trajectory to the converged stop (the demo case; and the mean over a batch, one thread);
 * footprints (:mod:`slidespin.contact.shapes`): the exact footprint wrench from compiled code on an
-  octagon and on a ring, its error against the slow reference (``tests/footprint_reference.py``
+  octagon and on a ring, its error against the slow reference (``tests/references/footprint_reference.py``
   of a source checkout), a trajectory to the converged stop on each, and the batch throughput
   on each as a ratio to the ellipse's measured in the same run;
 * trajectories per second on all cores (:func:`slidespin.motion.batch.simulate_many`), and the peak
   memory of a batch (measured in a subprocess);
-* the Python-call overhead of :func:`slidespin.motion.simulate` beyond its compiled part;
+* the Python-call overhead of :func:`slidespin.simulate` beyond its compiled part;
 * the JIT compile time of the first call, cold (empty numba cache, in a subprocess) and with
   the cache;
-* the accuracy reached: the wrench against the slow adaptive reference (``tests/reference.py``
+* the accuracy reached: the wrench against the slow adaptive reference (``tests/references/reference.py``
   of a source checkout) and the trajectory against a run at rtol = 1e-13;
 * the baselines: (a) the naive route, ``scipy.integrate.dblquad`` for Fx, Fy and M at every
   right-hand side driven by ``solve_ivp`` RK45 (rtol 1e-8) with a stop event, time-boxed by

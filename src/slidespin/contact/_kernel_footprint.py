@@ -63,7 +63,7 @@ the switches: the fan ≲ 9e-13 at 24 extents, the rules ≲ 1e-13 at 24 (n = 4)
 falls with |c|. Beyond ``FAR_ICR`` × extent, or ω = 0, the motion is a translation:
 F = −P_tot 𝔽v̂, M = (r_P − r_G) × F (r_P the pressure centroid).
 
-Accuracy: against the independent reference (``tests/footprint_reference.py``) and the
+Accuracy: against the independent reference (``tests/references/footprint_reference.py``) and the
 ellipse kernel on a disk, ≲ 3e-12 P and P·extent for every motion state tested (ICR inside,
 on an edge, at a (reflex) vertex, in a ring's hole, on and near a rim, far, ω = 0).
 

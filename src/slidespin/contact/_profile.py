@@ -43,7 +43,7 @@ class Profile:
     """Samples interpolated linearly in time (constant beyond the ends): the callable that
     :meth:`Load.piecewise_linear` and :meth:`Incline.piecewise_linear` build.
 
-    Its ``times`` (the knots) are where the stick test of :func:`slidespin.motion.simulate` always
+    Its ``times`` (the knots) are where the stick test of :func:`slidespin.simulate` always
     looks: between two knots the profile is affine in t.
     """
 

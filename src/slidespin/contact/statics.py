@@ -161,7 +161,7 @@ def load_factor(
     incline : Incline or None
         A plane of fixed tilt α (MODEL §11): the normal load, hence C, scales by cos α, and
         gravity's downhill pull m g sin α d at G is added to ``applied_wrench``, as
-        :func:`slidespin.motion.simulate` does. λ* then multiplies the total W_a + m g sin α d.
+        :func:`slidespin.simulate` does. λ* then multiplies the total W_a + m g sin α d.
         A tilt varying in time is refused (give the plane at one time).
 
     Returns

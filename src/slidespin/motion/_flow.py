@@ -76,7 +76,7 @@ def rhs(par, fe, fc, geo, y, out):
 def initial_state(par, vx, vy, wn, x, y, phi):
     """Regularised initial state (MODEL §5) from the velocity (vx, vy) of G, the spin ω (as
     ``wn``) and the position (x, y, φ), all in natural units; a body at rest gets
-    ln s = −inf. The same arithmetic as :func:`slidespin.motion.simulate`, so that batch and single
+    ln s = −inf. The same arithmetic as :func:`slidespin.simulate`, so that batch and single
     runs agree to the last bit."""
     k = par[P_K]
     y0 = np.zeros(NY)

@@ -23,7 +23,7 @@ from slidespin.motion._integrator import ST_AT_REST, integrate_fp
 @jit(error_model="numpy")
 def stop_direction(yend):
     """|u₁₂| and the direction ϑ = atan2(u₂, u₁) of each stop state, with the same libm
-    functions as :func:`slidespin.motion.simulate` (math.hypot, math.atan2), bit for bit."""
+    functions as :func:`slidespin.simulate` (math.hypot, math.atan2), bit for bit."""
     n = yend.shape[0]
     u12 = np.empty(n)
     theta = np.empty(n)

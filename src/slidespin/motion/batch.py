@@ -165,7 +165,7 @@ def simulate_cases(
         ``x``, ``y`` [m], ``phi`` [rad], ``vx``, ``vy`` [m/s], ``omega`` [rad/s]. See
         :data:`CASE_FIELDS` for defaults.
     rtol : float
-        Integrator tolerance, as in :func:`slidespin.motion.simulate`.
+        Integrator tolerance, as in :func:`slidespin.simulate`.
     max_steps : int
         Step budget per case.
 
@@ -347,14 +347,14 @@ def simulate_many(
     g : float
         Gravitational acceleration [m/s²].
     rtol : float
-        Integrator tolerance, as in :func:`slidespin.motion.simulate`.
+        Integrator tolerance, as in :func:`slidespin.simulate`.
     max_steps : int
         Step budget per case.
 
     Returns
     -------
     StopResults
-        Gives the same numbers as :func:`slidespin.motion.simulate` case by case.
+        Gives the same numbers as :func:`slidespin.simulate` case by case.
     """
     if not isinstance(body, Body):
         raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
@@ -412,7 +412,7 @@ def simulate_bodies(
     Returns
     -------
     StopResults
-        The same numbers as :func:`slidespin.motion.simulate` case by case, to the last bit.
+        The same numbers as :func:`slidespin.simulate` case by case, to the last bit.
     """
     bodies = list(bodies) if not isinstance(bodies, Body) else None
     if bodies is None or not bodies or not all(isinstance(b, Body) for b in bodies):

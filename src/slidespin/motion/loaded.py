@@ -165,11 +165,11 @@ def simulate_loaded(
         )
     if load is not None and not isinstance(load, Load):
         raise ValueError(
-            f"load = {load!r} is invalid; valid values: a slidespin.motion.loads.Load or None"
+            f"load = {load!r} is invalid; valid values: a slidespin.Load or None"
         )
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(
-            f"incline = {incline!r} is invalid; valid values: a slidespin.contact.incline.Incline or None"
+            f"incline = {incline!r} is invalid; valid values: a slidespin.Incline or None"
         )
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)

@@ -129,7 +129,7 @@ class Load:
 
         Notes
         -----
-        The stick test of :func:`slidespin.motion.simulate` looks at every sample time (knot): the
+        The stick test of :func:`slidespin.simulate` looks at every sample time (knot): the
         load is affine between knots, and so the gauge of the static-friction set at the
         load is convex there, so a load that leaves the set is always found, however short
         the excursion (:func:`slidespin.motion.loaded.simulate_loaded`, ``scan_step``).

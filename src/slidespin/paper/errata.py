@@ -3,7 +3,7 @@
 For every erratum :func:`compute` evaluates the printed formula and the corrected one on the
 paper's own setting and reports the size of the error the printed form causes, with an
 independent check that the corrected form is right (against :func:`slidespin.friction_wrench`
-or :func:`slidespin.motion.simulate`, which share no code with the paper's route). The paper's route
+or :func:`slidespin.simulate`, which share no code with the paper's route). The paper's route
 itself (eq. 8–9, 12–13) is :mod:`slidespin.paper.semianalytic`; a brute-force 2-D quadrature
 over the patch evaluates the formulas of eq. 3 and (6) literally.
 """
@@ -224,7 +224,7 @@ def _e2(fx):
         f"{t_corr:.6f} s",
         f"the printed scale is not a time (units sqrt(m)/s); for a = 1 m it is off by a "
         f"factor g/(pi sqrt(a)) = {t_print / t_corr:.4f}",
-        f"slidespin.motion.simulate (SI units, regularised time): t_stop = {tr.t_stop:.6f} s "
+        f"slidespin.simulate (SI units, regularised time): t_stop = {tr.t_stop:.6f} s "
         f"(relative difference {_rel(t_corr, tr.t_stop):.1e})",
         {
             "t1_stop": run.t_stop,
@@ -425,7 +425,7 @@ def _e7(fx):
         f"writing Newton-Euler at C changes the stop time by "
         f"{100 * (rc.t_stop / rg.t_stop - 1):+.1f} % and theta* by "
         f"{rc.theta_stop - rg.theta_stop:+.3f} rad",
-        f"slidespin.motion.simulate at G: t1 = {tr.t_stop / sh.TIME_UNIT:.6f}, beta* = "
+        f"slidespin.simulate at G: t1 = {tr.t_stop / sh.TIME_UNIT:.6f}, beta* = "
         f"{tr.beta_stop / sh.A:.6f}, theta* = {tr.theta_stop:+.6f}",
         {
             "t1_centre": rc.t_stop,
@@ -527,7 +527,7 @@ def _e11(fx):
         '"Sliding and spinning stop at the same moment with theta = 0" (the velocity '
         "ends along the low-friction axis)",
         "true for a circular patch (theta* = 0 by symmetry); for the ellipse theta* "
-        "depends on the orientation phi at the stop (slidespin.analysis.terminal.terminal_states)",
+        "depends on the orientation phi at the stop (slidespin.terminal_states)",
         "theta* [rad] at the stop (fx from Table 1, mu = 0.12, v0 = omega0 = 1, "
         "theta0 = pi/4): uniform disk I* = 1/2 vs Figure 2's ellipse, phi0 = pi/4, pi/3, pi/2",
         "0 (claimed for every case)",

@@ -3,7 +3,7 @@
 The paper's run (§3.1): e = 0.866, uniform pressure, I* = (1 + κ²)/4, v₀ = ω₀ = 1, ϑ₀ = π/4
 (paper units, eq. 7) and φ₀ = π/4, π/3, π/2; fx (not printed) is inferred from Table 1 and
 μ (not printed either) defaults to 0.12. Each run is integrated to its stop by
-:func:`slidespin.motion.simulate`, and the path of the body is drawn with its outline.
+:func:`slidespin.simulate`, and the path of the body is drawn with its outline.
 
 The paper states that "sliding and spinning stop at the same moment with ϑ = 0". They do stop
 together (a mixed ending, β* finite), but ϑ* = 0 only for φ₀ = π/2, where the ellipse's axes

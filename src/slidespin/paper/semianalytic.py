@@ -512,7 +512,7 @@ def integrate(
 
     This is the paper's own route: semi-analytic wrench, a general-purpose ODE solver in the
     physical time, and a cut-off. It is the baseline the regularised compiled integrator of
-    :func:`slidespin.motion.simulate` is measured against.
+    :func:`slidespin.simulate` is measured against.
 
     Parameters
     ----------

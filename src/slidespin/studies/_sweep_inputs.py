@@ -5,7 +5,7 @@ to bodies, friction tensors, states and load columns (footprints, statics and lo
 with the input columns of the chunk file.
 
 Each distinct patch is built once per block and each distinct tensor once, so that the batch
-engine shares their compiled arrays: every case equals a single :func:`slidespin.motion.simulate`
+engine shares their compiled arrays: every case equals a single :func:`slidespin.simulate`
 call on the same body, to the last bit.
 """
 

@@ -18,7 +18,7 @@ cases per task; the results are identical to the local ones, bit for bit.
 
 Each distinct patch is built once per chunk and the cases go to
 :func:`slidespin.motion.batch.simulate_bodies` together: every case equals a single
-:func:`slidespin.motion.simulate` call on the same body, to the last bit.
+:func:`slidespin.simulate` call on the same body, to the last bit.
 
 The top-level key ``compute`` chooses the result of each case: ``"stop"`` (default; the
 compiled batch engine), ``"statics"`` (critical tilt, load factor, sticks or slides) or

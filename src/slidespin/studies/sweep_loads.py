@@ -21,7 +21,7 @@ name (``load_fx``, ``incline_angle``, ...), and ``t_end`` of ``[solver]``:
 (``ending`` = ``sticks`` iff λ* ≥ 1, else ``slides``; status ``ok``). The initial velocities
 are not used.
 
-``compute = "loaded"`` (:func:`slidespin.motion.simulate` with ``load=``, ``incline=``, ``t_end=``,
+``compute = "loaded"`` (:func:`slidespin.simulate` with ``load=``, ``incline=``, ``t_end=``,
 i.e. :func:`~slidespin.motion.loaded.simulate_loaded`): the ending and status of the run
 (:class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`) and its final state.
 
@@ -234,7 +234,7 @@ def compute_statics(
 def compute_loaded(
     bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict, given: set, rtol: float
 ) -> dict:
-    """One loaded run per case (:func:`slidespin.motion.simulate` with ``load``, ``incline`` and
+    """One loaded run per case (:func:`slidespin.simulate` with ``load``, ``incline`` and
     ``t_end``); the columns of :data:`LOADED_COLUMNS` (final state at the end of the run,
     number and total time of the slip phases, energy-balance error, right-hand sides)."""
     n = len(bodies)

@@ -80,7 +80,7 @@ def to_pandas(out, *, include_unconverged: bool = False):
         import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
     except ImportError:  # pragma: no cover - depends on the environment
         raise ImportError(
-            "slidespin.studies.sweep.to_pandas needs pandas: pip install pandas "
+            "a sweep as a pandas DataFrame (to_pandas) needs pandas: pip install pandas "
             "(or pip install 'slidespin[test]')"
         ) from None
     table = read_sweep(out, include_unconverged=True)

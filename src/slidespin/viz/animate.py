@@ -175,7 +175,7 @@ def animate(
     Parameters
     ----------
     trajectory : Trajectory or LoadedTrajectory
-        The motion to draw, e.g. from :func:`slidespin.motion.simulate`.
+        The motion to draw, e.g. from :func:`slidespin.simulate`.
     path : str or os.PathLike
         Output file; must end in ``.gif``. Written whole or not at all (a temporary file in
         the same directory is renamed into place).

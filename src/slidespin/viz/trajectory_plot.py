@@ -125,7 +125,7 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     Parameters
     ----------
     traj : Trajectory or LoadedTrajectory
-        Result of :func:`slidespin.motion.simulate`. A loaded run (with ``phases``) is drawn by
+        Result of :func:`slidespin.simulate`. A loaded run (with ``phases``) is drawn by
         :func:`plot_loaded_trajectory`.
     title : str, optional
         Figure title.
@@ -248,7 +248,7 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     Parameters
     ----------
     traj : LoadedTrajectory
-        Result of :func:`slidespin.motion.simulate` with a load, a slope or ``t_end``
+        Result of :func:`slidespin.simulate` with a load, a slope or ``t_end``
         (:func:`slidespin.motion.loaded.simulate_loaded`).
     title : str, optional
         First line of the figure title.

@@ -36,7 +36,7 @@ from slidespin.studies.sweep_parse import load_spec
 from slidespin.studies.sweep_read import read_sweep, to_pandas
 from slidespin.studies.sweep_spec import SweepError
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 G = 9.81
 
 

@@ -14,7 +14,7 @@ import pytest
 
 from slidespin.cli.main import main
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 DEMO = str(EXAMPLES / "demo.toml")
 
 

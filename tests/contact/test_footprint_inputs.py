@@ -1,4 +1,5 @@
-"""Review findings on footprints (API review P1-5, P1-6, P2-4, messages, exports).
+"""Footprint inputs: polygon simplicity, pressure maps with rim singularities, messages and
+exports (found in the API review: P1-5, P1-6, P2-4).
 
 Each test compares against truth written apart from the code under test: a slow pairwise
 segment-intersection reference for polygon simplicity, the exact Hertz disk for a Hertz-shaped

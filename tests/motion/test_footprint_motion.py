@@ -314,7 +314,7 @@ from pathlib import Path  # noqa: E402
 
 from slidespin.studies.case import case_from_dict, load_case  # noqa: E402
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _case(patch, pressure=None):

@@ -1,4 +1,5 @@
-"""Findings of the API review of the loaded engine (issue #13), each against independent truth:
+"""Loaded runs at their edges: short pulses, tilts that grow, gravity's pull in the statics,
+messages and reprs (found in the API review of issue #13), each against independent truth:
 closed forms and 1-D equations of motion integrated here by hand (scipy quad and brentq on
 the analytic speed), never against the code under test.
 

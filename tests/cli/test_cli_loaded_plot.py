@@ -77,7 +77,7 @@ angle_deg = 25.0
 t_end = 0.5
 """
 
-SRC = Path(__file__).resolve().parents[1] / "src" / "slidespin"
+SRC = Path(__file__).resolve().parents[2] / "src" / "slidespin"
 
 
 @pytest.fixture(scope="module")

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 DEMO = (EXAMPLES / "demo.toml").read_text()
 SWEEP = (
     'name = "small"\nkind = "random"\nchunk_size = 10\n'

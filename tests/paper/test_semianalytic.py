@@ -2,7 +2,7 @@
 
 Independent truths: scipy's adaptive quadrature of the η-integrals, the compiled wrench of
 slidespin (a different method: polar integration about the centre of rotation), and
-slidespin.motion.simulate (a different integrator in a different time variable).
+slidespin.simulate (a different integrator in a different time variable).
 """
 
 import math

@@ -14,7 +14,7 @@ import slidespin as ss
 from slidespin.cli.main import demo_case, main
 from slidespin.studies.case import load_case
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def run(*args, cwd=None):

@@ -18,7 +18,7 @@ from slidespin.studies.sweep_parse import load_spec
 from slidespin.studies.sweep_read import read_sweep
 from slidespin.studies.sweep_spec import SweepError
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def same(x, y) -> bool:

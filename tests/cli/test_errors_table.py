@@ -18,7 +18,7 @@ import pytest
 import slidespin as ss
 from slidespin.cli.main import main
 
-DOC = Path(__file__).resolve().parents[1] / "docs" / "errors.md"
+DOC = Path(__file__).resolve().parents[2] / "docs" / "errors.md"
 
 GOOD_CASE = """\
 [patch]

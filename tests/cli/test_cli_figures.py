@@ -18,7 +18,7 @@ from slidespin.cli.main import CLI_MAX_STEP  # noqa: E402
 from slidespin.studies.case import load_case  # noqa: E402
 from slidespin.viz.trajectory_plot import BETA_LIMIT, plot_trajectory  # noqa: E402
 
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def run(name):

@@ -19,7 +19,7 @@ import slidespin as ss
 
 cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLES = os.path.join(ROOT, "examples")
 DATA = os.path.join(EXAMPLES, "fit_synthetic.csv")
 CASE = os.path.join(EXAMPLES, "fit_case.toml")

@@ -26,7 +26,7 @@ from slidespin.motion.loads import Load, applied_wrench
 from slidespin.studies.load_tables import load_from_table
 
 G = 9.81
-EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def disk(law=None, r=0.05, m=1.0):

@@ -15,7 +15,7 @@ import slidespin as ss
 from slidespin.cli import animate as animate_cli
 from slidespin.viz import animate as anim
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 G = 9.81
 
 
