@@ -71,9 +71,8 @@ numpydoc_xref_param_type = False
 nitpicky = True
 nitpick_ignore_regex = [
     ("py:.*", r"(numpy|np|pandas|pd|scipy|matplotlib|dask|distributed|pyarrow|numba)(\..*)?"),
-    ("py:.*", r"slidespin\._.*"),
-    # the per-table modules of slidespin.paper are listed on its page, not documented one by one
-    ("py:mod", r"slidespin\.paper\..*"),
+    # private modules (``slidespin._io``, ``slidespin.contact._engine``, ...) and their names
+    ("py:.*", r"slidespin(\..*)?\._.*"),
 ]
 
 # -- Gallery ------------------------------------------------------------------------------
@@ -210,6 +209,10 @@ def _home_module(what: str, name: str, obj) -> str | None:
     return None
 
 
+def _private(modname: str) -> bool:
+    return any(p.startswith("_") for p in modname.split("."))
+
+
 def _qualify(match: re.Match, module) -> str:
     import inspect
 
@@ -230,16 +233,40 @@ def _qualify(match: re.Match, module) -> str:
     if inspect.isclass(head) or inspect.isroutine(head):
         home_mod = getattr(head, "__module__", "") or ""
         full = f"{home_mod}.{head.__qualname__}"
+        if _private(home_mod) and not _private(module.__name__) and first in getattr(
+            module, "__all__", ()
+        ):  # defined in a private module, documented where this module re-exports it
+            home_mod = module.__name__
+            full = f"{home_mod}.{first}"
     else:  # a constant: the module whose ``#:`` comment documents it, else this one
         home_mod = module.__name__
         full = _documented_home(module.__name__, head) or f"{home_mod}.{first}"
-    if not home_mod.startswith("slidespin") or any(
-        p.startswith("_") for p in home_mod.split(".")
-    ):
+    if not home_mod.startswith("slidespin") or _private(home_mod):
         return match.group(0)
     full = ".".join([full, *rest])
     title = target.rpartition(".")[2] if tilde else target
     return f":{role}:`{title} <{full}>`"
+
+
+def _type_docstring(what: str, obj, lines: list[str]) -> bool:
+    """True if ``lines`` are the docstring of the type of a constant (autodoc's fallback for
+    a constant without a ``#:`` comment: a tuple would show "Built-in immutable sequence")."""
+    import inspect
+
+    if what not in ("data", "attribute") or inspect.isclass(obj) or inspect.isroutine(obj):
+        return False
+    text = [line.strip() for line in lines if line.strip()]
+    for doc in (getattr(obj, "__doc__", None), getattr(type(obj), "__doc__", None)):
+        doc = inspect.cleandoc(doc) if isinstance(doc, str) else ""
+        if doc and text and doc.splitlines()[0].strip() == text[0]:
+            return True
+    return False
+
+
+def _drop_type_docstring(app, what, name, obj, options, lines) -> None:
+    """Before numpydoc renders it: a constant without a comment has no docstring."""
+    if _type_docstring(what, obj, lines):
+        lines[:] = []
 
 
 def _process_docstring(app, what, name, obj, options, lines) -> None:
@@ -253,21 +280,39 @@ def _process_docstring(app, what, name, obj, options, lines) -> None:
 
 
 # -- API pages -----------------------------------------------------------------------------
-# Each docs/api/<module>.rst page includes _generated/api/<module>.rst, written here:
+# The reference follows the layers of the code (docs/development.md, "Where things live"):
+# docs/api/slidespin.rst documents the top-level names (``slidespin.__all__``), and one page
+# per layer, docs/api/<layer>.rst, includes _generated/api/slidespin.<layer>.rst, written here:
+# the sub-package's docstring, then one section per public module of the layer (every module
+# whose name has no leading underscore, found on disk, so that a new module is documented
+# without a change here). Each module's section is
 # * ``automodule`` with every member of ``__all__``; autodoc documents module data only when
 #   it has a ``#:`` doc comment, so each constant without one gets an ``autodata`` entry, and
 #   every public name is in the reference;
-# * a module whose name the package hides (``slidespin.limit_surface`` is also the function
-#   re-exported at the top level) cannot be declared under that name a second time: its page
-#   shows the module docstring and lists its members one by one.
+# * for a module whose name its parent package hides (``slidespin.cli.main`` is also the
+#   function re-exported by ``slidespin.cli``), which cannot be declared under that name a
+#   second time: the module docstring and its members one by one.
+# Private modules (``_*.py``) are not documented; references to them are ignored above.
+LAYERS = ("contact", "motion", "analysis", "studies", "viz", "paper", "cli")
+
+
+def layer_modules(layer: str) -> list[str]:
+    """The public modules of ``slidespin.<layer>`` (no leading underscore), sorted."""
+    import importlib
+    import pkgutil
+
+    package = importlib.import_module(f"slidespin.{layer}")
+    return sorted(
+        f"{package.__name__}.{info.name}"
+        for info in pkgutil.iter_modules(package.__path__)
+        if not info.name.startswith("_")
+    )
+
+
 API_MODULES = (
-    "slidespin", "slidespin.batch", "slidespin.sweep", "slidespin.sweep_loads",
-    "slidespin.terminal", "slidespin.outcomes", "slidespin.fit", "slidespin.loads", "slidespin.statics",
-    "slidespin.loaded", "slidespin.limit_surface", "slidespin.footprint",
-    "slidespin.footprint_pressure", "slidespin.footprint_wrench", "slidespin.pressure",
-    "slidespin.friction", "slidespin.geometry", "slidespin.animate", "slidespin.plotting",
-    "slidespin.case", "slidespin.cli", "slidespin.paper", "slidespin.simulate", "slidespin.body",
-    "slidespin.bench",
+    "slidespin",
+    *(f"slidespin.{layer}" for layer in LAYERS),
+    *(module for layer in LAYERS for module in layer_modules(layer)),
 )
 
 
@@ -283,7 +328,8 @@ def _public_names(mod) -> list[str]:
 
 
 def shadowed(module: str) -> bool:
-    """True if ``slidespin.<name>`` is not this module (a re-exported function hides it)."""
+    """True if ``<parent>.<name>`` is not this module (a name re-exported by the parent
+    package hides it, as the function ``slidespin.cli.main`` hides the module)."""
     import importlib
 
     parent, _, short = module.rpartition(".")
@@ -316,6 +362,29 @@ def _documented_home(module: str, obj) -> str | None:
     return None
 
 
+def _private_doc(name: str, obj) -> list[str]:
+    """The ``#:`` comment of ``obj`` where a private module defines it under ``name`` (the
+    public module that re-exports it is its documented home: the comment is shown there)."""
+    import sys
+
+    from sphinx.pycode import ModuleAnalyzer
+
+    for modname, mod in sorted(sys.modules.items()):
+        if not modname.startswith("slidespin.") or not any(
+            p.startswith("_") for p in modname.split(".")
+        ):
+            continue
+        if getattr(mod, name, None) is not obj:
+            continue
+        try:
+            docs = ModuleAnalyzer.for_module(modname).find_attr_docs()
+        except Exception:
+            continue
+        if ("", name) in docs:
+            return [line for line in docs[("", name)] if line.strip()]
+    return []
+
+
 def _api_page(module: str) -> str:
     import importlib
     import inspect
@@ -329,8 +398,8 @@ def _api_page(module: str) -> str:
         attr_docs = {}
     hidden = shadowed(module)
     if hidden:
-        short = module.rpartition(".")[2]
-        lines = [f".. note:: ``slidespin.{short}`` is the function of the same name, which hides "
+        parent, _, short = module.rpartition(".")
+        lines = [f".. note:: ``{parent}.{short}`` is the function of the same name, which hides "
                  f"this module: take its names with ``from {module} import NAME`` (``import "
                  f"{module} as m`` gives the function).", "",
                  f".. automodule:: {module}", "   :no-index:", "",
@@ -352,17 +421,34 @@ def _api_page(module: str) -> str:
         elif ("", name) not in attr_docs and (home := _documented_home(module, obj)):
             # a constant re-exported from the module that documents it (``#:``)
             lines += [f".. py:data:: {name}", "", f"   The same object as :data:`{home}`.", ""]
+        elif ("", name) not in attr_docs and (doc := _private_doc(name, obj)):
+            # a constant defined and commented (``#:``) in a private module: its comment here
+            lines += [f".. autodata:: {name}", "", *(f"   {line}" for line in doc), ""]
         elif hidden or ("", name) not in attr_docs:
             lines += [f".. autodata:: {name}", ""]
     return "\n".join(lines) + "\n"
 
 
+def _layer_page(layer: str) -> str:
+    """The sub-package's docstring, then one section per public module of the layer."""
+    package = f"slidespin.{layer}"
+    parts = [_api_page(package)]
+    for module in layer_modules(layer):
+        title = f"``{module}``"
+        parts.append(f"{title}\n{'-' * len(title)}\n\n{_api_page(module)}")
+    return "\n".join(parts)
+
+
 def _api_pages(app) -> None:
     out = HERE / "_generated" / "api"
     out.mkdir(parents=True, exist_ok=True)
-    for module in API_MODULES:
-        text = _api_page(module)
-        path = out / f"{module}.rst"
+    pages = {"slidespin": _api_page("slidespin")}
+    pages.update({f"slidespin.{layer}": _layer_page(layer) for layer in LAYERS})
+    for path in out.glob("*.rst"):  # pages of an earlier layout
+        if path.stem not in pages:
+            path.unlink()
+    for name, text in pages.items():
+        path = out / f"{name}.rst"
         if not path.exists() or path.read_text() != text:
             path.write_text(text)
 
@@ -371,16 +457,16 @@ def _front_page_animation(app) -> None:
     """Write ``_generated/demo.gif`` (the demo as an animation) for the front page."""
     out = HERE / "_generated" / "demo.gif"
     out.parent.mkdir(exist_ok=True)
-    from slidespin import simulate
-    from slidespin.animate import animate
-    from slidespin.cli import demo_case
+    import slidespin as ss
+    from slidespin.cli.main import demo_case
 
     case = demo_case()
-    traj = simulate(case.body, case.friction, case.initial_state)
-    animate(traj, out, fps=20, frames=60, title="slidespin demo")
+    traj = ss.simulate(case.body, case.friction, case.initial_state)
+    ss.animate(traj, out, fps=20, frames=60, title="slidespin demo")
 
 
 def setup(app):
+    app.connect("autodoc-process-docstring", _drop_type_docstring, priority=100)
     app.connect("autodoc-process-docstring", _process_docstring)
     app.connect("builder-inited", _api_pages)
     app.connect("builder-inited", _front_page_animation)

@@ -1,5 +1,5 @@
-"""Benchmark of ``slidespin.analysis.fit``: three friction parameters (fx, fy, f) fitted to five runs of
-200 tracked instants each (x, y, phi: 3000 values), every run's start state fitted too
+"""Benchmark of ``slidespin.fit``: three friction parameters (fx, fy, f) fitted to five runs
+of 200 tracked instants each (x, y, phi: 3000 values), every run's start state fitted too
 (33 parameters in all), noise sigma estimated from the residuals.
 
 Prints the wall time of each repetition; asserts nothing (docs/fit.md quotes one run).
@@ -19,7 +19,6 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import fit_synthetic as fs
 
 import slidespin as ss
-from slidespin.analysis.fit import fit
 
 
 def main(repeats: int = 3) -> None:
@@ -32,7 +31,7 @@ def main(repeats: int = 3) -> None:
     times = []
     for i in range(repeats):
         t = time.perf_counter()
-        res = fit(runs, body, guess)
+        res = ss.fit(runs, body, guess)
         times.append(time.perf_counter() - t)
         print(
             f"fit {i + 1}: {times[-1]:.2f} s  ({res.nfev} residual evaluations, "

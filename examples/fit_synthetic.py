@@ -20,6 +20,8 @@ import os
 import numpy as np
 
 import slidespin as ss
+
+# the fit's own sampler of a trajectory at given times (not a top-level name)
 from slidespin.analysis.fit_data import trajectory_at
 
 TRUTH = {"fx": 0.42, "fy": 0.54, "f": 0.03}

@@ -1,6 +1,6 @@
 """Figures of the four footprint examples (curling stone, box, sled, robot part).
 
-Runs each case file of ``examples/`` with :func:`slidespin.motion.simulate` (recording a point every
+Runs each case file of ``examples/`` with :func:`slidespin.simulate` (recording a point every
 0.05 of regularised time, as ``slidespin simulate --plot`` does) and writes one four-panel
 figure per case, with the footprint's outline drawn along the path::
 
@@ -15,9 +15,7 @@ import math
 import sys
 from pathlib import Path
 
-from slidespin.motion import simulate
-from slidespin.studies.case import load_case
-from slidespin.viz.trajectory_plot import plot_trajectory
+import slidespin as ss
 
 HERE = Path(__file__).resolve().parent
 CASES = ("curling_stone", "box", "sled", "robot_part")
@@ -30,8 +28,8 @@ def main(out_dir: str = "slidespin-out") -> None:
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     for name in CASES:
-        case = load_case(HERE / f"{name}.toml")
-        tr = simulate(
+        case = ss.load_case(HERE / f"{name}.toml")
+        tr = ss.simulate(
             case.body,
             case.friction,
             case.initial_state,
@@ -45,7 +43,7 @@ def main(out_dir: str = "slidespin-out") -> None:
             f"{name:14s} t_stop = {tr.t_stop:.6g} s, distance = {tr.distance:.6g} m, "
             f"turns = {turns:.4g}, ending = {tr.ending}"
         )
-        fig = plot_trajectory(tr, title=case.name)
+        fig = ss.plot_trajectory(tr, title=case.name)
         fig.savefig(out / f"{name}.png", dpi=110)
 
 

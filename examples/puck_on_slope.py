@@ -15,16 +15,14 @@ import math
 import sys
 
 import slidespin as ss
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.contact.incline import Incline
 
-SLOPE = Incline(math.radians(20.0), downhill=0.0)
+SLOPE = ss.Incline(math.radians(20.0), downhill=0.0)
 
 
 def compute():
     puck = ss.Body(ss.Circle(0.04), ss.UniformPressure(), mass=0.2)
     friction = ss.FrictionTensor.isotropic(0.3)
-    return simulate_loaded(
+    return ss.simulate_loaded(
         puck, friction, ss.State(omega=30.0), incline=SLOPE, t_end=1.0, max_step=0.2
     )
 

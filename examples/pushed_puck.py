@@ -17,8 +17,6 @@ import sys
 import numpy as np
 
 import slidespin as ss
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.motion.loads import Load
 
 
 def push(t):
@@ -29,8 +27,8 @@ def push(t):
 def compute():
     puck = ss.Body(ss.Circle(0.05), ss.UniformPressure(), mass=1.0)
     friction = ss.FrictionTensor.isotropic(0.3)
-    load = Load(force=push, at=(0.0, 0.02))
-    return simulate_loaded(puck, friction, ss.State(), load=load, t_end=3.0, max_step=0.5)
+    load = ss.Load(force=push, at=(0.0, 0.02))
+    return ss.simulate_loaded(puck, friction, ss.State(), load=load, t_end=3.0, max_step=0.5)
 
 
 def main(out="pushed_puck.png"):

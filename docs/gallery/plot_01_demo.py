@@ -30,9 +30,7 @@ print(f"beta*/a = {traj.beta_stop_ratio:.6f}, theta* = {math.degrees(traj.theta_
 # %%
 # The figure of ``slidespin demo``: the path with the outline of the plate, β/a and ϑ over
 # time.
-from slidespin.viz.plotting import plot_trajectory
-
-fig = plot_trajectory(traj, title="demo: elliptic plate, anisotropic friction")
+fig = ss.plot_trajectory(traj, title="demo: elliptic plate, anisotropic friction")
 
 # %%
 # The one number this example stands for: the stop time [s].

@@ -2,7 +2,7 @@
 Watching it slide and spin: an animation
 ========================================
 
-:func:`slidespin.viz.animate.animate` turns a trajectory into an animated GIF (Pillow, no ffmpeg):
+:func:`slidespin.animate` turns a trajectory into an animated GIF (Pillow, no ffmpeg):
 the outline of the patch at each instant, the velocity of the mass centre G as an arrow and
 the instantaneous centre of rotation (ICR) as a cross. ``slidespin animate CASE.toml --out
 run.gif`` does the same from a case file. Here we write the GIF of the demo (into a temporary
@@ -21,7 +21,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.viz.animate import animate, frame_states
 
 body = ss.Body(ss.Ellipse.from_eccentricity(0.1, 0.866), ss.UniformPressure(), mass=1.0)
 traj = ss.simulate(
@@ -29,7 +28,7 @@ traj = ss.simulate(
 )
 
 with tempfile.TemporaryDirectory() as tmp:
-    path = animate(traj, os.path.join(tmp, "demo.gif"), fps=20, frames=60)
+    path = ss.animate(traj, os.path.join(tmp, "demo.gif"), fps=20, frames=60)
     print(f"GIF: 60 frames, {os.path.getsize(path) / 1024:.0f} KiB")
 
 # %%
@@ -37,7 +36,7 @@ with tempfile.TemporaryDirectory() as tmp:
 # position and the angle are cubic Hermite interpolants on the recorded velocities. The ICR
 # lies where the velocity of the body point vanishes, G + (−vy, vx)/ω: far away while the
 # plate mostly slides, closer as the spin takes over.
-st = frame_states(traj, 8)
+st = ss.frame_states(traj, 8)
 fig, ax = plt.subplots(figsize=(6.4, 4.2))
 outline = body.patch.outline(121) - np.asarray(body.mass_centre)
 for k in range(st.t.size):

@@ -6,15 +6,14 @@ The paper's Table 2 says how a circular patch stops under orthotropic friction: 
 inertia axis I* = I/(m a²) the ending changes at I₁ < I₃ from pure sliding (the spin dies
 first) to mixed (v and ω vanish together) to pure spinning (the sliding dies first). We run a
 small grid of a few hundred cases through the compiled batch engine,
-:func:`slidespin.motion.batch.simulate_cases` (what ``slidespin sweep`` runs chunk by chunk, locally or
-on Dask), and lay the paper's printed boundaries over the endings found.
+:func:`slidespin.simulate_cases` (what ``slidespin sweep`` runs chunk by chunk, locally or on
+Dask), and lay the paper's printed boundaries over the endings found.
 """
 
 import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.motion.batch import simulate_cases
 
 a, mass, fx = 0.05, 1.0, 0.3
 mu = np.linspace(0.0, 0.2, 12)  # anisotropy fy - fx
@@ -32,7 +31,7 @@ cases = {
     "vy": 0.6,
     "omega": 20.0,  # thrown at 45 deg between the principal axes
 }
-res = simulate_cases(cases)
+res = ss.simulate_cases(cases)
 print(res)
 
 # %%
@@ -54,6 +53,6 @@ ax.legend(loc="lower right")
 
 # %%
 # The one number: how many of the cases end in a mixed motion (the rest end in pure sliding
-# or pure spinning). ``tests/test_gallery.py`` counts the grid points between the printed
+# or pure spinning). ``tests/docs/test_gallery.py`` counts the grid points between the printed
 # boundaries and expects the same number.
 print(f"mixed endings = {int(np.sum(ending == 1))} of {res.t_stop.size}")

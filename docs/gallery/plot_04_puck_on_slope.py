@@ -7,8 +7,8 @@ tilted by 20°, steeper than its friction angle (tan 20° = 0.364 > μ). While i
 friction under the patch points in every direction and only part of it resists the slide
 downhill, so the puck accelerates faster than a block that does not spin,
 a = g (sin α − μ cos α); once the spin has died out it slides like that block
-(``examples/puck_on_slope.py``; loads and slopes: :mod:`slidespin.motion.loads`,
-:func:`slidespin.motion.loaded.simulate_loaded`).
+(``examples/puck_on_slope.py``; loads and slopes: :class:`slidespin.Incline`,
+:func:`slidespin.simulate_loaded`).
 """
 
 import math
@@ -17,14 +17,14 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.contact.incline import Incline
 
 alpha, mu, g = math.radians(20.0), 0.3, 9.81
 puck = ss.Body(ss.Circle(0.04), ss.UniformPressure(), mass=0.2)
 friction = ss.FrictionTensor.isotropic(mu)
-slope = Incline(alpha, downhill=0.0)  # downhill along +x
-tr = simulate_loaded(puck, friction, ss.State(omega=30.0), incline=slope, t_end=1.0, max_step=0.2)
+slope = ss.Incline(alpha, downhill=0.0)  # downhill along +x
+tr = ss.simulate_loaded(
+    puck, friction, ss.State(omega=30.0), incline=slope, t_end=1.0, max_step=0.2
+)
 for kind, start, end in tr.phases:  # (kind, start [s], end [s]) of each stick or slip phase
     print(f"{kind}: {start:.4f} s to {end:.4f} s")
 

@@ -5,7 +5,7 @@ A pushed puck: stick, slip, stick
 A puck at rest (radius 5 cm, 1 kg, μ = 0.3) is pushed 2 cm off its centre by a horizontal
 force that grows to 5 N in 1 s and falls back to 0 at 2 s. Static friction holds it until the
 push, with its moment about G, leaves the set of wrenches friction can supply
-(:mod:`slidespin.contact.statics`); it then slides and turns, and sticks again once its kinetic
+(:func:`slidespin.can_stick`, :func:`slidespin.onset`); it then slides and turns, and sticks again once its kinetic
 energy is gone (``examples/pushed_puck.py``). Stick is decided against the exact set, never
 by a smoothed friction law.
 """
@@ -14,8 +14,6 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.motion.loads import Load
 
 
 def push(t):
@@ -24,11 +22,11 @@ def push(t):
 
 
 puck = ss.Body(ss.Circle(0.05), ss.UniformPressure(), mass=1.0)
-tr = simulate_loaded(
+tr = ss.simulate_loaded(
     puck,
     ss.FrictionTensor.isotropic(0.3),
     ss.State(),
-    load=Load(force=push, at=(0.0, 0.02)),
+    load=ss.Load(force=push, at=(0.0, 0.02)),
     t_end=3.0,
     max_step=0.5,
 )

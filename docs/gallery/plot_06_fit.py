@@ -5,7 +5,7 @@ Fitting friction to tracked motion
 ``examples/fit_synthetic.csv`` holds five tracked runs of an elliptic plate (a = 0.1 m,
 e = 0.866, 1 kg), 200 instants each at 330 frames per second. The data are **synthetic**:
 ``examples/fit_synthetic.py`` simulated them with the tensor fx = 0.42, fy = 0.54, f = 0.03 and
-added 0.5 mm and 0.01 rad of noise. :func:`slidespin.analysis.fit.fit` recovers the tensor with standard
+added 0.5 mm and 0.01 rad of noise. :func:`slidespin.fit` recovers the tensor with standard
 errors, from the start guess fx = fy = 0.3, f = 0 (the full story: :doc:`/fit`).
 """
 
@@ -15,13 +15,12 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.analysis.fit import fit, read_runs
 
 # the repository's examples/ folder (this script lives in docs/gallery/)
 EXAMPLES = Path(ss.__file__).resolve().parents[2] / "examples"
-runs = read_runs(EXAMPLES / "fit_synthetic.csv")
+runs = ss.read_runs(EXAMPLES / "fit_synthetic.csv")
 body = ss.Body(ss.Ellipse.from_eccentricity(0.1, 0.866), ss.UniformPressure(), mass=1.0)
-res = fit(runs, body, ss.FrictionTensor(0.3, 0.3), free=("fx", "fy", "f"))
+res = ss.fit(runs, body, ss.FrictionTensor(0.3, 0.3), free=("fx", "fy", "f"))
 print(res)
 
 # %%

@@ -13,16 +13,15 @@ import io
 import matplotlib.pyplot as plt
 
 import slidespin as ss
-from slidespin.paper import fig2
 
-res = fig2.compute()
+res = ss.paper.fig2.compute()
 print(res.to_text())
 
 # %%
 # ``fig2.plot`` draws the figure as ``slidespin reproduce fig2`` writes it (a figure outside
 # pyplot, so that the library never opens windows); here it is shown as an image.
 buf = io.BytesIO()
-fig2.plot(res).savefig(buf, format="png", dpi=100)
+ss.paper.fig2.plot(res).savefig(buf, format="png", dpi=100)
 buf.seek(0)
 fig, ax = plt.subplots(figsize=(7.6, 6.4))
 ax.imshow(plt.imread(buf))

@@ -4,7 +4,7 @@ The limit surface of a disk
 
 Every direction of sliding and spinning of a body gives one friction wrench (force and moment
 about G); together they form the limit surface, the boundary of the set of wrenches friction
-can supply (MODEL §11, :mod:`slidespin.contact.limit_surface`). For a uniform disk under isotropic
+can supply (MODEL §11, :func:`slidespin.limit_surface`). For a uniform disk under isotropic
 friction its extremes are closed forms: pure sliding gives the force μ m g, pure spinning the
 moment (2/3) μ m g R.
 """
@@ -12,11 +12,10 @@ moment (2/3) μ m g R.
 import matplotlib.pyplot as plt
 
 import slidespin as ss
-from slidespin.contact.limit_surface import limit_surface
 
 R, mu, m, g = 0.05, 0.3, 1.0, 9.81
 body = ss.Body(ss.Circle(R), ss.UniformPressure(), mass=m)
-ls = limit_surface(body, ss.FrictionTensor.isotropic(mu), n=400, g=g)
+ls = ss.limit_surface(body, ss.FrictionTensor.isotropic(mu), n=400, g=g)
 s = ls.summary()
 print(f"largest force {s['max_force']:.10f} N (mu m g = {mu * m * g:.10f})")
 print(

@@ -2,8 +2,9 @@
 A curling stone on its running band
 ===================================
 
-slidespin's footprints (:mod:`slidespin.contact.shapes`) are polygons, rectangles, disks, rings and
-sets of separate pads. A curling stone is the classic ring: a granite stone of 19.96 kg (the
+slidespin's footprints (:class:`~slidespin.Polygon`, :class:`~slidespin.Rectangle`,
+:class:`~slidespin.Disk`, :class:`~slidespin.Annulus`, :class:`~slidespin.Pads`) are polygons,
+rectangles, disks, rings and sets of separate pads. A curling stone is the classic ring: a granite stone of 19.96 kg (the
 most the rules allow) and 0.1455 m radius rests on the ice only on its *running band*, a ring
 about 6 mm wide at a mean radius of 62.5 mm (the cup inside it does not touch the ice). It is
 released at 1.93 m/s down the sheet with a slow turn of 0.7 rad/s, on pebbled ice with

@@ -6,7 +6,7 @@ A cardboard box on a table (base 40 cm × 30 cm, 5 kg, uniform pressure, μ = 0.
 at its mass centre by a horizontal force that ramps from 0 to 25 N over 2 s, is held for 1 s
 and is released over 0.1 s (``examples/pushed_box.toml``; run it with
 ``slidespin simulate examples/pushed_box.toml``). Static friction on the rectangle
-(:mod:`slidespin.contact.statics`, the exact set C of wrenches the footprint can supply) holds the box
+(:func:`slidespin.can_stick`, the exact set C of wrenches the footprint can supply) holds the box
 until the push reaches μ m g = 17.17 N, at t = 17.1675 / 12.5 = 1.3734 s; the box then slides,
 and sticks again once the kinetic energy the push gave it is gone. Stick is decided against
 the exact set, never by a smoothed friction law.
@@ -18,13 +18,11 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 import slidespin as ss
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.studies.case import load_case
 
 # the repository's examples/ folder (this script lives in docs/gallery/)
 EXAMPLES = Path(ss.__file__).resolve().parents[2] / "examples"
-case = load_case(EXAMPLES / "pushed_box.toml")
-tr = simulate_loaded(
+case = ss.load_case(EXAMPLES / "pushed_box.toml")
+tr = ss.simulate_loaded(
     case.body, case.friction, case.initial_state, load=case.load, t_end=case.t_end, max_step=0.5
 )
 for kind, t0, t1 in tr.phases:

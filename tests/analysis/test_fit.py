@@ -419,8 +419,15 @@ def test_wrapped_tracker_angles_fit_like_unwrapped_ones():
     assert np.ptp(runs[0]["phi"]) > math.pi and np.ptp(wrapped["phi"]) > 6.0  # it jumps
     a = fit(runs[0], plate(), TRUE, sigma=SIGMA)
     b = fit(wrapped, plate(), TRUE, sigma=SIGMA)
+    # The two problems are the same but for round-off: a wrapped φ residual differs from the
+    # continuous one in its last bits (the wrap of data − model ≈ 2πk), and the objective, a
+    # sum over ODE solutions differenced for the Jacobian, is only smooth to ~1e-11. The
+    # least-squares minimum is therefore located to ~1e-5 standard errors whatever the
+    # stopping tolerances (measured: 4e-5 σ at ftol = 1e-9, 6e-6 σ at 1e-15; 5 and 6
+    # evaluations), so the estimates are compared on the scale that matters, their standard
+    # errors: a mishandled cut at ±π moves them by many σ and leaves φ residuals of ~2π.
     for name in ("fx", "fy", "f"):
-        assert b.estimates[name] == pytest.approx(a.estimates[name], rel=1e-6)
+        assert abs(b.estimates[name] - a.estimates[name]) < 1e-3 * a.std_errors[name]
         assert b.std_errors[name] == pytest.approx(a.std_errors[name], rel=1e-4)
     assert abs(b.residuals[0]["phi"]).max() < 6 * SIGMA["phi"]
 

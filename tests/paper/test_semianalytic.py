@@ -20,7 +20,7 @@ from slidespin import (
     UniformPressure,
     friction_wrench,
 )
-from slidespin.motion import simulate
+from slidespin.motion.simulate import simulate
 from slidespin.paper import semianalytic as sa
 
 KAPPA = 0.5

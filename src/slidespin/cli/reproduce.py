@@ -28,6 +28,7 @@ from slidespin.paper import _shared as sh
 
 __all__ = ["configure", "run", "TARGETS"]
 
+#: what ``slidespin reproduce`` takes: one name per table, figure or check, or ``all``
 TARGETS = ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase", "all")
 
 _HELP = {

@@ -4,7 +4,7 @@ Every patch shape (ellipse, disk, polygon, rectangle, ring, pads, blade) as one 
 pressure laws and user pressure maps, the friction tensor, the body resting on its patch (the
 patch with its mass centre, mass and inertia: what the wrench, the static set and the limit
 surface need), the tilted plane it rests on, the compiled wrench kernels behind one compiled
-entry that reads the patch's array form, the public wrench (:func:`friction_wrench`), the
+entry that reads the patch's array form, the public wrench (:func:`~slidespin.friction_wrench`), the
 static-friction set and the limit surface.
 
 May import: ``slidespin._validate``, ``slidespin._jit``, ``slidespin._io`` and itself only.

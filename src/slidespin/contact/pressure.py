@@ -196,6 +196,7 @@ class HertzPressure(_Law):
         return 1.5 * np.sqrt(1.0 - q)
 
 
+#: the type of a pressure law on an ellipse (a footprint also takes a PressureMap)
 PressureLaw = UniformPressure | LinearPressure | BoussinesqPressure | HertzPressure
 
 

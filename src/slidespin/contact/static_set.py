@@ -33,7 +33,7 @@ wrench of the twist d: C is bounded by the limit surface, and the twist is norma
 (maximum dissipation; Goyal, Ruina & Papadopoulos 1991). For an anisotropic tensor the law
 τ = −p 𝔽 ŵ is not of maximum dissipation and the limit surface may lie inside C.
 
-The tensor's anisotropy times the patch's elongation is bounded (:func:`check_anisotropy`,
+The tensor's anisotropy times the patch's elongation is bounded (``check_anisotropy``,
 ANISOTROPY_ELONGATION = 1e4): the image patch is that much more elongated.
 
 Units: wrenches in N, N, N m; directions d = (d_Fx, d_Fy, d_M) pair with wrenches as

@@ -164,9 +164,7 @@ def simulate_loaded(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
         )
     if load is not None and not isinstance(load, Load):
-        raise ValueError(
-            f"load = {load!r} is invalid; valid values: a slidespin.Load or None"
-        )
+        raise ValueError(f"load = {load!r} is invalid; valid values: a slidespin.Load or None")
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(
             f"incline = {incline!r} is invalid; valid values: a slidespin.Incline or None"

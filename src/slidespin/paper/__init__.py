@@ -23,6 +23,18 @@ module         reproduces
 :mod:`slidespin.cli.reproduce`.
 """
 
+from slidespin.paper import (
+    errata,
+    fig2,
+    fig3,
+    fig4,
+    phase,
+    report,
+    semianalytic,
+    table1,
+    table2,
+)
+
 #: the names ``slidespin reproduce`` takes (besides ``all``): one per table, figure or check
 REPRODUCTIONS = ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase")
 

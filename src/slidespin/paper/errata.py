@@ -57,6 +57,7 @@ class ErrataResult:
     errata: tuple
 
     def as_dict(self) -> dict:
+        """The numbers as plain data (JSON-ready)."""
         return {
             "errata": [
                 {
@@ -76,6 +77,7 @@ class ErrataResult:
         }
 
     def to_text(self) -> str:
+        """The numbers as a printed table."""
         lines = ["Errata of the printed paper (docs/model.md section 7), shown numerically", ""]
         for e in self.errata:
             lines += [

@@ -41,6 +41,7 @@ class PhaseResult:
     portraits: tuple  # PhasePortrait objects
 
     def as_dict(self) -> dict:
+        """The numbers as plain data (JSON-ready)."""
         panels: list[dict] = []
         out = {
             "law": "uniform",
@@ -60,6 +61,7 @@ class PhaseResult:
         return out
 
     def to_text(self) -> str:
+        """The numbers as a printed table."""
         i1, i2, i3 = self.intervals
         lines = [
             "Phase portraits: uniform disk, isotropic friction; "

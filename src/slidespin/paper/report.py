@@ -43,6 +43,7 @@ class Report:
     seconds: float
 
     def as_dict(self) -> dict:
+        """The numbers as plain data (JSON-ready)."""
         return {
             name: getattr(self, name).as_dict()
             for name in ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase")

@@ -52,8 +52,11 @@ PRINTED = np.array(
         [0.577, 0.593, 0.608, 0.623, 0.637, 0.650, 0.664, 0.677, 0.690],
     ]
 )
+#: the columns of Table 1: μ = fy − fx = 0, 0.03, …, 0.24
 MU = np.round(0.03 * np.arange(9), 2)
+#: the rows of Table 1: the body angles φ = π/4, π/3, π/2 [rad]
 PHI = sh.PHI0
+#: the rows' labels, as printed
 PHI_LABELS = sh.PHI_LABELS
 HALF_UNIT = 0.0005  # half a unit of the printed last digit
 #: the round value of fx shown beside the least-squares one
@@ -256,6 +259,7 @@ class Table1Result:
 
     @property
     def max_abs_diff(self) -> float:
+        """The largest |computed − printed| over the table."""
         return max(abs(c.diff) for c in self.cells)
 
     @property
@@ -264,6 +268,7 @@ class Table1Result:
         return tuple(c for c in self.cells if not c.matches)
 
     def as_dict(self) -> dict:
+        """The numbers as plain data (JSON-ready)."""
         d = {
             "fx": self.fx,
             "fx_source": self.fx_source,
@@ -323,6 +328,7 @@ class Table1Result:
         return d
 
     def to_text(self) -> str:
+        """The numbers as a printed table."""
         lines = [
             "Table 1 - beta/a from eq. 16 with theta = 0 imposed (the paper's method)",
             "uniform pressure, e = 0.866, I* = (1 + kappa^2)/4, f = 0, fy = fx + mu",

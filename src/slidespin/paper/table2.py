@@ -42,6 +42,7 @@ __all__ = [
     "main",
 ]
 
+#: the pressure laws of Table 2's rows: (name as printed, law)
 LAWS = (
     ("uniform", UniformPressure()),
     ("Boussinesq", BoussinesqPressure()),
@@ -64,6 +65,7 @@ class Table2Row:
 
     @property
     def max_abs_diff(self) -> float:
+        """The largest |computed − printed| over the table."""
         return max(abs(a - b) for a, b in zip(self.numeric, self.printed))
 
 
@@ -84,12 +86,14 @@ class Table2Run:
 
     @property
     def observed(self) -> str:
+        """The ending found by the simulation, in the wording of Table 2."""
         if self.ending == "mixed":
             return "mixed, k > 1" if self.k > 1.0 else "mixed, k < 1"
         return self.ending
 
     @property
     def agrees(self) -> bool:
+        """True if the observed ending is the one Table 2 expects."""
         return self.observed == self.expected
 
 
@@ -102,6 +106,7 @@ class Table2Result:
     curves: dict  # (law, mu) -> (I* array, k array)
 
     def as_dict(self) -> dict:
+        """The numbers as plain data (JSON-ready)."""
         return {
             "rows": [
                 {
@@ -134,6 +139,7 @@ class Table2Result:
         }
 
     def to_text(self) -> str:
+        """The numbers as a printed table."""
         lines = [
             "Table 2 - inertia intervals of a circular patch (f = 0): I1 = J(inf), "
             "I2 = J(1), I3 = J(0+)"

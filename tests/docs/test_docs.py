@@ -22,8 +22,8 @@ pytest.importorskip("myst_parser")
 
 pytestmark = pytest.mark.docs
 
-DOCS = Path(__file__).resolve().parents[1] / "docs"
-SRC = Path(__file__).resolve().parents[1] / "src" / "slidespin"
+DOCS = Path(__file__).resolve().parents[2] / "docs"
+SRC = Path(__file__).resolve().parents[2] / "src" / "slidespin"
 # every public module: the package, its layers and each layer's modules without a leading
 # underscore (docs/api/: the top-level names on one page, then one page per layer)
 PUBLIC_MODULES = (

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-GALLERY = Path(__file__).resolve().parents[1] / "docs" / "gallery"
+GALLERY = Path(__file__).resolve().parents[2] / "docs" / "gallery"
 G = 9.81
 # the stone of the script: mass, radius, band radii, friction, release speed and spin
 M, R, R_IN, R_OUT = 19.96, 0.1455, 0.0595, 0.0655

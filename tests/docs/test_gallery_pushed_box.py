@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-GALLERY = Path(__file__).resolve().parents[1] / "docs" / "gallery"
+GALLERY = Path(__file__).resolve().parents[2] / "docs" / "gallery"
 G = 9.81
 
 
