@@ -29,7 +29,7 @@ from slidespin.analysis.intervals import (
 from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
 from slidespin.analysis.terminal import TerminalState, terminal_ratio, terminal_states
 from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Circle, Ellipse
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.contact.limit_surface import LimitSurface, limit_surface
@@ -40,7 +40,7 @@ from slidespin.contact.pressure import (
     UniformPressure,
 )
 from slidespin.contact.pressure_map import PressureMap
-from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle
+from slidespin.contact.shapes import Annulus, Blade, Circle, Disk, Pads, Polygon, Rectangle
 from slidespin.contact.statics import Onset, can_stick, critical_tilt, load_factor, onset
 from slidespin.contact.wrench import Wrench, friction_wrench
 from slidespin.motion.batch import StopResults, simulate_bodies, simulate_cases, simulate_many

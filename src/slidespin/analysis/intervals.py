@@ -27,7 +27,7 @@ from slidespin.analysis._natural import _WRENCH_TOL, _fp_world, _missed, _params
 from slidespin.contact import _engine
 from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_array
 from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Circle
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import (
     BoussinesqPressure,
@@ -108,14 +108,15 @@ def _check_table2(pressure, friction):
 
 
 def _circle_params(pressure, friction, patch=None):
-    """Engine parameters of the round patch of Table 2 in units of its radius: the unit
-    Circle, or a centred Disk or Annulus (scaled to outer radius 1)."""
-    if patch is None or isinstance(patch, Circle):
-        body = Body(Circle(1.0), pressure, 1.0)
+    """Engine parameters of the round patch of Table 2 in units of its radius: the paper's
+    circle (the unit ellipse with a = b, on the elliptic engine, as in the paper), or a
+    centred Disk or Annulus (scaled to outer radius 1)."""
+    if patch is None:
+        body = Body(Ellipse(1.0, 1.0), pressure, 1.0)
         return _params(body, friction)
     if isinstance(patch, Disk) and not Body(patch, pressure, 1.0).is_footprint:
         # a Disk under Boussinesq or Hertz pressure is a circle for the engine (G at its centre)
-        return _params(Body(Circle(1.0), pressure, 1.0), friction)
+        return _params(Body(Ellipse(1.0, 1.0), pressure, 1.0), friction)
     ok = isinstance(patch, Annulus) and is_footprint(patch)
     if ok:
         ring = Annulus(patch.inner_radius / patch.outer_radius, 1.0)
@@ -154,7 +155,7 @@ def inertia_for_ratio(
     pressure: PressureLaw,
     friction: FrictionTensor,
     ratio: ArrayLike,
-    patch: Circle | Annulus | None = None,
+    patch: Annulus | None = None,
 ) -> float | NDArray[np.float64]:
     """J(β): the inertia ratio I* whose terminal ratio is β = v/(a ω) (circle, MODEL §6).
 
@@ -193,7 +194,7 @@ def _richardson(values, factor):
 
 
 def inertia_intervals(
-    pressure, friction: FrictionTensor, patch: Circle | Annulus | None = None
+    pressure, friction: FrictionTensor, patch: Annulus | None = None
 ) -> InertiaIntervals:
     """Boundaries (I₁, I₂, I₃) of Table 2, computed numerically from J(β) (MODEL §6).
 
@@ -275,7 +276,7 @@ def circle_terminal_ratio(
     pressure: PressureLaw,
     friction: FrictionTensor,
     inertia_ratio: float,
-    patch: Circle | Annulus | None = None,
+    patch: Annulus | None = None,
 ) -> float:
     """Terminal ratio k = v/(a ω) of a circular patch with inertia ratio I* (J⁻¹, MODEL §6).
 

@@ -11,7 +11,9 @@ Beyond the paper (MODEL §10) the patch may be any footprint of :mod:`slidespin.
 pressure, or a ``Blade`` (a line contact) under a uniform line load. A ``Disk`` (placed
 anywhere) also takes the Boussinesq and Hertz laws, which are defined on circles (MODEL §3,
 §10): it is then the circle of its radius with G at its centre, and runs on the elliptic
-engine exactly like ``Circle(radius)``. The length unit ℓ (:attr:`Body.length_unit`, the
+engine exactly like ``Ellipse(radius, radius)``. ``Circle`` is another name of ``Disk``: the
+paper's circle under uniform or linear pressure runs on the exact disk kernel; give
+``Ellipse(r, r)`` for the paper's own engine (its quadrature, as ``slidespin reproduce`` does). The length unit ℓ (:attr:`Body.length_unit`, the
 footprint's ``extent``: the radius of a disk or ring, the half-diagonal of a centred
 rectangle, half a blade) plays the role of the ellipse's semi-axis a in I* = I/(m ℓ²), β*/ℓ
 and the natural units of the integrator.
@@ -59,8 +61,8 @@ class Body:
 
     Parameters
     ----------
-    patch : Ellipse, Circle or a footprint
-        The contact patch: an ellipse or circle (the paper's), or a footprint of
+    patch : Ellipse or a footprint
+        The contact patch: an ellipse (the paper's), or a footprint of
         :mod:`slidespin.contact.shapes` (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``,
         ``Pads``, ``Blade``; MODEL §10). A ``Blade`` works with :func:`slidespin.friction_wrench`
         only: the integrating functions refuse it (``docs/guide/patches.md``).
@@ -223,7 +225,8 @@ class Body:
         if self.is_footprint:
             raise ValueError(
                 f"patch = {self.patch!r} is a footprint; this function supports elliptic "
-                "patches only (Ellipse, Circle). Footprints work with simulate, simulate_many, "
+                "patches only (an Ellipse, or a Disk under Boussinesq or Hertz pressure). "
+                "Footprints work with simulate, simulate_many, "
                 "friction_wrench, terminal_states and terminal_ratio"
             )
         return self.engine_params(friction, wrench_tol)[0]
@@ -297,7 +300,7 @@ def _length_unit(patch: Ellipse | _fp.Footprint) -> float:
 def check_body_friction(body, friction, *, elliptic_only: str | None = None) -> None:
     """Raise ``ValueError`` unless ``body`` is a :class:`Body` and ``friction`` a
     :class:`~slidespin.FrictionTensor`; with ``elliptic_only`` (the name of the feature), also
-    unless the body rests on an ellipse or a circle (the feature does not take footprints yet).
+    unless the body rests on an ellipse (the feature does not take footprints yet).
     """
     if not isinstance(body, Body):
         raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
@@ -306,5 +309,5 @@ def check_body_friction(body, friction, *, elliptic_only: str | None = None) -> 
     if elliptic_only and body.is_footprint:
         raise ValueError(
             f"body.patch = {type(body.patch).__name__}(...) is not supported by {elliptic_only} "
-            "yet; valid values: an Ellipse or a Circle patch"
+            "yet; valid values: an Ellipse patch"
         )

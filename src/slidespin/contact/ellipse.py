@@ -1,4 +1,5 @@
-"""Contact patches: the ellipse of the paper and its special case, the circle.
+"""The elliptic contact patch of the paper (its circle is :class:`slidespin.Disk`, also named
+``Circle``).
 
 Paper symbols and code names (MODEL §1):
 
@@ -25,7 +26,7 @@ if TYPE_CHECKING:
     import numpy as np
     from numpy.typing import NDArray
 
-__all__ = ["Ellipse", "Circle", "Patch"]
+__all__ = ["Ellipse", "Patch"]
 
 _E_MAX = 0.999999  # b/a = 1.41e-3, just inside the thinnest valid patch (b/a = 1e-3)
 
@@ -127,30 +128,6 @@ class Ellipse:
 
         t = np.linspace(0.0, 2.0 * np.pi, n)
         return np.column_stack((self.a * np.cos(t), self.b * np.sin(t)))
-
-
-@dataclass(frozen=True, slots=True, init=False, repr=False)
-class Circle(Ellipse):
-    """Circular contact patch of the given ``radius`` [m]: an :class:`Ellipse` with a = b.
-
-    Parameters
-    ----------
-    radius : float
-        Patch radius [m], in [1e-9, 1e6].
-    """
-
-    def __init__(self, radius: float) -> None:
-        r = v.bounded("radius", radius, *v.LENGTH, "m")
-        object.__setattr__(self, "a", r)
-        object.__setattr__(self, "b", r)
-
-    @property
-    def radius(self) -> float:
-        """Patch radius [m]."""
-        return self.a
-
-    def __repr__(self) -> str:
-        return f"Circle(radius={self.a!r})"
 
 
 Patch = Ellipse

@@ -30,6 +30,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
 from slidespin.contact.ellipse import Ellipse
+from slidespin.contact.shapes import Disk
 
 __all__ = [
     "UniformPressure",
@@ -78,16 +79,21 @@ class _Law:
 
         Parameters
         ----------
-        patch : Ellipse
-            The contact patch.
+        patch : Ellipse or Circle
+            The contact patch (a ``Circle``, i.e. a ``Disk`` centred at the origin, is the
+            ellipse with a = b).
         xi, eta : array_like
             Body-frame coordinates [m], finite.
         load : float
             Normal load P = m g [N], in [0, 1e300].
         """
+        if isinstance(patch, Disk) and patch.centre == (0.0, 0.0):  # a Circle: a = b
+            patch = Ellipse(patch.outer_radius, patch.outer_radius)
         if not isinstance(patch, Ellipse):
             raise ValueError(
-                f"patch = {v._short(patch)} is invalid; valid values: an Ellipse or a Circle"
+                f"patch = {v._short(patch)} is invalid; valid values: an Ellipse, or a Circle "
+                "(a Disk centred at the origin); for any footprint use "
+                "slidespin.contact.pressure_map.density"
             )
         xi = v.real_array("xi", xi)
         eta = v.real_array("eta", eta)

@@ -33,7 +33,7 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.contact._kernel_footprint import NGEO
-from slidespin.contact.ellipse import Circle
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.footprint_arrays import FootprintArrays
 from slidespin.contact.pressure import (
     BoussinesqPressure,
@@ -470,7 +470,9 @@ def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
     _check_footprint(footprint)
     if _round_disk(footprint, pressure):
         cx, cy = footprint.centre
-        return np.asarray(pressure.density(Circle(footprint.radius), xi - cx, eta - cy, load))
+        return np.asarray(
+            pressure.density(Ellipse(footprint.radius, footprint.radius), xi - cx, eta - cy, load)
+        )
     inside = contains(footprint, xi, eta)
     if isinstance(pressure, PressureMap):
         total, _, _ = map_scale(footprint, pressure)

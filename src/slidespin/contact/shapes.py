@@ -55,6 +55,7 @@ from slidespin.contact.footprint_arrays import FootprintArrays, _Patch
 
 __all__ = [
     "Annulus",
+    "Circle",
     "Blade",
     "Disk",
     "Footprint",
@@ -374,7 +375,14 @@ class Annulus(_Patch):
 @dataclass(frozen=True, slots=True, init=False)
 class Disk(Annulus):
     """A full disk of the given ``radius`` [m] (in [1e-9, 1e6]) at ``centre`` (each coordinate
-    within min(1e6 m, 1e6 × radius)): an :class:`Annulus` with no hole."""
+    within min(1e6 m, 1e6 × radius)): an :class:`Annulus` with no hole.
+
+    ``Circle`` is the same class (``Circle(0.1)`` is ``Disk(0.1)``): the paper's circular patch.
+    Under uniform or linear pressure a disk runs on the exact footprint kernel (closed forms,
+    MODEL §10); under Boussinesq or Hertz pressure (defined on circles, MODEL §3) on the
+    elliptic engine, as the circle of its radius with G at its centre. ``Ellipse(r, r)`` is the
+    paper's circle on the paper's engine (the elliptic quadrature) under every law.
+    """
 
     def __init__(self, radius: float, centre=(0.0, 0.0), angle: float = 0.0) -> None:
         object.__setattr__(self, "inner_radius", 0.0)
@@ -394,7 +402,7 @@ class Disk(Annulus):
     def a(self) -> float:
         """Semi-axis a = radius [m]: a disk is a circle, so that under the Boussinesq and Hertz
         laws (defined on ellipses and circles, MODEL §3) it runs on the elliptic engine like
-        :class:`~slidespin.Circle` (:class:`slidespin.Body`)."""
+        ``Ellipse(radius, radius)`` (:class:`slidespin.Body`)."""
         return self.outer_radius
 
     @property
@@ -409,6 +417,11 @@ class Disk(Annulus):
     def __repr__(self) -> str:
         return f"Disk(radius={self.outer_radius!r}, centre={self.centre!r})"
 
+
+#: The paper's circular patch: the same class as :class:`Disk` (``Circle(radius)`` is
+#: ``Disk(radius)``, centred at the body origin C). One class, two names: the paper and its
+#: Table 2 speak of circles, footprints of disks.
+Circle = Disk
 
 _SIMPLE = (Polygon, Rectangle, Annulus)
 

@@ -18,7 +18,7 @@ from scipy.optimize import brentq
 
 from slidespin.analysis.intervals import inertia_intervals
 from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Circle
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import UniformPressure
 from slidespin.contact.wrench import friction_wrench
@@ -517,7 +517,7 @@ def _e10():
 
 
 def _e11(fx):
-    disk = Body.from_inertia_ratio(Circle(sh.A), UniformPressure(), sh.MASS, 0.5)
+    disk = Body.from_inertia_ratio(Ellipse(sh.A, sh.A), UniformPressure(), sh.MASS, 0.5)
     fr = FrictionTensor(fx, fx + 0.12)
     st = State.from_speed(sh.SPEED_UNIT, sh.SPIN_UNIT, sh.THETA0, 0.0)
     circle = simulate(disk, fr, st, g=sh.G)

@@ -19,7 +19,7 @@ import numpy as np
 from slidespin.analysis.intervals import inertia_intervals
 from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
 from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Circle
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import UniformPressure
 from slidespin.paper import _figures as fg
@@ -84,7 +84,7 @@ def compute(n: int = 11) -> PhaseResult:
     ratios = (0.6 * i1, 0.5 * (i1 + i2), 0.5, 1.5 * i3)  # the third is the published case
     portraits = []
     for i_star in ratios:
-        body = Body.from_inertia_ratio(Circle(RADIUS), UniformPressure(), 1.0, i_star)
+        body = Body.from_inertia_ratio(Ellipse(RADIUS, RADIUS), UniformPressure(), 1.0, i_star)
         portraits.append(phase_portrait(body, FRICTION, n=n, speed=SPEED))
     return PhaseResult(bounds, ratios, tuple(portraits))
 

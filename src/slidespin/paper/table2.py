@@ -25,7 +25,7 @@ from slidespin.analysis.intervals import (
     paper_inertia_intervals,
 )
 from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Circle
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import BoussinesqPressure, HertzPressure, UniformPressure
 from slidespin.motion.simulate import simulate
@@ -189,7 +189,7 @@ def _inertia_in(bounds, regime):
 
 
 def _run(law_name, law, fx, mu, regime, i_star):
-    body = Body.from_inertia_ratio(Circle(sh.A), law, sh.MASS, i_star)
+    body = Body.from_inertia_ratio(Ellipse(sh.A, sh.A), law, sh.MASS, i_star)
     st = State.from_speed(1.0, 1.0 / sh.A, theta=sh.THETA0)
     tr = simulate(body, FrictionTensor(fx, fx + mu), st, g=sh.G)
     k = tr.beta_stop / sh.A

@@ -27,11 +27,11 @@ from dataclasses import dataclass
 from slidespin import _validate as v
 from slidespin._io import read_regular_file
 from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Circle, Ellipse
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.contact.pressure import pressure_law_from_name
-from slidespin.contact.shapes import Annulus, Disk, Pads, Polygon, Rectangle
+from slidespin.contact.shapes import Annulus, Circle, Disk, Pads, Polygon, Rectangle
 from slidespin.motion.loads import Load
 from slidespin.motion.state import State
 from slidespin.studies.load_tables import (
