@@ -38,4 +38,15 @@ from slidespin.paper import (
 #: the names ``slidespin reproduce`` takes (besides ``all``): one per table, figure or check
 REPRODUCTIONS = ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase")
 
-__all__ = ["REPRODUCTIONS"]
+__all__ = [
+    "REPRODUCTIONS",
+    "errata",
+    "fig2",
+    "fig3",
+    "fig4",
+    "phase",
+    "report",
+    "semianalytic",
+    "table1",
+    "table2",
+]
