@@ -26,7 +26,8 @@ BAD_CONSTRUCTORS = [
     (lambda: ss.LinearPressure(math.nan, 0.0), "xi_c = nan"),
     (lambda: ss.Body(ss.Circle(1.0), ss.UniformPressure(), mass=0.0), "mass = 0.0"),
     (lambda: ss.Body(ss.Circle(1.0), ss.UniformPressure(), 1.0, -1.0), "moment_of_inertia = -1.0"),
-    (lambda: ss.Body(ss.Circle(1.0), ss.LinearPressure(0.3, 0.0), 1.0), "outside the core"),
+    (lambda: ss.Body(ss.Ellipse(1.0, 1.0), ss.LinearPressure(0.3, 0.0), 1.0), "outside the core"),
+    (lambda: ss.Body(ss.Circle(1.0), ss.LinearPressure(0.3, 0.0), 1.0), "turns negative"),
     (lambda: ss.Body(ss.Circle(1.0), "uniform", 1.0), "pressure = 'uniform'"),
     (lambda: ss.Body((1.0, 1.0), ss.UniformPressure(), 1.0), "patch = (1.0, 1.0)"),
     (lambda: ss.State(vx=math.nan), "vx = nan"),
@@ -158,11 +159,14 @@ def test_range_edges_are_in_and_the_next_floats_out(make, lo, hi, name):
 
 
 def test_inertia_ratio_bound_applies_to_an_explicit_inertia():
-    body = ss.Body(ss.Circle(0.1), ss.UniformPressure(), 2.0, 1e8 * 2.0 * 0.01)
+    body = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), 2.0, 1e8 * 2.0 * 0.01)
     assert body.inertia_ratio == pytest.approx(1e8)
     with pytest.raises(
         ValueError, match=r"I/\(m a\^2\) = 1.1e\+08; valid range: \[1e-08, 1e\+08\]"
     ):
+        ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), 2.0, 1.1e8 * 2.0 * 0.01)
+    # a disk (Circle) measures I* in units of its extent, the radius
+    with pytest.raises(ValueError, match=r"I/\(m extent\^2\) = 1.1e\+08"):
         ss.Body(ss.Circle(0.1), ss.UniformPressure(), 2.0, 1.1e8 * 2.0 * 0.01)
 
 

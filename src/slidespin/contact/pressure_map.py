@@ -597,12 +597,12 @@ def footprint_law_error(patch, pressure) -> str:
         )
         return (
             f"pressure = {law}() is invalid on patch = {v._short(patch, 100)}: {why}; "
-            f"{law} is defined on an Ellipse, a Circle or a single Disk (MODEL §3, §10); "
+            f"{law} is defined on an Ellipse or a single Disk (Circle) (MODEL §3, §10); "
             f"valid values on this patch: {valid}"
         )
     return (
         f"pressure = {pressure!r} is invalid on a footprint; valid values: "
-        "UniformPressure(), LinearPressure(xi_c, eta_c), and on a single Disk also "
-        "BoussinesqPressure() and HertzPressure() (a PressureMap works with "
-        "footprint_wrench only)"
+        "UniformPressure(), LinearPressure(xi_c, eta_c), PressureMap(function) (for "
+        "friction_wrench only), and on a single Disk also BoussinesqPressure() and "
+        "HertzPressure()"
     )

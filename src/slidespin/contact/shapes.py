@@ -355,7 +355,10 @@ class Annulus(_Patch):
         return self._arrays_copy()
 
     def outlines(self, n: int = 181) -> list[np.ndarray]:
-        """The outer circle and (if any) the hole, closed, in the body frame [m]."""
+        """The outer circle and (if any) the hole, closed, in the body frame [m]; ``n`` points
+        each, an integer in [2, 1e6]."""
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= 10**6:
+            raise ValueError(f"n = {v._short(n)} is invalid; valid range: integer in [2, 1000000]")
         t = np.linspace(0.0, 2.0 * np.pi, n)
         cx, cy = self.centre
         out = [
@@ -411,7 +414,7 @@ class Disk(Annulus):
         return self.outer_radius
 
     def outline(self, n: int = 181) -> np.ndarray:
-        """Closed outline (n, 2) in the body frame [m]."""
+        """Closed outline (n, 2) in the body frame [m]; n an integer in [2, 1e6]."""
         return self.outlines(n)[0]
 
     def __repr__(self) -> str:
