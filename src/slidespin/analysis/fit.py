@@ -276,7 +276,7 @@ def fit(
     rtol, max_step : float
         Passed to :func:`slidespin.simulate`. With the defaults (1e-12, the integrator's own
         steps) the model between steps (cubic Hermite) is within 1e-6 a and 1e-5 rad of a
-        dense run (tests/test_fit.py), far below tracking noise.
+        dense run (tests/analysis/test_fit.py), far below tracking noise.
     fd_step : float, default 1e-4
         Central-difference step, relative to each parameter's typical size; valid:
         [:data:`MIN_FD_STEP`, :data:`MAX_FD_STEP`] = [1e-8, 0.1] (a smaller step differences

@@ -24,7 +24,7 @@ ellipse of parameter ≥ 2 + √3 around the segment (its singularities are the 
 points s* ± i d, d the ICR's distance from the blade's line) and ``NODES`` = 20 Gauss–Legendre
 points give it to (2 + √3)^(−40) ≈ 1e-23; ω = 0 is exact there (ŵ is constant).
 
-Checked in ``tests/test_footprint_laws.py`` against ``scipy.integrate.quad`` with a break at
+Checked in ``tests/contact/test_footprint_laws.py`` against ``scipy.integrate.quad`` with a break at
 the ICR's projection, closed forms (pure translation −P𝔽v̂; pure spin
 M = −sign(ω) P (L/4) ê⊥ᵀ𝔽ê⊥, i.e. μ P L/4 for isotropic friction) and the limit of a thin
 rectangle (O(b²)).

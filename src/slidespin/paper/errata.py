@@ -317,7 +317,7 @@ def _e4(kappa):
         "for omega < 0 the literal (6) reverses the whole wrench (friction would accelerate "
         "the body); for omega > 0 the restored coefficients are exact",
         f"true wrench vs friction_wrench: {chk:.1e}; the semi-analytic route with the "
-        "restored (6) agrees with friction_wrench to 1e-14 (tests/test_semianalytic.py)",
+        "restored (6) agrees with friction_wrench to 1e-14 (tests/paper/test_semianalytic.py)",
         {"literal": list(lit), "true": list(tru), "check": chk},
     )
 
@@ -391,7 +391,7 @@ def _e6(fx):
         f"moment wrong by up to {dm:.2f} P a over 18 states; the body's spin is "
         "destroyed almost at once and the run ends nearly in pure sliding",
         "corrected eq. 13 vs friction_wrench (moment transferred to C): 1e-15 "
-        "(tests/test_semianalytic.py)",
+        "(tests/paper/test_semianalytic.py)",
         {
             "moment_error": dm,
             "t1_printed": r_bad.t_stop,
@@ -536,7 +536,7 @@ def _e11(fx):
         f"disk: {circle.theta_stop:+.1e}; ellipse: " + ", ".join(f"{x:+.4f}" for x in ell),
         f"the ellipse stops with the velocity turned by up to {max(abs(x) for x in ell):.3f} "
         "rad from the low-friction axis",
-        "terminal_states at each run's final phi gives the same theta* (tests/test_paper.py)",
+        "terminal_states at each run's final phi gives the same theta* (tests/paper/test_paper.py)",
         {
             "circle_theta": circle.theta_stop,
             "ellipse_theta": ell,

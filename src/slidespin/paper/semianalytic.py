@@ -12,7 +12,7 @@ printed formulas that are wrong, so that their effect can be measured (MODEL §7
   and adds the missing term (erratum 6). Only the linear law has C₃₁ ≠ 0.
 
 With the defaults the result is the exact wrench, and agrees with
-:func:`slidespin.friction_wrench` to quadrature accuracy (see ``tests/test_semianalytic.py``).
+:func:`slidespin.friction_wrench` to quadrature accuracy (see ``tests/paper/test_semianalytic.py``).
 
 Units and conventions (paper eq. 7): lengths in units of the semi-axis a, the friction force
 per unit load P = m g and the moment per P a. ``beta`` is β = v/ω ≥ 0 for ω > 0, the only sign
@@ -40,7 +40,7 @@ split where the instantaneous centre of rotation (ICR) projects (there K₀ has 
 singularity when the ICR is inside the patch), and each half is mapped by t − t* ∝ s³ and
 integrated by Gauss–Legendre in s with ``nodes`` points. Against the compiled wrench of
 :func:`slidespin.friction_wrench` the default 48 nodes give 1e-14 for most states and 1e-10
-with the ICR just outside the rim; 128 nodes give 1e-14 throughout (tests/test_semianalytic.py).
+with the ICR just outside the rim; 128 nodes give 1e-14 throughout (tests/paper/test_semianalytic.py).
 
 Reference point (erratum 7): the paper does not say which point its linear-law equations
 (11) refer to. ``reference="mass_centre"`` (default, as slidespin) measures positions, the
