@@ -1,4 +1,4 @@
-"""Applied loads and inclined planes (MODEL §11).
+"""Applied loads, and the total applied wrench of loads and a slope (MODEL §11).
 
 An applied force Q, given in the plane frame OXY or in the body frame Cξη, acts at a body
 point r_Q; an applied torque T acts about the vertical. Each may be constant or a function of
@@ -11,7 +11,8 @@ with F, M the friction force and moment about G. On a plane tilted by α whose s
 direction is d = (cos δ, sin δ) in the plane frame, the normal load is P = m g cos α and gravity
 adds Q_g = m g sin α d at G. The body is thin: the tipping moment of friction acting below G is
 neglected and the pressure law is unchanged (it scales with P, so the friction wrench and the
-static-friction set scale by cos α).
+static-friction set scale by cos α). The plane itself is :class:`slidespin.Incline`
+(:mod:`slidespin.contact.incline`: the contact's support, below the motion).
 
 Symbols and code names: Q → ``Load.force`` [N], T → ``Load.torque`` [N m], r_Q → ``Load.at``
 [m] (body frame, origin at the patch centre C; ``None`` = the mass centre G), α →
