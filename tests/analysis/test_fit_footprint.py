@@ -177,7 +177,7 @@ def test_command_line_fit_on_a_rectangle_case(tmp_path, capsys, monkeypatch):
     import importlib
     import json
 
-    cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
+    cli = importlib.import_module("slidespin.cli.main")
 
     if not any(name == "fit" for name, *_ in cli._PLUGINS):  # as tests/test_fit_cli.py
         monkeypatch.setattr(

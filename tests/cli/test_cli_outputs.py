@@ -120,7 +120,7 @@ def test_json_output_is_json_only(tmp_path, capsys):
 def test_write_outputs_is_all_or_nothing(tmp_path, monkeypatch):
     import importlib
 
-    cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
+    cli = importlib.import_module("slidespin.cli.main")
 
     good = tmp_path / "a.txt"
     bad = tmp_path / "missing-dir-is-a-file" / "b.txt"

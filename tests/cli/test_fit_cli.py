@@ -17,7 +17,7 @@ import pytest
 
 import slidespin as ss
 
-cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
+cli = importlib.import_module("slidespin.cli.main")
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 EXAMPLES = os.path.join(ROOT, "examples")

@@ -188,7 +188,7 @@ def test_main_cli_exit_status_2_and_nothing_written(tmp_path, capsys, monkeypatc
     # through slidespin.cli.main, with the plugin registered as the lead registers it
     import importlib
 
-    cli = importlib.import_module("slidespin.cli.main")  # the module; slidespin.cli.main is main()
+    cli = importlib.import_module("slidespin.cli.main")
 
     if not any(name == "animate" for name, *_ in cli._PLUGINS):
         monkeypatch.setattr(
