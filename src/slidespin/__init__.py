@@ -7,56 +7,136 @@ stop, with loads, slopes and exact stick–slip. Source: "About the movement of 
 plane surface in accordance with elliptic contact area and anisotropic friction"; the model as
 built, with the paper's errata, is documented in docs/model.md.
 
-Every public name is importable from here (``import slidespin as ss``). The sub-packages are
+Every public name is importable from here (``import slidespin as ss``), each imported from its
+defining module on first use, so that importing slidespin costs little until a name is used. The sub-packages are
 the layers of the code, each importing only those below it (docs/development.md, "Where
 things live"): :mod:`slidespin.contact` < :mod:`slidespin.motion` < :mod:`slidespin.analysis`
 < :mod:`slidespin.studies` < :mod:`slidespin.viz` < :mod:`slidespin.paper` <
 :mod:`slidespin.cli`.
 """
 
-from slidespin import paper
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING
+
 from slidespin._version import __version__
-from slidespin.analysis.fit import FitWarning, IdentifiabilityWarning, compare_frames, fit
-from slidespin.analysis.fit_data import read_runs
-from slidespin.analysis.fit_result import FitResult
-from slidespin.analysis.intervals import (
-    InertiaIntervals,
-    circle_terminal_ratio,
-    inertia_for_ratio,
-    inertia_intervals,
-    paper_inertia_intervals,
-)
-from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
-from slidespin.analysis.terminal import TerminalState, terminal_ratio, terminal_states
-from slidespin.contact.body import Body
-from slidespin.contact.ellipse import Ellipse
-from slidespin.contact.friction import FrictionTensor
-from slidespin.contact.incline import Incline
-from slidespin.contact.limit_surface import LimitSurface, limit_surface
-from slidespin.contact.pressure import (
-    BoussinesqPressure,
-    HertzPressure,
-    LinearPressure,
-    UniformPressure,
-)
-from slidespin.contact.pressure_map import PressureMap
-from slidespin.contact.shapes import Annulus, Blade, Circle, Disk, Pads, Polygon, Rectangle
-from slidespin.contact.statics import Onset, can_stick, critical_tilt, load_factor, onset
-from slidespin.contact.wrench import Wrench, friction_wrench
-from slidespin.motion.batch import StopResults, simulate_bodies, simulate_cases, simulate_many
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.motion.loaded_trajectory import LoadedTrajectory
-from slidespin.motion.loads import Load
-from slidespin.motion.outcomes import ENDINGS, STATUSES, ending_message, status_message
-from slidespin.motion.simulate import Trajectory, simulate
-from slidespin.motion.state import State
-from slidespin.studies.case import Case, load_case
-from slidespin.studies.sweep import SweepResult, sweep
-from slidespin.studies.sweep_read import read_sweep
-from slidespin.studies.sweep_spec import SweepError
-from slidespin.viz.animate import animate, frame_states
-from slidespin.viz.sweep_plot import plot_sweep
-from slidespin.viz.trajectory_plot import plot_loaded_trajectory, plot_trajectory
+
+if TYPE_CHECKING:  # the names as the type checker and IDEs see them
+    from slidespin import paper
+    from slidespin.analysis.fit import FitWarning, IdentifiabilityWarning, compare_frames, fit
+    from slidespin.analysis.fit_data import read_runs
+    from slidespin.analysis.fit_result import FitResult
+    from slidespin.analysis.intervals import (
+        InertiaIntervals,
+        circle_terminal_ratio,
+        inertia_for_ratio,
+        inertia_intervals,
+        paper_inertia_intervals,
+    )
+    from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
+    from slidespin.analysis.terminal import TerminalState, terminal_ratio, terminal_states
+    from slidespin.contact.body import Body
+    from slidespin.contact.ellipse import Ellipse
+    from slidespin.contact.friction import FrictionTensor
+    from slidespin.contact.incline import Incline
+    from slidespin.contact.limit_surface import LimitSurface, limit_surface
+    from slidespin.contact.pressure import (
+        BoussinesqPressure,
+        HertzPressure,
+        LinearPressure,
+        UniformPressure,
+    )
+    from slidespin.contact.pressure_map import PressureMap
+    from slidespin.contact.shapes import Annulus, Blade, Circle, Disk, Pads, Polygon, Rectangle
+    from slidespin.contact.statics import Onset, can_stick, critical_tilt, load_factor, onset
+    from slidespin.contact.wrench import Wrench, friction_wrench
+    from slidespin.motion.batch import StopResults, simulate_bodies, simulate_cases, simulate_many
+    from slidespin.motion.loaded import simulate_loaded
+    from slidespin.motion.loaded_trajectory import LoadedTrajectory
+    from slidespin.motion.loads import Load
+    from slidespin.motion.outcomes import ENDINGS, STATUSES, ending_message, status_message
+    from slidespin.motion.simulate import Trajectory, simulate
+    from slidespin.motion.state import State
+    from slidespin.studies.case import Case, load_case
+    from slidespin.studies.sweep import SweepResult, sweep
+    from slidespin.studies.sweep_read import read_sweep
+    from slidespin.studies.sweep_spec import SweepError
+    from slidespin.viz.animate import animate, frame_states
+    from slidespin.viz.sweep_plot import plot_sweep
+    from slidespin.viz.trajectory_plot import plot_loaded_trajectory, plot_trajectory
+
+#: where each public name is defined: imported on first use (PEP 562), so that
+#: ``import slidespin`` and ``slidespin --version`` do not load the numerical stack
+_HOMES = {
+    "paper": "slidespin.paper",
+    "FitWarning": "slidespin.analysis.fit",
+    "IdentifiabilityWarning": "slidespin.analysis.fit",
+    "compare_frames": "slidespin.analysis.fit",
+    "fit": "slidespin.analysis.fit",
+    "read_runs": "slidespin.analysis.fit_data",
+    "FitResult": "slidespin.analysis.fit_result",
+    "InertiaIntervals": "slidespin.analysis.intervals",
+    "circle_terminal_ratio": "slidespin.analysis.intervals",
+    "inertia_for_ratio": "slidespin.analysis.intervals",
+    "inertia_intervals": "slidespin.analysis.intervals",
+    "paper_inertia_intervals": "slidespin.analysis.intervals",
+    "PhasePortrait": "slidespin.analysis.phase_portrait",
+    "phase_portrait": "slidespin.analysis.phase_portrait",
+    "TerminalState": "slidespin.analysis.terminal",
+    "terminal_ratio": "slidespin.analysis.terminal",
+    "terminal_states": "slidespin.analysis.terminal",
+    "Body": "slidespin.contact.body",
+    "Ellipse": "slidespin.contact.ellipse",
+    "FrictionTensor": "slidespin.contact.friction",
+    "Incline": "slidespin.contact.incline",
+    "LimitSurface": "slidespin.contact.limit_surface",
+    "limit_surface": "slidespin.contact.limit_surface",
+    "BoussinesqPressure": "slidespin.contact.pressure",
+    "HertzPressure": "slidespin.contact.pressure",
+    "LinearPressure": "slidespin.contact.pressure",
+    "UniformPressure": "slidespin.contact.pressure",
+    "PressureMap": "slidespin.contact.pressure_map",
+    "Annulus": "slidespin.contact.shapes",
+    "Blade": "slidespin.contact.shapes",
+    "Circle": "slidespin.contact.shapes",
+    "Disk": "slidespin.contact.shapes",
+    "Pads": "slidespin.contact.shapes",
+    "Polygon": "slidespin.contact.shapes",
+    "Rectangle": "slidespin.contact.shapes",
+    "Onset": "slidespin.contact.statics",
+    "can_stick": "slidespin.contact.statics",
+    "critical_tilt": "slidespin.contact.statics",
+    "load_factor": "slidespin.contact.statics",
+    "onset": "slidespin.contact.statics",
+    "Wrench": "slidespin.contact.wrench",
+    "friction_wrench": "slidespin.contact.wrench",
+    "StopResults": "slidespin.motion.batch",
+    "simulate_bodies": "slidespin.motion.batch",
+    "simulate_cases": "slidespin.motion.batch",
+    "simulate_many": "slidespin.motion.batch",
+    "simulate_loaded": "slidespin.motion.loaded",
+    "LoadedTrajectory": "slidespin.motion.loaded_trajectory",
+    "Load": "slidespin.motion.loads",
+    "ENDINGS": "slidespin.motion.outcomes",
+    "STATUSES": "slidespin.motion.outcomes",
+    "ending_message": "slidespin.motion.outcomes",
+    "status_message": "slidespin.motion.outcomes",
+    "Trajectory": "slidespin.motion.simulate",
+    "simulate": "slidespin.motion.simulate",
+    "State": "slidespin.motion.state",
+    "Case": "slidespin.studies.case",
+    "load_case": "slidespin.studies.case",
+    "SweepResult": "slidespin.studies.sweep",
+    "sweep": "slidespin.studies.sweep",
+    "read_sweep": "slidespin.studies.sweep_read",
+    "SweepError": "slidespin.studies.sweep_spec",
+    "animate": "slidespin.viz.animate",
+    "frame_states": "slidespin.viz.animate",
+    "plot_sweep": "slidespin.viz.sweep_plot",
+    "plot_loaded_trajectory": "slidespin.viz.trajectory_plot",
+    "plot_trajectory": "slidespin.viz.trajectory_plot",
+}
 
 __all__ = [
     "__version__",
@@ -134,3 +214,18 @@ __all__ = [
     # the paper's tables and figures (slidespin.paper.table1, ...)
     "paper",
 ]
+
+
+def __getattr__(name: str):
+    """A public name, imported from its defining module on first use (PEP 562)."""
+    home = _HOMES.get(name)
+    if home is None:
+        raise AttributeError(f"module 'slidespin' has no attribute {name!r}")
+    module = importlib.import_module(home)
+    value = module if home == f"slidespin.{name}" else getattr(module, name)
+    globals()[name] = value  # later lookups are plain attribute reads
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

@@ -192,6 +192,7 @@ if os.environ.get("SLIDESPIN_TEST_NO_TMP"):
         raise PermissionError("no temporary directory either")
     tempfile.mkdtemp = refuse
 import slidespin as ss
+import slidespin.contact._engine  # the compiled modules: declaring their functions needs a cache
 from slidespin import _jit
 assert os.path.dirname(ss.__file__).startswith(sys.argv[1]), ss.__file__
 @_jit.jit

@@ -40,7 +40,7 @@ from slidespin._io import (
     write_outputs,
 )
 
-# the root package is where __version__ is defined (nothing else is imported from it)
+# the version lives in a root helper, so that reading it imports none of the layers
 from slidespin._version import __version__
 from slidespin.motion.outcomes import (
     LOADED_UNCONVERGED,
@@ -559,6 +559,9 @@ def main(argv=None) -> int:
     """Entry point of the ``slidespin`` command; returns the exit status."""
     argv = sys.argv[1:] if argv is None else list(argv)
     debug = "--debug" in argv
+    if argv == ["--version"]:  # answered before the parser loads every command's module
+        print(f"slidespin {__version__}")
+        return 0
     try:
         parser = build_parser()
         try:
