@@ -320,11 +320,7 @@ def _input_table(cols: dict, fields: dict) -> dict:
         "omega",
     ):
         val = np.asarray(fields[k])
-        out[
-            {"x": "x0", "y": "y0", "phi": "phi0", "vx": "vx0", "vy": "vy0", "omega": "omega0"}.get(
-                k, k
-            )
-        ] = val.astype(str) if val.dtype == object else val
+        out[_RENAMED.get(k, k)] = val.astype(str) if val.dtype == object else val
     out["I_star"] = out["moment_of_inertia"] / (out["mass"] * out["a"] ** 2)
     out["mu"] = out["fy"] - out["fx"]
     out["aspect"] = out["b"] / out["a"]
