@@ -11,19 +11,35 @@ install used by an account without a writable home. slidespin then caches in a p
 temporary directory made for this process (``tempfile.mkdtemp``: never shared, since numba's
 cache files are pickles), or compiles without a cache if even that fails, and says so once
 on stderr (a :class:`CacheWarning`). Nothing else changes: the code compiled is the same.
+
+Compiling is slow (tens of seconds for the integrator), so the first compile of a slidespin
+function in a process says so once on stderr, with a rough cost (:func:`compile_note`); a
+function loaded from numba's cache, or from the ahead-of-time compiled core
+(:mod:`slidespin.motion._aot`), compiles nothing and prints nothing.
 """
 
 from __future__ import annotations
 
+import sys
 import tempfile
 import warnings
 
 import numba
 from numba import prange
 from numba.core import config as _config
+from numba.core import event as _event
 from numba.extending import overload
 
-__all__ = ["jit", "prange", "numba", "set_threads", "CacheWarning", "overload", "is_none_type"]
+__all__ = [
+    "jit",
+    "prange",
+    "numba",
+    "set_threads",
+    "CacheWarning",
+    "overload",
+    "is_none_type",
+    "compile_note",
+]
 
 
 class CacheWarning(UserWarning):
@@ -109,3 +125,44 @@ def jit(fn=None, **options):
     if fn is None:
         return lambda f: _njit_cached(f, options)
     return _njit_cached(fn, options)
+
+
+# ---------------------------------------------------------------- the one note on compiling
+#: rough CPU seconds of a first compile, by the compiled entry called from Python (measured
+#: from an empty cache on 2 shared cores; the rest: a few seconds)
+COMPILE_SECONDS = {"integrate_fp": 30, "integrate_many": 40, "accelerations": 10}
+_compiling: dict = {"noted": False, "enabled": True}
+
+
+def compile_note(name: str) -> str:
+    """The line printed once on stderr when slidespin first compiles ``name`` in a process."""
+    seconds = COMPILE_SECONDS.get(name)
+    cost = f"about {seconds} s" if seconds else "a few seconds"
+    return (
+        f"slidespin: compiling the numerical kernels once ({name}: {cost}); "
+        "later runs load them from numba's on-disk cache"
+    )
+
+
+class _CompileListener(_event.Listener):
+    """Prints :func:`compile_note` at the first compile of a slidespin function (numba
+    raises the ``numba:compile`` event only when nothing is cached)."""
+
+    def on_start(self, event):
+        if _compiling["noted"] or not _compiling["enabled"]:
+            return
+        func = getattr(event.data.get("dispatcher"), "py_func", None)
+        if not getattr(func, "__module__", "").startswith("slidespin."):
+            return
+        _compiling["noted"] = True
+        try:
+            sys.stderr.write(compile_note(func.__name__) + "\n")
+            sys.stderr.flush()
+        except (AttributeError, OSError, ValueError):  # no usable stderr
+            pass
+
+    def on_end(self, event):
+        pass
+
+
+_event.register("numba:compile", _CompileListener())

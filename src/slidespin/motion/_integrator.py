@@ -4,7 +4,8 @@ The system (the state y = (u, ln s, t, x, y, φ, ℓ) and its right-hand side) i
 :mod:`slidespin.motion._flow`: smooth through the stop, where s decays exponentially in τ while
 u converges to a fixed point u* of the sphere flow and t, x, y, φ converge to their stop
 values. The integrator is the Dormand–Prince 8(5,3) pair (DOP853, Hairer–Nørsett–Wanner)
-with the coefficients and error norm of ``scipy.integrate.DOP853``, run entirely in compiled
+with the coefficients (:mod:`slidespin.motion._dop853`) and error norm of
+``scipy.integrate.DOP853``, run entirely in compiled
 code; u is projected back onto the unit sphere after each step. Once s has dropped by
 ``s_drop`` and u is near a fixed point (|du/dτ| < ``POLISH_START``), the fixed point u* is
 found by Newton's method at the frozen final φ (φ moves by O(s²) from there on) and accepted
@@ -47,20 +48,29 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from slidespin._jit import jit
 from slidespin.contact._engine import (
+    P_BODY,
     P_CSYM,
     P_K,
     P_SHAPE,
+    P_T00,
+    P_T01,
+    P_T10,
+    P_T11,
     P_XG,
     P_YG,
     SHAPE_FOOTPRINT,
+    elliptic_args,
     footprint_argument,
     kernel_constants,
 )
 from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE
+from slidespin.contact._kernel_ellipse import wrench_array as ellipse_wrench_array
+from slidespin.contact._kernel_footprint import wrench_array as footprint_wrench_array
+from slidespin.motion import _aot
+from slidespin.motion import _dop853 as _dop
 from slidespin.motion._flow import NY, _rhs
 from slidespin.motion._stops import (
     ENDING_TOL,
@@ -72,9 +82,9 @@ from slidespin.motion._stops import (
 )
 
 _NS = _dop.N_STAGES  # 12
-_A = np.ascontiguousarray(_dop.A[:_NS, :_NS])
+_A = np.ascontiguousarray(_dop.A)
 _B = np.ascontiguousarray(_dop.B)
-_C = np.ascontiguousarray(_dop.C[:_NS])
+_C = np.ascontiguousarray(_dop.C)
 _E3 = np.ascontiguousarray(_dop.E3)
 _E5 = np.ascontiguousarray(_dop.E5)
 
@@ -138,21 +148,42 @@ def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
 
 def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
     """:func:`integrate_fp` for the parameter vector ``par`` and the footprint arrays ``fe``,
-    ``fc``, ``geo`` of :meth:`slidespin.Body.kernel_params` (edges (n, 4), circles (m, 4)
-    and kernel constants (``NGEO``,) in natural units; ignored for an ellipse): the compiled
-    specialisation of the patch's kind runs, compiled on its first use."""
-    return integrate_fp(
-        par,
-        footprint_argument(par, fe, fc, geo),
-        y0,
-        rtol,
-        atol,
-        utol,
-        s_drop,
-        max_steps,
-        h_max,
-        record,
-    )
+    ``fc``, ``geo`` of :meth:`slidespin.Body.engine_params` (edges (n, 4), circles (m, 4)
+    and kernel constants (``NGEO``,) in natural units; ignored for an ellipse).
+
+    The ahead-of-time compiled core runs it when the install built one from these sources
+    (:mod:`slidespin.motion._aot`; the same code, the same numbers); otherwise the JIT
+    specialisation of the patch's kind, compiled on its first use.
+    """
+    fp = footprint_argument(par, fe, fc, geo)
+    par = np.ascontiguousarray(par, dtype=np.float64)
+    y0 = np.ascontiguousarray(y0, dtype=np.float64)
+    tail = (float(rtol), float(atol), float(utol), float(s_drop), int(max_steps), float(h_max))
+    aot = _aot.core()
+    if aot is not None:
+        if fp is None:
+            return aot.integrate_ellipse(par, y0, *tail, bool(record))
+        return aot.integrate_footprint(par, *fp, y0, *tail, bool(record))
+    return integrate_fp(par, fp, y0, *tail, bool(record))
+
+
+def wrench_rows(par, fe, fc, geo, phi, u1, u2, w):
+    """The friction wrench (Fx, Fy, M) in natural units along recorded rows: body angle
+    ``phi``, velocity ``(u1, u2)`` and spin ``w`` (1-D arrays of equal length), for the patch
+    of ``par`` (the ellipse kernel to 1e-12, or the footprint's exact kernel). Run by the
+    ahead-of-time compiled core when there is one, like :func:`integrate_on`."""
+    phi, u1, u2, w = (np.ascontiguousarray(x, dtype=np.float64) for x in (phi, u1, u2, w))
+    t = (float(par[P_T00]), float(par[P_T01]), float(par[P_T10]), float(par[P_T11]))
+    body = bool(par[P_BODY] != 0.0)
+    fp = footprint_argument(par, fe, fc, geo)
+    aot = _aot.core()
+    if fp is None:
+        args = (*elliptic_args(par), phi, u1, u2, w, 1e-12)
+        run = ellipse_wrench_array if aot is None else aot.wrench_array_ellipse
+        fx, fy, mm, _ = run(*args)
+        return fx, fy, mm
+    run = footprint_wrench_array if aot is None else aot.wrench_array_footprint
+    return run(*fp, *t, body, phi, u1, u2, w)
 
 
 @jit(error_model="numpy")

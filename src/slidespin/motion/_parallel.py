@@ -16,12 +16,27 @@ import numpy as np
 
 from slidespin._jit import jit, prange
 from slidespin.contact._engine import P_SHAPE, SHAPE_FOOTPRINT
+from slidespin.motion import _aot
 from slidespin.motion._flow import NY, initial_state
 from slidespin.motion._integrator import ST_AT_REST, integrate_fp
 
+#: a batch of at most this many cases runs serially on the ahead-of-time compiled core when
+#: there is one (:mod:`slidespin.motion._aot`; the same source without ``prange``, the same
+#: numbers): a first small batch then compiles nothing (the parallel loop takes ~40 s of CPU
+#: to compile once), at most a factor of the core count slower than the parallel loop
+SERIAL_MAX = 1000
+
+
+def stop_direction(yend):
+    """|u₁₂| and ϑ of each stop state (:func:`_stop_direction`), on the ahead-of-time compiled
+    core when there is one."""
+    aot = _aot.core()
+    yend = np.ascontiguousarray(yend, dtype=np.float64)
+    return _stop_direction(yend) if aot is None else aot.stop_direction(yend)
+
 
 @jit(error_model="numpy")
-def stop_direction(yend):
+def _stop_direction(yend):
     """|u₁₂| and the direction ϑ = atan2(u₂, u₁) of each stop state, with the same libm
     functions as :func:`slidespin.simulate` (math.hypot, math.atan2), bit for bit."""
     n = yend.shape[0]
@@ -76,7 +91,7 @@ def integrate_many(pars, *args):
     pars = c(pars, dtype=np.float64)
     init = c(init, dtype=np.float64)
     foot = pars[:, P_SHAPE] == SHAPE_FOOTPRINT
-    args = (rtol, atol, utol, s_drop, max_steps)
+    args = (float(rtol), float(atol), float(utol), float(s_drop), int(max_steps))
     fps = (
         c(edges, dtype=np.float64),
         c(circles, dtype=np.float64),
@@ -85,9 +100,9 @@ def integrate_many(pars, *args):
         c(geos, dtype=np.float64),
     )
     if not foot.any():
-        return _integrate_many(pars, None, init, *args)
+        return _run(pars, None, init, *args)
     if foot.all():
-        return _integrate_many(pars, fps, init, *args)
+        return _run(pars, fps, init, *args)
     n = pars.shape[0]
     out = (
         np.empty((n, NY)),
@@ -98,11 +113,11 @@ def integrate_many(pars, *args):
         np.empty((n, 4)),
     )
     ell = np.flatnonzero(~foot)
-    res = _integrate_many(c(pars[ell]), None, c(init[ell]), *args)
+    res = _run(c(pars[ell]), None, c(init[ell]), *args)
     for whole, part in zip(out, res):
         whole[ell] = part
     fpi = np.flatnonzero(foot)
-    res = _integrate_many(
+    res = _run(
         c(pars[fpi]),
         fps[:2] + (c(fps[2][fpi]), c(fps[3][fpi]), c(fps[4][fpi])),
         c(init[fpi]),
@@ -111,6 +126,16 @@ def integrate_many(pars, *args):
     for whole, part in zip(out, res):
         whole[fpi] = part
     return out
+
+
+def _run(pars, fps, init, *args):
+    """:func:`_integrate_many`, or its serial twin on the compiled core (:data:`SERIAL_MAX`)."""
+    aot = _aot.core()
+    if aot is None or pars.shape[0] > SERIAL_MAX:
+        return _integrate_many(pars, fps, init, *args)
+    if fps is None:
+        return aot.integrate_batch_ellipse(pars, init, *args)
+    return aot.integrate_batch_footprint(pars, *fps, init, *args)
 
 
 @jit(parallel=True, error_model="numpy")

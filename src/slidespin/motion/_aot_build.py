@@ -1,0 +1,159 @@
+"""Build the ahead-of-time compiled core (run once by the package's build; never at runtime).
+
+The core is the integrator's entries, the batch loop and the recorded-wrench loops of
+:func:`simulate`, compiled by numba's ``pycc`` from the same sources the JIT compiles (no
+second implementation): :func:`slidespin.motion._integrator.integrate_fp` for an ellipse and
+for a footprint, the batch loop of :mod:`slidespin.motion._parallel` run serially (for small
+batches), and the two ``wrench_array`` loops of the ellipse and footprint kernels. The result
+is an ordinary extension module, ``slidespin/motion/_aot_core.*.so`` (it needs neither numba
+nor LLVM at runtime), and beside it ``_aot_core.json``: the numba version, the CPU it was
+compiled for, and the SHA-256 of every slidespin source file imported while compiling.
+:mod:`slidespin.motion._aot` uses the module only while those hashes still match the sources
+(an edited source falls back to the JIT, and says so).
+
+Run by ``hatch_build.py`` (the build hook in ``pyproject.toml``) in a subprocess as
+``python -m slidespin.motion._aot_build OUTPUT_DIR CPU``; ``CPU`` is ``host`` for an editable
+or local build (the speed of the JIT) and ``generic`` for a wheel meant for other machines.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import sys
+import time
+from pathlib import Path
+
+import numba
+from numba import types as T
+from numba.pycc import CC
+
+from slidespin import _jit
+from slidespin.contact._kernel_ellipse import wrench_array as _ellipse_wrench_array
+from slidespin.contact._kernel_footprint import wrench_array as _footprint_wrench_array
+from slidespin.motion._integrator import integrate_fp
+from slidespin.motion._parallel import _integrate_many, _stop_direction
+
+#: the extension module's name (in ``slidespin.motion``) and its manifest's file name
+MODULE = "_aot_core"
+MANIFEST = MODULE + ".json"
+
+_F = T.float64
+_I = T.int64
+_A1 = T.Array(T.float64, 1, "C")
+_A2 = T.Array(T.float64, 2, "C")
+_IA1 = T.Array(T.int64, 1, "C")
+# integrate_fp's result and its arguments after (par, fp)
+_RUN = T.Tuple((_A1, _I, _I, _I, _I, _F, _A2, _A1))
+_TAIL = (_A1, _F, _F, _F, _F, _I, _F, T.boolean)
+# _integrate_many's result and its arguments after (pars, fps, init)
+_IA2 = T.Array(T.int64, 2, "C")
+_MANY = T.Tuple((_A2, _IA1, _IA1, _IA1, _IA1, _A2))
+_MANY_TAIL = (_F, _F, _F, _F, _I)
+
+# the batch loop of slidespin.motion._parallel without ``prange`` (pycc compiles no parallel
+# code; a prange in a serial function is a range): the same source, run case after case.
+# Not cached: it is compiled here only, into the core
+_integrate_serial = numba.njit(error_model="numpy", cache=False)(_integrate_many.py_func)
+
+
+def _compiler(output_dir: Path, target_cpu: str) -> CC:
+    cc = CC(MODULE)
+    cc.output_dir = str(output_dir)
+    cc.target_cpu = target_cpu
+    cc.verbose = False
+
+    @cc.export("integrate_ellipse", _RUN(_A1, *_TAIL))
+    def integrate_ellipse(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+        return integrate_fp(par, None, y0, rtol, atol, utol, s_drop, max_steps, h_max, record)
+
+    @cc.export("integrate_footprint", _RUN(_A1, _A2, _A2, _A1, *_TAIL))
+    def integrate_footprint(
+        par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
+    ):
+        fp = (fe, fc, geo)
+        return integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record)
+
+    @cc.export(
+        "wrench_array_ellipse",
+        T.Tuple((_A1, _A1, _A1, _IA1))(
+            _F, _I, _F, _F, _F, _F, _F, _F, T.boolean, _A1, _A1, _A1, _A1, _F
+        ),
+    )
+    def wrench_array_ellipse(bn, law, xg, yg, t00, t01, t10, t11, body, phi, vx, vy, om, tol):
+        return _ellipse_wrench_array(
+            bn, law, xg, yg, t00, t01, t10, t11, body, phi, vx, vy, om, tol
+        )
+
+    @cc.export(
+        "wrench_array_footprint",
+        T.Tuple((_A1, _A1, _A1))(_A2, _A2, _A1, _F, _F, _F, _F, T.boolean, _A1, _A1, _A1, _A1),
+    )
+    def wrench_array_footprint(edges, circles, geo, t00, t01, t10, t11, body, phi, vx, vy, om):
+        return _footprint_wrench_array(
+            edges, circles, geo, t00, t01, t10, t11, body, phi, vx, vy, om
+        )
+
+    @cc.export("integrate_batch_ellipse", _MANY(_A2, _A2, *_MANY_TAIL))
+    def integrate_batch_ellipse(pars, init, rtol, atol, utol, s_drop, max_steps):
+        return _integrate_serial(pars, None, init, rtol, atol, utol, s_drop, max_steps)
+
+    @cc.export("integrate_batch_footprint", _MANY(_A2, _A2, _A2, _IA2, _IA2, _A2, _A2, *_MANY_TAIL))
+    def integrate_batch_footprint(
+        pars, edges, circles, eidx, cidx, geos, init, rtol, atol, utol, s_drop, max_steps
+    ):
+        fps = (edges, circles, eidx, cidx, geos)
+        return _integrate_serial(pars, fps, init, rtol, atol, utol, s_drop, max_steps)
+
+    @cc.export("stop_direction", T.Tuple((_A1, _A1))(_A2))
+    def stop_direction(yend):
+        return _stop_direction(yend)
+
+    return cc
+
+
+#: imported while compiling but holding nothing compiled (package docstrings and lazy
+#: exports, the version, the runtime loader): edits there leave the core valid
+NOT_COMPILED = ("__init__.py", "_version.py", "motion/_aot.py")
+
+
+def source_hashes(package_dir: Path) -> dict[str, str]:
+    """SHA-256 of every imported ``slidespin`` module's source that holds compiled code or
+    the constants it uses, by path relative to the package (the sources the compiled core
+    was built from; :data:`NOT_COMPILED` left out)."""
+    out = {}
+    for name, mod in sorted(sys.modules.items()):
+        path = getattr(mod, "__file__", None)
+        if not (name == "slidespin" or name.startswith("slidespin.")) or not path:
+            continue
+        p = Path(path).resolve()
+        if p.suffix != ".py":
+            continue
+        rel = p.relative_to(package_dir).as_posix()
+        if rel.endswith("__init__.py") or rel in NOT_COMPILED:
+            continue
+        out[rel] = hashlib.sha256(p.read_bytes()).hexdigest()
+    return out
+
+
+def build(output_dir: str | Path, target_cpu: str = "host") -> Path:
+    """Compile the core into ``output_dir`` and write its manifest; return the manifest's path."""
+    output_dir = Path(output_dir)
+    output_dir.mkdir(parents=True, exist_ok=True)
+    _jit._compiling["enabled"] = False  # the build says what it compiles itself
+    t0 = time.perf_counter()
+    _compiler(output_dir, target_cpu).compile()
+    package_dir = Path(__file__).resolve().parent.parent
+    manifest = {
+        "numba": numba.__version__,
+        "target_cpu": target_cpu,
+        "seconds": round(time.perf_counter() - t0, 1),
+        "sources": source_hashes(package_dir),
+    }
+    path = output_dir / MANIFEST
+    path.write_text(json.dumps(manifest, indent=1) + "\n")
+    return path
+
+
+if __name__ == "__main__":  # pragma: no cover - run by hatch_build.py
+    print(build(sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else "host"))
