@@ -3,10 +3,10 @@
 Without it, the first ``simulate`` in a new environment JIT-compiles the integrator and the
 wrench kernel (~30 s of CPU); with it, nothing is compiled for the demo, an ellipse or a
 footprint (other entries still compile on first use and are cached by numba). The compiled
-module is the same numba source (see ``src/slidespin/motion/_aot_build.py``), and it is used
-only while its sources are unchanged (``src/slidespin/motion/_aot.py``).
+module is the same numba source (see ``src/slidespin/_aot_build.py``), and it is used
+only while its sources are unchanged (``src/slidespin/_aot.py``).
 
-- editable install (``pip install -e .``): written into ``src/slidespin/motion/`` and
+- editable install (``pip install -e .``): written into ``src/slidespin/`` and
   compiled for this machine's CPU (``host``), like the JIT;
 - wheel: compiled for a ``generic`` CPU of the platform and added to the wheel, which is then
   platform-specific.
@@ -29,7 +29,7 @@ from hatchling.builders.hooks.plugin.interface import BuildHookInterface
 
 _ROOT = Path(__file__).resolve().parent
 _SRC = _ROOT / "src"
-_MOTION = _SRC / "slidespin" / "motion"
+_PACKAGE = _SRC / "slidespin"
 
 
 def _compile(output_dir: Path, target_cpu: str) -> list[Path]:
@@ -39,7 +39,7 @@ def _compile(output_dir: Path, target_cpu: str) -> list[Path]:
     # environment rewrites PYTHONPATH); its JIT cache stays out of the tree
     code = (
         "import sys; sys.path.insert(0, sys.argv[1]); "
-        "from slidespin.motion._aot_build import build; build(sys.argv[2], sys.argv[3])"
+        "from slidespin._aot_build import build; build(sys.argv[2], sys.argv[3])"
     )
     with tempfile.TemporaryDirectory(prefix="slidespin-aot-cache-") as cache:
         env["NUMBA_CACHE_DIR"] = cache
@@ -65,7 +65,7 @@ class AheadOfTimeCore(BuildHookInterface):
         )
         try:
             if editable:
-                _compile(_MOTION, "host")
+                _compile(_PACKAGE, "host")
                 return
             out = Path(tempfile.mkdtemp(prefix="slidespin-aot-"))
             files = _compile(out, os.environ.get("SLIDESPIN_AOT_CPU", "generic"))
@@ -76,6 +76,6 @@ class AheadOfTimeCore(BuildHookInterface):
             )
             return
         for f in files:
-            build_data["force_include"][str(f)] = f"slidespin/motion/{f.name}"
+            build_data["force_include"][str(f)] = f"slidespin/{f.name}"
         build_data["pure_python"] = False
         build_data["infer_tag"] = True

@@ -1,9 +1,9 @@
 """The ahead-of-time compiled core, when the install built one from these very sources.
 
-The package's build (``hatch_build.py``) compiles the integrator's entries and the
-recorded-wrench loops once with numba's ``pycc`` (:mod:`slidespin.motion._aot_build`) into
-the extension module ``slidespin.motion._aot_core``, so that a first ``simulate`` of an
-ellipse or a footprint compiles nothing. The module is the same numba source compiled ahead
+The package's build (``hatch_build.py``) compiles the integrator's entries, the small-batch
+loop and the wrench-array loops once with numba's ``pycc`` (:mod:`slidespin._aot_build`)
+into the extension module ``slidespin._aot_core``, so that a first ``friction_wrench``,
+``simulate`` or small ``simulate_many`` of an ellipse or a footprint compiles nothing. The module is the same numba source compiled ahead
 of time: its results are those of the JIT bit for bit (tested). It is used only if
 
 - it exists and imports (a build without a C compiler, or with ``SLIDESPIN_AOT=0`` at build
@@ -15,7 +15,9 @@ of time: its results are those of the JIT bit for bit (tested). It is used only 
   the edited code instead, and a :class:`CoreWarning` says so once (rebuild with
   ``pip install -e .``).
 
-Otherwise the JIT runs, as before. This module imports neither numba nor the kernels.
+Otherwise the JIT runs, as before. A private root helper: this module imports neither numba
+nor any layer, so that every layer may ask it (the kernels' array loops in ``contact``, the
+integrator and the batch in ``motion``).
 """
 
 from __future__ import annotations
@@ -30,10 +32,10 @@ from types import ModuleType
 
 __all__ = ["CoreWarning", "core", "status"]
 
-#: the extension module and its manifest (names set by slidespin.motion._aot_build)
-MODULE = "slidespin.motion._aot_core"
+#: the extension module and its manifest (names set by slidespin._aot_build)
+MODULE = "slidespin._aot_core"
 MANIFEST = "_aot_core.json"
-_PACKAGE_DIR = Path(__file__).resolve().parent.parent
+_PACKAGE_DIR = Path(__file__).resolve().parent
 
 
 class CoreWarning(UserWarning):
@@ -76,7 +78,7 @@ def _load() -> tuple[ModuleType | None, str]:
                 CoreWarning,
                 filename="slidespin",
                 lineno=0,
-                module="slidespin.motion._aot",
+                module="slidespin._aot",
             )
             return None, why
     return module, f"in use ({manifest.get('target_cpu', '?')} CPU, numba {manifest.get('numba')})"

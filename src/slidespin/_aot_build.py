@@ -1,18 +1,21 @@
 """Build the ahead-of-time compiled core (run once by the package's build; never at runtime).
 
+Build-time only: nothing in the package imports this module (it imports the layers whose
+code it compiles).
+
 The core is the integrator's entries, the batch loop and the recorded-wrench loops of
 :func:`simulate`, compiled by numba's ``pycc`` from the same sources the JIT compiles (no
 second implementation): :func:`slidespin.motion._integrator.integrate_fp` for an ellipse and
 for a footprint, the batch loop of :mod:`slidespin.motion._parallel` run serially (for small
 batches), and the two ``wrench_array`` loops of the ellipse and footprint kernels. The result
-is an ordinary extension module, ``slidespin/motion/_aot_core.*.so`` (it needs neither numba
+is an ordinary extension module, ``slidespin/_aot_core.*.so`` (it needs neither numba
 nor LLVM at runtime), and beside it ``_aot_core.json``: the numba version, the CPU it was
 compiled for, and the SHA-256 of every slidespin source file imported while compiling.
-:mod:`slidespin.motion._aot` uses the module only while those hashes still match the sources
+:mod:`slidespin._aot` uses the module only while those hashes still match the sources
 (an edited source falls back to the JIT, and says so).
 
 Run by ``hatch_build.py`` (the build hook in ``pyproject.toml``) in a subprocess as
-``python -m slidespin.motion._aot_build OUTPUT_DIR CPU``; ``CPU`` is ``host`` for an editable
+``build(OUTPUT_DIR, CPU)``; ``CPU`` is ``host`` for an editable
 or local build (the speed of the JIT) and ``generic`` for a wheel meant for other machines.
 """
 
@@ -29,7 +32,7 @@ from numba import types as T
 from numba.pycc import CC
 
 from slidespin import _jit
-from slidespin.contact._kernel_ellipse import wrench_array as _ellipse_wrench_array
+from slidespin.contact._kernel_ellipse import wrench_loop as _ellipse_wrench_array
 from slidespin.contact._kernel_footprint import wrench_array as _footprint_wrench_array
 from slidespin.motion._integrator import integrate_fp
 from slidespin.motion._parallel import _integrate_many, _stop_direction
@@ -114,7 +117,7 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
 
 #: imported while compiling but holding nothing compiled (package docstrings and lazy
 #: exports, the version, the runtime loader): edits there leave the core valid
-NOT_COMPILED = ("__init__.py", "_version.py", "motion/_aot.py")
+NOT_COMPILED = ("__init__.py", "_version.py", "_aot.py")
 
 
 def source_hashes(package_dir: Path) -> dict[str, str]:
@@ -143,7 +146,7 @@ def build(output_dir: str | Path, target_cpu: str = "host") -> Path:
     _jit._compiling["enabled"] = False  # the build says what it compiles itself
     t0 = time.perf_counter()
     _compiler(output_dir, target_cpu).compile()
-    package_dir = Path(__file__).resolve().parent.parent
+    package_dir = Path(__file__).resolve().parent
     manifest = {
         "numba": numba.__version__,
         "target_cpu": target_cpu,

@@ -15,7 +15,7 @@ on stderr (a :class:`CacheWarning`). Nothing else changes: the code compiled is 
 Compiling is slow (tens of seconds for the integrator), so the first compile of a slidespin
 function in a process says so once on stderr, with a rough cost (:func:`compile_note`); a
 function loaded from numba's cache, or from the ahead-of-time compiled core
-(:mod:`slidespin.motion._aot`), compiles nothing and prints nothing.
+(:mod:`slidespin._aot`), compiles nothing and prints nothing.
 """
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""The ahead-of-time compiled core (slidespin.motion._aot): the same numbers as the JIT, bit
+"""The ahead-of-time compiled core (slidespin._aot): the same numbers as the JIT, bit
 for bit, and used only while its sources are unchanged."""
 
 from __future__ import annotations
@@ -16,7 +16,8 @@ import pytest
 
 import slidespin as ss
 from slidespin.contact._engine import footprint_argument
-from slidespin.motion import _aot, _integrator
+from slidespin import _aot
+from slidespin.motion import _integrator
 
 BODIES = {
     "ellipse": lambda: ss.Body(ss.Ellipse.from_eccentricity(0.1, 0.866), ss.UniformPressure(), 1.0),

@@ -24,6 +24,7 @@ import math
 
 import numpy as np
 
+from slidespin import _aot
 from slidespin._jit import jit
 from slidespin.contact._kernel_ellipse_rules import (
     _CC_SIZES,
@@ -613,12 +614,26 @@ def wrench_world(bn, law, xg, yg, t00, t01, t10, t11, body_frame, phi, vx, vy, o
     )
 
 
-@jit(error_model="numpy")
 def wrench_array(bn, law, xg, yg, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol):
-    """:func:`wrench_world` over 1-D arrays ``phi, vx, vy, omega`` of equal length.
+    """:func:`wrench_world` over 1-D arrays ``phi, vx, vy, omega`` of equal length (called
+    from Python): :func:`wrench_loop`, on the ahead-of-time compiled core when there is one
+    (:mod:`slidespin._aot`; the same code, the same numbers).
 
     Returns (Fx, Fy, M, status) arrays.
     """
+    c = np.ascontiguousarray
+    args = (float(bn), int(law), float(xg), float(yg), float(t00), float(t01), float(t10))
+    args += (float(t11), bool(body_frame))
+    arrays = (c(phi, np.float64), c(vx, np.float64), c(vy, np.float64), c(omega, np.float64))
+    aot = _aot.core()
+    run = wrench_loop if aot is None else aot.wrench_array_ellipse
+    return run(*args, *arrays, float(tol))
+
+
+@jit(error_model="numpy")
+def wrench_loop(bn, law, xg, yg, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol):
+    """:func:`wrench_world` over 1-D arrays ``phi, vx, vy, omega`` of equal length, compiled
+    (the loop of :func:`wrench_array`). Returns (Fx, Fy, M, status) arrays."""
     n = vx.size
     fx = np.empty(n)
     fy = np.empty(n)

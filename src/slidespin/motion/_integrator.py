@@ -49,6 +49,7 @@ import math
 
 import numpy as np
 
+from slidespin import _aot
 from slidespin._jit import jit
 from slidespin.contact._engine import (
     P_BODY,
@@ -69,7 +70,6 @@ from slidespin.contact._engine import (
 from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE
 from slidespin.contact._kernel_ellipse import wrench_array as ellipse_wrench_array
 from slidespin.contact._kernel_footprint import wrench_array as footprint_wrench_array
-from slidespin.motion import _aot
 from slidespin.motion import _dop853 as _dop
 from slidespin.motion._flow import NY, _rhs
 from slidespin.motion._stops import (
@@ -152,7 +152,7 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     and kernel constants (``NGEO``,) in natural units; ignored for an ellipse).
 
     The ahead-of-time compiled core runs it when the install built one from these sources
-    (:mod:`slidespin.motion._aot`; the same code, the same numbers); otherwise the JIT
+    (:mod:`slidespin._aot`; the same code, the same numbers); otherwise the JIT
     specialisation of the patch's kind, compiled on its first use.
     """
     fp = footprint_argument(par, fe, fc, geo)
@@ -173,15 +173,13 @@ def wrench_rows(par, fe, fc, geo, phi, u1, u2, w):
     of ``par`` (the ellipse kernel to 1e-12, or the footprint's exact kernel). Run by the
     ahead-of-time compiled core when there is one, like :func:`integrate_on`."""
     phi, u1, u2, w = (np.ascontiguousarray(x, dtype=np.float64) for x in (phi, u1, u2, w))
+    fp = footprint_argument(par, fe, fc, geo)
+    if fp is None:
+        fx, fy, mm, _ = ellipse_wrench_array(*elliptic_args(par), phi, u1, u2, w, 1e-12)
+        return fx, fy, mm
     t = (float(par[P_T00]), float(par[P_T01]), float(par[P_T10]), float(par[P_T11]))
     body = bool(par[P_BODY] != 0.0)
-    fp = footprint_argument(par, fe, fc, geo)
     aot = _aot.core()
-    if fp is None:
-        args = (*elliptic_args(par), phi, u1, u2, w, 1e-12)
-        run = ellipse_wrench_array if aot is None else aot.wrench_array_ellipse
-        fx, fy, mm, _ = run(*args)
-        return fx, fy, mm
     run = footprint_wrench_array if aot is None else aot.wrench_array_footprint
     return run(*fp, *t, body, phi, u1, u2, w)
 

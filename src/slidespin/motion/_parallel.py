@@ -14,14 +14,14 @@ import math
 
 import numpy as np
 
+from slidespin import _aot
 from slidespin._jit import jit, prange
 from slidespin.contact._engine import P_SHAPE, SHAPE_FOOTPRINT
-from slidespin.motion import _aot
 from slidespin.motion._flow import NY, initial_state
 from slidespin.motion._integrator import ST_AT_REST, integrate_fp
 
 #: a batch of at most this many cases runs serially on the ahead-of-time compiled core when
-#: there is one (:mod:`slidespin.motion._aot`; the same source without ``prange``, the same
+#: there is one (:mod:`slidespin._aot`; the same source without ``prange``, the same
 #: numbers): a first small batch then compiles nothing (the parallel loop takes ~40 s of CPU
 #: to compile once), at most a factor of the core count slower than the parallel loop
 SERIAL_MAX = 1000
