@@ -53,7 +53,10 @@ def _column(name, value, n, kind="real"):
         raise ValueError(f"{name} has shape {arr.shape}; valid: a scalar or an array of length {n}")
     if kind == "real":
         if arr.dtype.kind not in "fiu":
-            raise ValueError(f"{name} must be real numbers, got dtype {arr.dtype}")
+            raise ValueError(
+                f"{name} must be real numbers, got dtype {arr.dtype}; valid values: a real "
+                f"scalar or an array of length {n} of ints or floats"
+            )
         arr = arr.astype(float)
     return np.broadcast_to(arr, (n,)) if arr.ndim == 0 or arr.size == 1 else arr
 
@@ -80,16 +83,26 @@ def validated_columns(cases: dict):
     for ``law`` and ``frame``); ``moment_of_inertia`` has the uniform-plate default filled in.
     """
     if not isinstance(cases, dict):
-        raise ValueError(f"cases must be a dict of case fields, got {type(cases).__name__}")
+        raise ValueError(
+            f"cases = {v._short(cases)} ({type(cases).__name__}) is invalid; valid values: a "
+            f"dict of case fields ({', '.join(CASE_FIELDS)}), each a scalar or a 1-D array"
+        )
     unknown = sorted(set(cases) - set(CASE_FIELDS))
     if unknown:
         raise ValueError(f"unknown case field {unknown[0]!r}; valid: {', '.join(CASE_FIELDS)}")
     missing = [k for k, d in CASE_FIELDS.items() if d is None and k not in cases]
     if missing:
-        raise ValueError(f"missing case field {missing[0]!r}")
+        required = ", ".join(k for k, d in CASE_FIELDS.items() if d is None)
+        raise ValueError(
+            f"missing case field {missing[0]!r}; valid cases give the required fields "
+            f"{required} (the others have defaults: CASE_FIELDS)"
+        )
     sizes = {np.size(v) for v in cases.values() if np.ndim(v) == 1 and np.size(v) != 1}
     if len(sizes) > 1:
-        raise ValueError(f"case arrays have different lengths {sorted(sizes)}")
+        raise ValueError(
+            f"case arrays have different lengths {sorted(sizes)}; valid: every array of "
+            "one length N (or a scalar, or length 1, shared by all cases)"
+        )
     n = sizes.pop() if sizes else 1
     col = {}
     for k, d in CASE_FIELDS.items():
@@ -172,7 +185,10 @@ MAX_PADS = 64
 
 def _need(cols: dict, shape: str, key: str) -> np.ndarray:
     if key not in cols:
-        raise ValueError(f"shape {shape!r} needs {key!r} (fix or vary it)")
+        valid = ", ".join(SHAPE_KEYS.get(shape, ()))
+        raise ValueError(
+            f"shape {shape!r} needs {key!r} (fix or vary it); valid keys of {shape!r}: {valid}"
+        )
     return np.asarray(cols[key], dtype=float)
 
 

@@ -21,26 +21,153 @@ Symbols and code names: Q → ``Load.force`` [N], T → ``Load.torque`` [N m], r
 
 from __future__ import annotations
 
+import bisect
+import inspect
 import math
 import numbers
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from slidespin import _validate as v
-from slidespin.contact._profile import Profile, as_real, check_pair, check_times, show_value
+from slidespin.contact._profile import Profile, as_real, check_pair, show_value
 from slidespin.contact.body import Body
 from slidespin.contact.incline import Incline
 
-__all__ = ["LOAD_FRAMES", "Load", "applied_wrench"]
+__all__ = ["LOAD_FRAMES", "MAX_KNOTS", "Load", "applied_wrench"]
 
 #: frames a :class:`Load`'s force may be given in
 LOAD_FRAMES = ("plane", "body")
 
+#: most samples (knots) of a :meth:`Load.piecewise_linear` load: each is kept as Python
+#: floats (about 130 MB for four columns of 10⁶), and the stick test of a loaded run looks
+#: at every knot (:func:`slidespin.motion.loaded.simulate_loaded`); resample a longer record
+MAX_KNOTS = 1_000_000
+
 ForceSpec = tuple | Callable[[float], tuple]
 TorqueSpec = float | Callable[[float], float]
+
+
+class _Samples(Profile):
+    """A :class:`~slidespin.contact._profile.Profile` evaluated by bisection of its knots:
+    O(log n) per evaluation, bit for bit the same values (the linear interpolation
+    (1 − w) v₀ + w v₁ of :func:`slidespin.contact._profile.interp`)."""
+
+    __slots__ = ()
+
+    def __call__(self, t: float) -> Any:
+        t = float(t)
+        tt = self.times
+        if not math.isfinite(t):
+            raise ValueError(f"t = {t!r} is not finite; valid range: any finite time [s]")
+        if t <= tt[0]:
+            vals = tuple(c[0] for c in self.columns)
+        elif t >= tt[-1]:
+            vals = tuple(c[-1] for c in self.columns)
+        else:
+            i = bisect.bisect_right(tt, t) - 1
+            w = (t - tt[i]) / (tt[i + 1] - tt[i])
+            vals = tuple((1.0 - w) * c[i] + w * c[i + 1] for c in self.columns)
+        return vals if len(vals) > 1 else vals[0]
+
+
+def _signature_error(name: str, fn: Callable, expected: str) -> TypeError | None:
+    """A TypeError if ``fn`` cannot be called as ``fn(t)`` (None if it can, or if Python
+    cannot tell: builtins without a signature are left to the trial call)."""
+    try:
+        sig = inspect.signature(fn)
+    except (TypeError, ValueError):
+        return None
+    try:
+        sig.bind(0.0)
+    except TypeError:
+        return TypeError(
+            f"{name} = {v._short(fn)} takes the arguments {sig}; valid values: a function of "
+            f"one argument, the time t [s]: {expected}"
+        )
+    return None
+
+
+def _checked_callable(name: str, fn: Callable, pair: bool) -> None:
+    """Check a time-dependent force (``pair``) or torque once, at construction: it must be
+    callable as ``fn(t)`` and return a pair of finite numbers [N] (a finite number [N m])
+    at t = 0, the first time any run asks for."""
+    expected = f"{name}(t) -> (Qx, Qy) [N]" if pair else f"{name}(t) -> T [N m]"
+    what = "a pair of finite numbers" if pair else "one finite number"
+    if isinstance(fn, Profile):  # built by piecewise_linear: checked there
+        return
+    err = _signature_error(name, fn, expected)
+    if err is not None:
+        raise err
+    try:
+        out = fn(0.0)
+    except Exception as exc:  # noqa: BLE001 - any failure of user code, named
+        raise ValueError(
+            f"{name}(0.0) raised {type(exc).__name__}: {exc}; valid values: a function "
+            f"{expected} of the time t [s] >= 0 returning {what}"
+        ) from exc
+    try:
+        if pair:
+            check_pair(f"{name}(0.0)", out)
+            ok = True
+        else:
+            x = as_real(out)
+            ok = not isinstance(x, bool) and isinstance(x, numbers.Real) and math.isfinite(x)
+    except (ValueError, TypeError, OverflowError):  # e.g. an int beyond the floats
+        ok = False
+    if not ok:
+        raise ValueError(
+            f"{name}(0.0) returned {show_value(out)}; valid values: a function {expected} "
+            f"of the time t [s] returning {what}"
+        )
+
+
+def _no_bools(name: str, value: object) -> None:
+    """Refuse bools among samples: ``[True, 2, 3]`` would otherwise read as ``[1, 2, 3]``."""
+    if isinstance(value, (bool, np.bool_)):
+        bad: list[tuple[int, object]] = [(0, value)]
+    elif isinstance(value, np.ndarray):
+        if value.dtype.kind == "b":
+            raise ValueError(
+                f"{name} = {show_value(value)} is invalid: bools are not numbers here; "
+                "valid values: finite real numbers"
+            )
+        if value.dtype.kind != "O":
+            return
+        bad = [(i, x) for i, x in enumerate(value.ravel()) if isinstance(x, (bool, np.bool_))]
+    elif isinstance(value, (list, tuple)):
+        bad = [(i, x) for i, x in enumerate(value) if isinstance(x, (bool, np.bool_))]
+    else:
+        return
+    if bad:
+        i, x = bad[0]
+        raise ValueError(
+            f"{name}[{i}] = {x!r} is invalid: a bool is not a number; valid values: "
+            "finite real numbers"
+        )
+
+
+def _sample_times(value: object) -> np.ndarray:
+    """The knots of :meth:`Load.piecewise_linear`: 2 to :data:`MAX_KNOTS` finite, strictly
+    increasing times [s]; the message names the first bad entry."""
+    _no_bools("times", value)
+    t = v.real_array("times", value, unit="s")
+    if t.ndim != 1 or not 2 <= t.size <= MAX_KNOTS:
+        raise ValueError(
+            f"times has shape {t.shape}; valid: a 1-D sequence of 2 to {MAX_KNOTS:,} times [s] "
+            "(resample a longer record)"
+        )
+    step = np.diff(t)
+    if np.any(step <= 0.0):
+        i = int(np.flatnonzero(step <= 0.0)[0]) + 1
+        raise ValueError(
+            f"times[{i}] = {float(t[i])!r} s is not after times[{i - 1}] = "
+            f"{float(t[i - 1])!r} s; valid values: strictly increasing times [s]"
+        )
+    return t
 
 
 @dataclass(frozen=True, slots=True)
@@ -54,7 +181,7 @@ class Load:
         t [s] returning such a pair.
     torque : float or callable, default 0
         Applied torque T about the vertical [N m], counter-clockwise positive, or a function
-        ``torque(t)``.
+        ``torque(t)`` returning it.
     frame : {"plane", "body"}, default "plane"
         Whether ``force`` is given in the fixed frame OXY or in the body frame Cξη (then it
         turns with the body: Q_world = R(φ) Q).
@@ -63,9 +190,30 @@ class Load:
         centre C like every body-frame coordinate; ``None`` means the mass centre G (no
         moment from Q). For every pressure law except the linear one, G = C.
 
+    Raises
+    ------
+    TypeError
+        If a callable cannot be called with one argument, ``force(t)`` / ``torque(t)``.
+    ValueError
+        If a value is not finite, or a callable, called once at t = 0 when the load is
+        built, fails or returns something other than a pair of finite numbers (a finite
+        number for ``torque``).
+
     Notes
     -----
-    A callable is evaluated only at the times the integrator asks for; it must be a
+    **Cost of a callable.** A function of time is Python code: the loaded engine calls it
+    from Python at every right-hand-side evaluation of a slip phase and at every point of
+    the scan of a stick phase (``scan_step``), about 20 µs per evaluation with the engine's
+    overhead, and a callable's stick phases must be scanned on a time grid because nothing
+    is known about it between samples. The same push given as a table is checked exactly at
+    its knots instead: ``examples/pushed_puck.py`` takes 28.8 s with its push as a Python
+    function and 1.7 s with the same push as :meth:`piecewise_linear`. Prefer the tabulated
+    forms (a constant, or :meth:`piecewise_linear` with as many knots as the push needs, up
+    to :data:`MAX_KNOTS`); a callable is for loads that depend on t in a way no table
+    captures.
+
+    A callable is called once at t = 0 when the load is built (to check its signature and
+    what it returns), then only at the times the integrator asks for; it must be a
     deterministic function of t and return finite values. Its discontinuities (a push
     released suddenly) are handled, but the integrator locates them only to its step
     size; give a continuous ramp where the timing matters.
@@ -85,9 +233,13 @@ class Load:
     at: tuple | None = None
 
     def __post_init__(self) -> None:
-        if not callable(self.force):
+        if callable(self.force):
+            _checked_callable("force", self.force, pair=True)
+        else:
             object.__setattr__(self, "force", check_pair("force", self.force))
-        if not callable(self.torque):
+        if callable(self.torque):
+            _checked_callable("torque", self.torque, pair=False)
+        else:
             if isinstance(self.torque, bool) or not isinstance(as_real(self.torque), numbers.Real):
                 raise ValueError(
                     f"torque = {show_value(self.torque)} is invalid; valid values: a finite number "
@@ -118,9 +270,10 @@ class Load:
         Parameters
         ----------
         times : sequence of float
-            Strictly increasing times [s] (at least 2).
+            Strictly increasing, finite times [s], at least 2 and at most
+            :data:`MAX_KNOTS` (10⁶); bools are refused.
         fx, fy : sequence of float
-            Force components [N] at those times, in ``frame``.
+            Force components [N] at those times, in ``frame``: finite, one per time.
         torque : sequence of float or None
             Torque [N m] at those times (default 0).
         frame, at
@@ -130,10 +283,12 @@ class Load:
 
         Notes
         -----
-        The stick test of :func:`slidespin.simulate` looks at every sample time (knot): the
-        load is affine between knots, and so the gauge of the static-friction set at the
-        load is convex there, so a load that leaves the set is always found, however short
-        the excursion (:func:`slidespin.motion.loaded.simulate_loaded`, ``scan_step``).
+        Evaluation bisects the knots: O(log n) per time, so a long record (10⁵ knots) costs
+        about what a short one does. The stick test of :func:`slidespin.simulate` looks at
+        every sample time (knot): the load is affine between knots, and so the gauge of the
+        static-friction set at the load is convex there, so a load that leaves the set is
+        always found, however short the excursion
+        (:func:`slidespin.motion.loaded.simulate_loaded`, ``scan_step``).
 
         Examples
         --------
@@ -142,19 +297,23 @@ class Load:
         ((2.5, 0.0), (0.0, 0.0))
         """
         nx, ny, nt = names or ("fx", "fy", "torque")
-        t = v.real_array("times", times)
-        cols = [v.real_array(name, c) for name, c in ((nx, fx), (ny, fy))]
-        cols.append(np.zeros_like(t) if torque is None else v.real_array(nt, torque))
-        check_times(t)
-        for name, c in zip((nx, ny, nt), cols):
-            if c.shape != t.shape or not np.all(np.isfinite(c)):
+        t = _sample_times(times)
+        cols = []
+        for name, c in ((nx, fx), (ny, fy), (nt, torque)):
+            if c is None:
+                cols.append(np.zeros_like(t))
+                continue
+            _no_bools(name, c)
+            arr = v.real_array(name, c)
+            if arr.shape != t.shape:
                 raise ValueError(
-                    f"{name} = {show_value(np.atleast_1d(c))} is invalid; valid "
+                    f"{name} = {show_value(np.atleast_1d(arr))} is invalid; valid "
                     f"values: {t.size} finite numbers, one per time"
                 )
-        tt, a, b, m = (tuple(float(x) for x in arr) for arr in (t, *cols))
-        torque_fn = Profile(tt, m) if any(m) else 0.0
-        return cls(force=Profile(tt, a, b), torque=torque_fn, frame=frame, at=at)
+            cols.append(arr)
+        tt, a, b, m = (tuple(arr.tolist()) for arr in (t, *cols))
+        torque_fn = _Samples(tt, m) if any(m) else 0.0
+        return cls(force=_Samples(tt, a, b), torque=torque_fn, frame=frame, at=at)
 
     @property
     def is_constant(self) -> bool:
@@ -170,10 +329,15 @@ class Load:
     @property
     def knots(self) -> tuple[float, ...]:
         """Sample times [s] of a :meth:`piecewise_linear` load (empty otherwise)."""
+        profiles = [f for f in (self.force, self.torque) if isinstance(f, Profile)]
+        if not profiles:
+            return ()
+        first = profiles[0].times
+        if all(p.times is first or p.times == first for p in profiles):
+            return tuple(first)  # one table (piecewise_linear): sorted already
         times: set[float] = set()
-        for f in (self.force, self.torque):
-            if isinstance(f, Profile):
-                times.update(f.times)
+        for p in profiles:
+            times.update(p.times)
         return tuple(sorted(times))
 
     def force_at(self, t: float) -> tuple[float, float]:

@@ -7,15 +7,24 @@ direction ϑ of the velocity of G, β = v/ω (the distance from G to the instant
 rotation), the friction components F_τ, F_n, M over time, the stop time, and the terminal
 ratio β* with its direction ϑ* at the stop.
 
+Any patch runs here: the paper's ellipses, and every footprint of MODEL §10 (polygons,
+rectangles, disks, rings, pads, and a ``Blade``, a line contact). With an applied load, a
+slope or a time bound, :func:`simulate` hands over to the stick–slip engine
+(:func:`slidespin.motion.loaded.simulate_loaded`, MODEL §11), which takes the same patches.
+
 Departures from the paper: the paper integrates in t with unstated tolerances and reads β at
 the end; slidespin integrates in τ (dt = s dτ), so t_stop is the limit t(τ → ∞) and β*, ϑ*
-are the converged terminal direction, not a value read at a cut-off speed. Results are in SI
-units; the paper's eq. 7 scaling has t = t₁√(aπ/g) (MODEL §7, erratum 2).
+are the converged terminal direction, not a value read at a cut-off speed; the last row of a
+:class:`Trajectory` (the stop, where the velocity is zero and its direction is no longer
+given by the state) holds these limits. Results are in SI units; the paper's eq. 7 scaling
+has t = t₁√(aπ/g) (MODEL §7, erratum 2).
 """
 
 from __future__ import annotations
 
 import csv
+import importlib
+import inspect
 import io
 import json
 import math
@@ -28,8 +37,6 @@ from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
 from slidespin.contact import _engine
-from slidespin.contact._kernel_ellipse import wrench_array
-from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
@@ -106,9 +113,20 @@ class Trajectory:
         [rad/s] at the integrator's steps, ending with the stop itself.
     speed, theta, beta : ndarray
         v = |v_G| [m/s], its direction ϑ [rad] and β = v/ω [m] (signed like ω; ±inf where
-        ω = 0). At the stop these are the limits along the motion.
+        ω = 0). The last row is the stop, where v = ω = 0: it holds the limits along the
+        motion, ``speed[-1] == 0``, ``theta[-1] == theta_stop`` and ``beta[-1] ==
+        beta_stop`` (so a pure-spinning stop keeps the direction its vanishing velocity
+        converged to, instead of the 0 that atan2(0, 0) would give). Where no limiting
+        direction exists (ϑ* is NaN: a pure-spinning stop whose vanishing velocity keeps
+        turning, a ``spiral``, a body at rest) ``theta[-1]`` is NaN too, and at rest
+        ``beta`` is NaN.
     tangential, normal, moment_paper : ndarray
-        The paper's F_τ, F_n [N] and M_Cζ [N m] (eq. 4) along the motion.
+        The paper's F_τ, F_n [N] and M_Cζ [N m] (eq. 4) along the motion; at the stop, the
+        friction wrench of the terminal direction with F_τ, F_n its components along and
+        across ϑ*. Where ϑ* does not exist they stay finite: 0 for a pure-spinning stop
+        (the net force vanishes at a pure-spinning fixed point, so its components tend to 0
+        whatever the direction does), and for a ``spiral`` the components along the last
+        direction reached (they need not converge).
     path_length : ndarray
         Distance travelled by G [m].
     t_stop : float
@@ -272,6 +290,55 @@ class Trajectory:
         """A short summary table for notebooks (no arrays)."""
         return _html_table("Trajectory", self.summary())
 
+    def plot(self, **kwargs: Any) -> Any:
+        """Four-panel figure of the run: the path of G with the patch drawn along it, β(t) and
+        ϑ(t) with their terminal values β*, ϑ*, the speed v(t) and the spin ω(t).
+
+        The accessor pattern of pandas' ``DataFrame.plot``: the plotting layer
+        (:mod:`slidespin.viz.trajectory_plot`, and matplotlib) is loaded by name on first
+        use, so that the motion layer does not import it (the layer contract in
+        ``pyproject.toml``) and ``import slidespin`` stays light. Needs matplotlib.
+
+        Parameters
+        ----------
+        **kwargs
+            Passed to :func:`slidespin.viz.trajectory_plot.plot_trajectory`: ``title`` (str
+            or None, the figure title) and ``n_outlines`` (int in [0, 1000], default 9, the
+            number of patch outlines drawn along the path). Any other keyword is refused
+            with a ``TypeError`` naming the valid ones.
+
+        Returns
+        -------
+        matplotlib.figure.Figure
+            The figure (draw it with ``fig.savefig(path)``, or ``plt.show()`` when pyplot is
+            in use).
+
+        Examples
+        --------
+        >>> fig = tr.plot(title="disk")  # doctest: +SKIP
+        >>> fig.savefig("disk.png")  # doctest: +SKIP
+        """
+        module = importlib.import_module("slidespin.viz.trajectory_plot")
+        draw = module.plot_trajectory
+        valid = [p for p in inspect.signature(draw).parameters if p != "traj"]
+        unknown = sorted(set(kwargs) - set(valid))
+        if unknown:
+            raise TypeError(
+                f"Trajectory.plot() got the keyword {unknown[0]!r}; valid keywords: "
+                + ", ".join(valid)
+            )
+        title = kwargs.get("title")
+        if title is not None and not isinstance(title, str):
+            raise TypeError(f"title = {v._short(title)} is invalid; valid values: a str or None")
+        if "n_outlines" in kwargs:
+            n = kwargs["n_outlines"]
+            if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 0 <= n <= 1000:
+                raise ValueError(
+                    f"n_outlines = {v._short(n)} is invalid; valid range: integer in [0, 1000]"
+                )
+            kwargs["n_outlines"] = int(n)
+        return draw(self, **kwargs)
+
     def to_csv(self, path: str | PathLike[str] | None = None) -> str:
         """Write (or return) the trajectory as CSV, one row per step (SI units)."""
         buf = io.StringIO()
@@ -391,9 +458,11 @@ def simulate(
     Parameters
     ----------
     body : Body
-        Patch (an ellipse, or any area footprint of :mod:`slidespin.contact.shapes`; a ``Blade`` is
-        refused with a ``ValueError``), pressure law,
-        mass and moment of inertia.
+        Patch, pressure law, mass and moment of inertia. Any patch: an ellipse (the paper's),
+        or any footprint of :mod:`slidespin.contact.shapes` (``Polygon``, ``Rectangle``,
+        ``Disk``, ``Annulus``, ``Pads``, and ``Blade``, a line contact under a uniform line
+        load), with or without a load. A ``PressureMap`` is refused with a ``ValueError``
+        (it works with :func:`slidespin.friction_wrench` only).
     friction : FrictionTensor
         Friction tensor (plane- or body-fixed).
     initial_state : State
@@ -415,7 +484,10 @@ def simulate(
         steps are recorded (about 40 for the demo), which is enough for the stop values.
 
     load : Load, optional
-        Applied force and torque (constant or functions of time; :mod:`slidespin.motion.loads`).
+        Applied force and torque (constant, tabulated, or functions of time:
+        :mod:`slidespin.motion.loads`; a Python function is much slower than the same load
+        tabulated with :meth:`~slidespin.motion.loads.Load.piecewise_linear`, see
+        :class:`~slidespin.motion.loads.Load`).
     incline : Incline, optional
         A tilted plane: normal load m g cos α, downhill pull m g sin α.
     t_end : float, optional
@@ -432,7 +504,9 @@ def simulate(
     Trajectory, or LoadedTrajectory
         A :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory` (with stick and slip
         phases and the energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
-        :func:`slidespin.motion.loaded.simulate_loaded` (ellipses and circles for now).
+        :func:`slidespin.motion.loaded.simulate_loaded` (every patch that runs without a
+        load, the ``Blade`` included). Otherwise a :class:`Trajectory`, whose last row is
+        the stop and holds the terminal values (ϑ*, β*) as limits along the motion.
 
     Notes
     -----
@@ -459,7 +533,8 @@ def simulate(
         if isinstance(val, (Load, Incline)):  # simulate(body, friction, state, load)
             raise ValueError(
                 f"{name} = {v._short(val)} is invalid: the 4th and 5th positional arguments "
-                "are g and rtol; pass load=, incline=, t_end= by keyword, e.g. "
+                "are g and rtol (valid values: g in [1e-06, 1e+06] m/s^2, rtol in (0, "
+                "0.001]); pass load=, incline=, t_end= by keyword, e.g. "
                 "simulate(body, friction, state, load=load, t_end=2.0)"
             )
     if load is not None or incline is not None or t_end is not None:
@@ -505,7 +580,7 @@ def simulate(
             vy=one(0.0),
             omega=one(0.0),
             speed=one(0.0),
-            theta=one(0.0),
+            theta=one(math.nan),  # no motion, no direction: ϑ* is NaN
             beta=one(math.nan),
             tangential=one(0.0),
             normal=one(0.0),
@@ -547,39 +622,31 @@ def simulate(
     rows = np.vstack([rec[:, 1:], yend[None, :]])
     u1, u2, u3 = rows[:, 0], rows[:, 1], rows[:, 2]
     s = np.exp(rows[:, 3])  # 0 at the stop
-    if body.is_footprint:
-        fx, fy, mm = fp_wrench_array(
-            fe,
-            fc,
-            geo,
-            par[_engine.P_T00],
-            par[_engine.P_T01],
-            par[_engine.P_T10],
-            par[_engine.P_T11],
-            par[_engine.P_BODY] != 0.0,
-            rows[:, 7].copy(),
-            u1.copy(),
-            u2.copy(),
-            u3 / k,
-        )
-    else:
-        fx, fy, mm, _ = wrench_array(
-            *_engine.elliptic_args(par),
-            rows[:, 7].copy(),
-            u1.copy(),
-            u2.copy(),
-            u3 / k,
-            1e-12,
-        )
+    fx, fy, mm = _integrator.wrench_rows(par, fe, fc, geo, rows[:, 7], u1, u2, u3 / k)
     weight = body.mass * g  # the normal load m g [N]
     u12 = np.hypot(u1, u2)
     theta = np.arctan2(u2, u1)
-    c, sn = np.cos(theta), np.sin(theta)
     beta = _beta(u12, u3, k) * a
     ending, beta_stop, theta_stop = _terminal_values(
         status, math.hypot(yend[0], yend[1]), yend[2], term[0], term[3]
     )
     beta_stop *= a
+    # the stop row (v = 0, where atan2(0, 0) = 0 is no direction) holds the limits along the
+    # motion (MODEL §5, §9): ϑ* (NaN where there is none) and β*
+    reached = theta[-1]
+    theta[-1] = theta_stop
+    beta[-1] = beta_stop
+    # the wrench's components along the direction of motion: at the stop along ϑ* where it
+    # exists, else along the last direction reached (a spiral's)
+    c, sn = np.cos(theta), np.sin(theta)
+    if not math.isfinite(theta_stop):
+        c[-1], sn[-1] = np.cos(reached), np.sin(reached)
+    tangential = -(fx * c + fy * sn) * weight
+    normal = -(-fx * sn + fy * c) * weight
+    if ending == "pure_spinning" and not math.isfinite(theta_stop):
+        # the net force vanishes at a pure-spinning fixed point (A(u*) ∥ u* = (0, 0, ±1)):
+        # F_τ and F_n tend to 0 whatever the vanishing velocity's direction does
+        tangential[-1] = normal[-1] = 0.0
     stop = State(yend[5] * a, yend[6] * a, yend[7])
     return Trajectory(
         t=rows[:, 4] * t_unit,
@@ -592,8 +659,8 @@ def simulate(
         speed=s * u12 * v_unit,
         theta=theta,
         beta=beta,
-        tangential=-(fx * c + fy * sn) * weight,
-        normal=-(-fx * sn + fy * c) * weight,
+        tangential=tangential,
+        normal=normal,
         moment_paper=-mm * weight * a,
         path_length=rows[:, 8] * a,
         t_stop=float(yend[4] * t_unit),
