@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib
 import json
 import math
 import subprocess
@@ -119,9 +120,7 @@ def test_missing_file_and_unwritable_output(tmp_path):
 
 
 def test_internal_error_is_reported_without_traceback(monkeypatch, capsys):
-    import sys
-
-    sim = sys.modules["slidespin.motion.simulate"]
+    sim = importlib.import_module("slidespin.motion.simulate")  # the parser loads no layer
 
     def boom(*args, **kwargs):
         raise RuntimeError("kernel exploded")

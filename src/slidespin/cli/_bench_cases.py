@@ -34,8 +34,28 @@ from slidespin.contact.wrench import friction_wrench
 _LAWS = ("uniform", "linear", "boussinesq", "hertz")
 
 
+#: the progress bar of the running ``slidespin bench`` (set by :func:`slidespin.cli.bench.run`;
+#: ``None`` outside it): stages advance it, details name what runs now. It is drawn only on a
+#: terminal and never with ``--quiet``, so nothing else of the bench is written to stderr.
+PROGRESS = None
+_started = [False]
+
+
+def _stage(msg):
+    """A new stage of the bench starts: the bar counts the previous one done and shows ``msg``."""
+    bar = PROGRESS
+    if bar is None:
+        return
+    if _started[0]:
+        bar.update(1)
+    _started[0] = True
+    bar.set_description(f"bench: {msg}")
+
+
 def _log(msg):
-    print(f"  ... {msg}", file=sys.stderr, flush=True)
+    """What runs now, within a stage (shown beside the bar)."""
+    if PROGRESS is not None:
+        PROGRESS.set_postfix_str(msg)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -14,10 +14,17 @@ from __future__ import annotations
 import os
 
 from slidespin._io import check_output_path
-from slidespin.cli.main import CLI_MAX_STEP, DEFAULT_OUT_DIR, _exit_status
-from slidespin.viz.animate import MAX_FPS, MAX_FRAMES, _check_int, animate
+from slidespin.cli.main import CLI_MAX_STEP, DEFAULT_OUT_DIR, _exit_status, _loaded_exit_status
 
-__all__ = ["configure", "run"]
+# nothing heavy at the top: the parser is built from this module (`slidespin --help`); the
+# figure stack (NumPy, matplotlib, Pillow) is imported by run()
+
+__all__ = ["configure", "run", "MAX_FPS", "MAX_FRAMES"]
+
+#: the bounds of ``--fps`` and ``--frames``: those of :mod:`slidespin.viz.animate` (a test keeps
+#: them equal; spelled here so that the parser does not import the figure stack)
+MAX_FPS = 50
+MAX_FRAMES = 120
 
 
 def configure(parser) -> None:
@@ -62,12 +69,13 @@ def run(args) -> int:
             f"{os.path.splitext(out)[1] or '(no extension)'!r}; valid extension: .gif"
         )
     out = check_output_path(out, "--out", create_parent=default)
-    _check_int("--fps", args.fps, 1, MAX_FPS)
-    _check_int("--frames", args.frames, 2, MAX_FRAMES)
-
     # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.motion.simulate import simulate
     from slidespin.studies.case import load_case
+    from slidespin.viz.animate import _check_int, animate
+
+    _check_int("--fps", args.fps, 1, MAX_FPS)
+    _check_int("--frames", args.frames, 2, MAX_FRAMES)
 
     case = load_case(args.case)
     if getattr(case, "loaded", False):
@@ -83,7 +91,7 @@ def run(args) -> int:
             incline=case.incline,
             t_end=case.t_end,
         )
-        status = 0 if traj.status == "ok" else 1
+        status = _loaded_exit_status(traj.status)
     else:
         traj = simulate(
             case.body,

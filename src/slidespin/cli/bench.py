@@ -45,29 +45,16 @@ import os
 import sys
 import time
 
-import numpy as np
-
 from slidespin._io import check_output_path, write_outputs
-from slidespin.cli._bench_accuracy import bench_accuracy, bench_naive, bench_semianalytic
-from slidespin.cli._bench_cases import (
-    _LAWS,
-    _batch_states,
-    _demo,
-    _log,
-    _machine,
-    _wrench_loop,
-    bench_batch,
-    bench_compile,
-    bench_memory,
-    bench_trajectory,
-    bench_wrench,
-    bench_wrench_python,
-)
-from slidespin.cli._bench_footprint import bench_footprint
 from slidespin.cli.main import DEFAULT_OUT_DIR
-from slidespin.contact.wrench import friction_wrench
+
+# nothing heavy at the top: the parser is built from this module (`slidespin --help`); the
+# measurements (NumPy, numba, SciPy) are imported by run()
 
 __all__ = ["configure", "run", "main", "GOALS"]
+
+#: the pressure laws of the wrench rows (those of :mod:`slidespin.cli._bench_cases`)
+_LAWS = ("uniform", "linear", "boussinesq", "hertz")
 
 #: the goals of the issue (2-core machine), for the PASS/MISS column
 GOALS = {
@@ -148,6 +135,11 @@ def configure(parser) -> None:
         help="directory for bench.json (default ./slidespin-out, created if missing)",
     )
     parser.add_argument("--no-save", action="store_true", help="write no file")
+    parser.add_argument(
+        "--quiet",
+        action="store_true",
+        help="no progress bar (the bar is drawn only when stderr is a terminal)",
+    )
 
 
 def _defaults(args):
@@ -167,7 +159,9 @@ def _defaults(args):
             raise ValueError(f"--out = {folder!r} is a file; valid values: a directory")
         out = check_output_path(os.path.join(folder, "bench.json"), "--out", create_parent=True)
     elif args.out is not None:
-        raise ValueError("--out and --no-save exclude each other; give one")
+        raise ValueError(
+            f"--out = {args.out!r} and --no-save exclude each other; valid: one of them"
+        )
     return quick, naive, batch, mem, out
 
 
@@ -476,44 +470,13 @@ def format_table(r) -> str:
     return "\n".join(lines)
 
 
+#: the stages of a run, one step of the progress bar each
+_STAGES = 12
+
+
 def run(args) -> int:
     """Run the benchmarks; print the table; write JSON. Returns the exit status."""
     quick, naive_s, n_batch, n_mem, out_path = _defaults(args)
-    rng = np.random.default_rng(20261122)
-    r = {"machine": _machine(), "quick": quick}
-    t0 = time.perf_counter()
-    if not args.no_compile:
-        r["compile"] = bench_compile()
-    _log("warming up (numba cache or compile)")
-    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
-    from slidespin.motion.batch import simulate_many
-    from slidespin.motion.simulate import simulate
-
-    body, fr, st, g = _demo()
-    t = time.perf_counter()
-    simulate(body, fr, st, g=g)
-    simulate_many(body, fr, np.array([[0, 0, 0, 0.5, 0.2, 3.0]]), g=g)
-    friction_wrench(body, fr, 0.3, 0.1, 4.0)
-    _wrench_loop(0, 0.5, 0.0, 0.0, np.array([0.4, 0.0, 0.0, 0.5]), np.zeros(1), np.zeros(1), 1.0, 1)
-    r["warmup_s"] = time.perf_counter() - t
-    _log("wrench")
-    r["wrench_us"] = bench_wrench(quick, rng)
-    r["wrench_python_us"] = bench_wrench_python(body, fr)
-    _log("trajectory")
-    r["trajectory"] = bench_trajectory(quick)
-    _log(f"batch of {n_batch} trajectories")
-    states = _batch_states(n_batch, rng)
-    r["batch"] = bench_batch(states)
-    _log("footprints: octagon and ring (wrench, reference, trajectory, batch)")
-    r["footprint"] = bench_footprint(quick, rng, states)
-    _log(f"peak memory of a batch of {n_mem} (subprocess)")
-    r["memory"] = bench_memory(n_mem)
-    _log("accuracy")
-    r["accuracy"] = bench_accuracy(quick)
-    _log("semi-analytic NumPy baseline")
-    r["semianalytic"] = bench_semianalytic(quick)
-    _log(f"naive dblquad baseline (time box {naive_s:g} s)")
-    r["naive"] = bench_naive(naive_s)
     n_sl = (
         args.sweep_local
         if getattr(args, "sweep_local", None) is not None
@@ -527,8 +490,82 @@ def run(args) -> int:
     for name, val in (("--sweep-local", n_sl), ("--sweep-dask", n_sd)):
         if val < 0:
             raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 0")
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin._progress import progress_bar
+    from slidespin.cli import _bench_cases
+
+    quiet = getattr(args, "quiet", False)
+    with progress_bar(_STAGES, "bench", unit="stage", enabled=False if quiet else None) as bar:
+        _bench_cases.PROGRESS, _bench_cases._started[0] = bar, False
+        try:
+            report = _run(args, quick, naive_s, n_batch, n_mem, out_path, n_sl, n_sd)
+            bar.update(bar.total - bar.n)  # the last stage, the report, is done too
+        finally:
+            _bench_cases.PROGRESS = None
+    # printed once the bar is gone (it shares the terminal)
+    print(report)
+    return 0
+
+
+def _run(args, quick, naive_s, n_batch, n_mem, out_path, n_sl, n_sd) -> str:
+    """Measure everything, write ``bench.json``; return the text to print."""
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    import numpy as np
+
+    from slidespin.cli._bench_accuracy import bench_accuracy, bench_naive, bench_semianalytic
+    from slidespin.cli._bench_cases import (
+        _batch_states,
+        _demo,
+        _machine,
+        _stage,
+        _wrench_loop,
+        bench_batch,
+        bench_compile,
+        bench_memory,
+        bench_trajectory,
+        bench_wrench,
+        bench_wrench_python,
+    )
+    from slidespin.cli._bench_footprint import bench_footprint
+    from slidespin.contact.wrench import friction_wrench
+    from slidespin.motion.batch import simulate_many
+    from slidespin.motion.simulate import simulate
+
+    rng = np.random.default_rng(20261122)
+    r = {"machine": _machine(), "quick": quick}
+    t0 = time.perf_counter()
+    _stage("compile time (subprocesses)")
+    if not args.no_compile:
+        r["compile"] = bench_compile()
+    _stage("warming up (numba cache or compile)")
+
+    body, fr, st, g = _demo()
+    t = time.perf_counter()
+    simulate(body, fr, st, g=g)
+    simulate_many(body, fr, np.array([[0, 0, 0, 0.5, 0.2, 3.0]]), g=g)
+    friction_wrench(body, fr, 0.3, 0.1, 4.0)
+    _wrench_loop(0, 0.5, 0.0, 0.0, np.array([0.4, 0.0, 0.0, 0.5]), np.zeros(1), np.zeros(1), 1.0, 1)
+    r["warmup_s"] = time.perf_counter() - t
+    _stage("wrench")
+    r["wrench_us"] = bench_wrench(quick, rng)
+    r["wrench_python_us"] = bench_wrench_python(body, fr)
+    _stage("trajectory")
+    r["trajectory"] = bench_trajectory(quick)
+    _stage(f"batch of {n_batch} trajectories")
+    states = _batch_states(n_batch, rng)
+    r["batch"] = bench_batch(states)
+    _stage("footprints: octagon and ring (wrench, reference, trajectory, batch)")
+    r["footprint"] = bench_footprint(quick, rng, states)
+    _stage(f"peak memory of a batch of {n_mem} (subprocess)")
+    r["memory"] = bench_memory(n_mem)
+    _stage("accuracy")
+    r["accuracy"] = bench_accuracy(quick)
+    _stage("semi-analytic NumPy baseline")
+    r["semianalytic"] = bench_semianalytic(quick)
+    _stage(f"naive dblquad baseline (time box {naive_s:g} s)")
+    r["naive"] = bench_naive(naive_s)
+    _stage(f"sweeps: {n_sl} cases locally, {n_sd} through a 2-worker LocalCluster")
     if n_sl or n_sd:
-        _log(f"sweeps: {n_sl} cases locally, {n_sd} through a 2-worker LocalCluster")
         from slidespin.studies.sweep import benchmark as sweep_benchmark
         from slidespin.studies.sweep_spec import SweepError
 
@@ -541,6 +578,7 @@ def run(args) -> int:
             )
         except SweepError as exc:  # e.g. Dask not installed
             r["sweep"] = {"error": str(exc)}
+    _stage("report")
     r["goals"] = GOALS
     r["bench_seconds"] = time.perf_counter() - t0
     table = format_table(r)
@@ -556,13 +594,8 @@ def run(args) -> int:
     if out_path:
         write_outputs([(out_path, (text + "\n").encode("utf-8"))])
     if args.json:
-        print(text)
-    else:
-        print(head)
-        print(table)
-        if out_path:
-            print(f"JSON: {out_path}")
-    return 0
+        return text
+    return "\n".join([head, table] + ([f"JSON: {out_path}"] if out_path else []))
 
 
 def main(argv=None) -> int:
@@ -573,7 +606,7 @@ def main(argv=None) -> int:
     try:
         return run(args)
     except ValueError as exc:
-        print(f"slidespin bench: error: {exc}", file=sys.stderr)
+        print(f"slidespin: error: bench: {exc}", file=sys.stderr)
         return 2
 
 

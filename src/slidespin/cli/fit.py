@@ -10,10 +10,14 @@ Usage::
 ``DATA.csv`` has the columns ``t,x,y,phi`` (any of x, y, phi may be absent) and an optional
 ``run`` column; the case file (the format of ``slidespin simulate``) gives the body, the
 friction tensor (the start guess of the free parameters, and the frame unless ``--frame``
-says otherwise; ``best`` fits both frames and keeps the likelier) and ``[solver] g``.
-Its ``[initial]`` table is optional: with ``--fixed-start`` it is the known start state of
-every run (at the run's first time); otherwise each run's start is fitted and ``[initial]``
-only supplies the start components the data do not give.
+says otherwise; ``best`` fits both frames and keeps the likelier), ``[solver] g`` and
+``[solver] rtol`` (the tolerance of every simulation of the fit; default that of
+:func:`slidespin.analysis.fit.fit`, 1e-12). Its ``[initial]`` table is optional: with
+``--fixed-start`` it is the known start state of every run (at the run's first time);
+otherwise each run's start is fitted and ``[initial]`` only supplies the start components the
+data do not give. The fit models a body coasting on a level plane: a case file with
+``[load]``, ``[incline]``, ``[solver] t_end`` or ``[solver] max_steps`` is refused (fitting
+under loads is not supported), never fitted as if they were not there.
 
 Without ``--json`` a table of estimates ± standard errors is printed; ``--json`` prints
 ``{"estimates": {...}, "std_errors": {...}, "correlation": {...}, "chi2": ..., ...}``
@@ -33,14 +37,31 @@ import os
 import sys
 import warnings
 
-import numpy as np
-
-from slidespin import _validate as v
 from slidespin._io import check_figure_path, write_outputs
-from slidespin.analysis.fit import LOSSES, PARAMETERS, _check_free, compare_frames, fit
-from slidespin.analysis.fit_data import CHANNELS, read_runs
 
-__all__ = ["configure", "load_fit_case", "parse_sigma", "plot_fit", "run"]
+# nothing heavy at the top: the parser is built from this module (`slidespin --help`); the
+# fit (SciPy) and the figure (matplotlib) are imported by run()
+
+__all__ = ["configure", "load_fit_case", "parse_sigma", "plot_fit", "run", "UNUSED"]
+
+#: the names of :mod:`slidespin.analysis.fit` and :mod:`slidespin.analysis.fit_data` that the
+#: parser shows (a test keeps them equal; spelled here so that the parser does not import SciPy)
+PARAMETERS = ("fx", "fy", "f", "angle", "xi_c", "eta_c", "moment_of_inertia")
+LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
+CHANNELS = ("x", "y", "phi")
+
+_COASTING = "the fit models a body coasting on a level plane; fitting under loads is not supported"
+#: what a case file may give that ``slidespin fit`` cannot honour (refused, never ignored)
+UNUSED = (
+    ("load", None, _COASTING),
+    ("incline", None, _COASTING),
+    ("solver", ("t_end",), _COASTING + " (each run ends at its last measured time)"),
+    (
+        "solver",
+        ("max_steps",),
+        "the fit bounds its work by its evaluations, not by integrator steps",
+    ),
+)
 
 
 def configure(parser) -> None:
@@ -100,12 +121,20 @@ def configure(parser) -> None:
         default=None,
         help="write a figure of measured vs fitted paths and angles, with residuals",
     )
+    parser.add_argument(
+        "--quiet",
+        action="store_true",
+        help="no progress bar (the bar is drawn only when stderr is a terminal)",
+    )
 
 
 def parse_sigma(text: str | None) -> dict | None:
     """``"x=1e-3,phi=0.01"`` → ``{'x': 0.001, 'phi': 0.01}`` (validated)."""
     if text is None:
         return None
+    # deferred: keeps `slidespin --help` fast (NumPy is not imported for parsing)
+    from slidespin import _validate as v
+
     out = {}
     for item in text.split(","):
         item = item.strip()
@@ -119,11 +148,13 @@ def parse_sigma(text: str | None) -> dict | None:
                 "phi=VALUE (metres, radians), comma-separated"
             )
         if key in out:
-            raise ValueError(f"--sigma gives {key!r} twice")
+            raise ValueError(f"--sigma gives {key!r} twice; valid: each of x, y, phi at most once")
         try:
             num = float(val)
         except ValueError:
-            raise ValueError(f"--sigma {key} = {val.strip()!r} is not a number") from None
+            raise ValueError(
+                f"--sigma {key} = {val.strip()!r} is not a number; valid range: finite and > 0"
+            ) from None
         out[key] = v.positive(f"--sigma {key}", num, "rad" if key == "phi" else "m")
     if not out:
         raise ValueError(f"--sigma = {text!r} gives no channel; valid: x=VALUE,y=VALUE,phi=VALUE")
@@ -134,22 +165,27 @@ def load_fit_case(path):
     """Read a case file with :mod:`slidespin.studies.case`; ``[initial]`` may be left out.
 
     Returns the :class:`~slidespin.studies.case.Case` (at rest at the origin without ``[initial]``)
-    and whether the file had an ``[initial]`` table.
+    and whether the file had an ``[initial]`` table. What the fit cannot honour
+    (:data:`UNUSED`: loads, a tilt, ``t_end``, ``max_steps``) is refused, naming the file and
+    the key.
     """
-    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
-    from slidespin.studies.case import case_from_dict, read_toml
+    case, data = _read_fit_case(path)
+    return case, "initial" in data
 
-    data = read_toml(path, "case file")
-    has_initial = isinstance(data, dict) and "initial" in data
-    if isinstance(data, dict) and not has_initial:
-        data = {**data, "initial": {}}
-    try:
-        return case_from_dict(data), has_initial
-    except ValueError as exc:
-        raise ValueError(f"{path}: {exc}") from None
+
+def _read_fit_case(path):
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin.studies.case import read_case, refuse_unused
+
+    case, data = read_case(path, initial_required=False)
+    refuse_unused(path, data, "slidespin fit", UNUSED)
+    return case, data
 
 
 def _free(text: str, body):
+    # deferred: keeps `slidespin --help` fast (SciPy is not imported for parsing)
+    from slidespin.analysis.fit import _check_free
+
     names = tuple(s.strip() for s in text.split(",") if s.strip())
     try:
         return _check_free(names, body)
@@ -162,17 +198,31 @@ def run(args) -> int:
     if args.plot:
         check_figure_path(args.plot, "--plot")
     sigma = parse_sigma(args.sigma)
-    case, has_initial = load_fit_case(args.case)
-    if args.fixed_start and not has_initial:
-        raise ValueError(f"--fixed-start needs an [initial] table in the case file {args.case!r}")
+    case, data = _read_fit_case(args.case)
+    if args.fixed_start and "initial" not in data:
+        raise ValueError(
+            f"--fixed-start needs an [initial] table in the case file {args.case!r}; valid: "
+            "a case file with [initial] (the known start of every run), or no --fixed-start"
+        )
     free = _free(args.free, case.body)
+    # deferred: keeps `slidespin --help` fast (SciPy is not imported for parsing)
+    from slidespin.analysis.fit import compare_frames, fit
+    from slidespin.analysis.fit_data import read_runs
+    from slidespin.cli._busy import busy
+
     runs, labels = read_runs(args.data, labels=True)
     kw = {"starts": case.initial_state} if args.fixed_start else {"start_guess": case.initial_state}
+    if "rtol" in data.get("solver", {}):  # else the fit's own default (1e-12)
+        kw["rtol"] = case.rtol
     friction = case.friction
     if args.frame in ("plane", "body"):
         friction = dataclasses.replace(friction, frame=args.frame)
     scores = None
-    with warnings.catch_warnings(record=True) as caught:
+    quiet = getattr(args, "quiet", False)
+    with (
+        warnings.catch_warnings(record=True) as caught,
+        busy("fit", enabled=False if quiet else None),
+    ):
         warnings.simplefilter("always")
         try:
             if args.frame == "best":
@@ -226,6 +276,8 @@ def plot_fit(result, labels=None, title=None):
     residuals against t [mrad]. Each run has its own colour. Returns the figure.
     """
     # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    import numpy as np
+
     from slidespin.viz._mpl import _plt
 
     plt = _plt()

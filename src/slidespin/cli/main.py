@@ -28,8 +28,9 @@ import os
 import sys
 from pathlib import Path
 
-import numpy as np
-
+# Only light modules at the top (the standard library, slidespin._io, slidespin._version):
+# building the parser must not import NumPy, SciPy, numba or matplotlib, so that `--help`
+# answers at once (tests/cli/test_edges_help.py). The commands import them when they run.
 from slidespin._io import (
     FIGURE_FORMATS,
     check_figure_path,
@@ -42,12 +43,6 @@ from slidespin._io import (
 
 # the version lives in a root helper, so that reading it imports none of the layers
 from slidespin._version import __version__
-from slidespin.motion.outcomes import (
-    LOADED_UNCONVERGED,
-    UNCONVERGED,
-    ending_message,
-    status_message,
-)
 
 __all__ = [
     "main",
@@ -119,6 +114,9 @@ def _print_summary(case, traj, out) -> None:
         f"status      : {s['status']}  ({traj.n_steps} steps)",
     ]
     if s["status"] not in ("stopped", "at_rest"):
+        # deferred: keeps `slidespin --help` fast (the parser imports no layer)
+        from slidespin.motion.outcomes import status_message
+
         try:
             lines.append(f"              {status_message(s['status'])}")
         except ValueError:
@@ -135,8 +133,25 @@ def _print_summary(case, traj, out) -> None:
     print("\n".join(lines), file=out)
 
 
+def _stop_summary(case, traj) -> dict:
+    """``Trajectory.summary()`` with the terminal ratio under a name that fits every patch:
+    ``beta_stop_over_length_unit`` = β*/ℓ and ``length_unit`` = ℓ [m] (the semi-axis a of an
+    ellipse, the extent of a footprint), next to ``beta_stop_over_a`` (the same number, kept
+    under its old name for scripts that read it)."""
+    out: dict = {}
+    for key, value in traj.summary().items():
+        out[key] = value
+        if key == "beta_stop_over_a":
+            out["beta_stop_over_length_unit"] = value
+            out["length_unit"] = case.body.length_unit
+    return out
+
+
 def _exit_status(status: str) -> int:
     """0 for a converged or flagged (analytic-limit) stop, 1 for an unconverged one."""
+    # deferred: keeps `slidespin --help` fast (the parser imports no layer)
+    from slidespin.motion.outcomes import UNCONVERGED
+
     return 1 if status in UNCONVERGED else 0
 
 
@@ -172,7 +187,7 @@ def _run_case(case, args) -> int:
         files.append((args.plot, render_figure(fig, args.plot)))
     write_outputs(files)
     if args.json:
-        print(json.dumps(traj.summary(), indent=2))
+        print(json.dumps(_stop_summary(case, traj), indent=2))
     else:
         _print_summary(case, traj, sys.stdout)
         if args.csv:
@@ -222,6 +237,9 @@ def _run_loaded_case(case, args) -> int:
 def _loaded_summary(traj) -> dict:
     """``LoadedTrajectory.summary()`` with the vocabulary's explanations of its status and
     ending (:mod:`slidespin.motion.outcomes`); a name outside the vocabulary is an internal error."""
+    # deferred: keeps `slidespin --help` fast (the parser imports no layer)
+    from slidespin.motion.outcomes import ending_message, status_message
+
     summary = dict(traj.summary())
     try:
         summary["status_message"] = status_message(summary["status"], loaded=True)
@@ -267,6 +285,9 @@ def _phases_text(phases, limit: int = 6) -> str:
 
 def _loaded_exit_status(status: str) -> int:
     """0 for a loaded run that reached its end, 1 for one that ended early."""
+    # deferred: keeps `slidespin --help` fast (the parser imports no layer)
+    from slidespin.motion.outcomes import LOADED_UNCONVERGED
+
     return 1 if status in LOADED_UNCONVERGED else 0
 
 
@@ -293,6 +314,11 @@ def _cmd_sweep(args) -> int:
 
     if args.workers is not None and args.workers < 1:
         raise ValueError(f"--workers = {args.workers} is invalid; valid range: integer >= 1")
+    if args.scheduler and args.workers:
+        raise ValueError(
+            f"--scheduler = {args.scheduler!r} and --workers = {args.workers} exclude each "
+            "other (--workers starts a local cluster); valid: one of them"
+        )
     spec = load_spec(args.spec)
     _check_out(Path(args.out))
     client = None
@@ -312,7 +338,14 @@ def _cmd_sweep(args) -> int:
             client.close()
             if cluster is not None and not args.scheduler:
                 cluster.close()
-    if not args.quiet:
+    if res.already_complete:
+        if not args.quiet:
+            print(
+                f"sweep       : {spec.name or args.spec}: complete already in {res.out} "
+                f"({res.n_cases} cases in {res.n_chunks} chunks, all checked; nothing "
+                f"computed): {_counts_text(res.status_counts)}"
+            )
+    elif not args.quiet:
         print(f"sweep       : {spec.name or args.spec}")
         print(
             f"cases       : {res.n_cases} in {res.n_chunks} chunks "
@@ -341,7 +374,11 @@ def _counts_text(counts: dict) -> str:
 
 
 def _unconverged_text(counts: dict) -> str:
-    return _counts_text({k: v for k, v in counts.items() if k in UNCONVERGED})
+    # deferred: keeps `slidespin --help` fast (the parser imports no layer)
+    from slidespin.motion.outcomes import LOADED_UNCONVERGED, UNCONVERGED
+
+    unconverged = UNCONVERGED | LOADED_UNCONVERGED
+    return _counts_text({k: v for k, v in counts.items() if k in unconverged})
 
 
 def _read_table(args):
@@ -351,7 +388,10 @@ def _read_table(args):
 
     table = read_sweep(args.dir, include_unconverged=True)
     if not table:
-        raise ValueError(f"{args.dir!r} holds no finished chunk yet")
+        raise ValueError(
+            f"{args.dir!r} holds no finished chunk yet; valid: a sweep directory with at "
+            "least one finished chunk"
+        )
     if args.include_unconverged:
         return table, {}
     return split_unconverged(table)
@@ -369,8 +409,9 @@ def _cmd_sweep_read(args) -> int:
         with open(tmp, "w", newline="", encoding="utf-8") as fh:
             w = csv.writer(fh, lineterminator="\n")
             w.writerow(names)
+            cols = [(table[k], _cell_writer(table[k])) for k in names]
             for i in range(n):
-                w.writerow([_cell(table[k][i]) for k in names])
+                w.writerow([cell(col[i]) for col, cell in cols])
         os.replace(tmp, args.csv)
     except OSError as exc:
         try:
@@ -388,12 +429,15 @@ def _cmd_sweep_read(args) -> int:
     return 0
 
 
-def _cell(x):
-    if isinstance(x, (float, np.floating)):
-        return repr(float(x))
-    if isinstance(x, (np.integer,)):
-        return int(x)
-    return x
+def _cell_writer(column):
+    """How the cells of one column are written: floats as ``repr`` (every digit), integers as
+    integers, anything else as is."""
+    kind = getattr(getattr(column, "dtype", None), "kind", "O")
+    if kind == "f":
+        return lambda x: repr(float(x))
+    if kind in "iu":
+        return int
+    return lambda x: repr(x) if isinstance(x, float) else x
 
 
 def _cmd_sweep_plot(args) -> int:
@@ -407,7 +451,10 @@ def _cmd_sweep_plot(args) -> int:
     out = check_figure_path(out, "--out", create_parent=default)
     table = read_sweep(args.dir, include_unconverged=True)
     if not table:
-        raise ValueError(f"{args.dir!r} holds no finished chunk yet")
+        raise ValueError(
+            f"{args.dir!r} holds no finished chunk yet; valid: a sweep directory with at "
+            "least one finished chunk"
+        )
     left = {} if args.include_unconverged else split_unconverged(table)[1]
     man = _read_manifest(Path(args.dir)) or {}
     spec = man.get("spec", {}) if isinstance(man.get("spec"), dict) else {}
@@ -458,14 +505,32 @@ def _add_include(p) -> None:
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse with one-line errors (exit status 2), like every other slidespin error."""
+    """argparse with one-line errors (exit status 2), like every other slidespin error:
+    ``slidespin: error: MESSAGE`` for the command line as a whole, ``slidespin: error:
+    COMMAND: MESSAGE`` for one command's arguments (the program's name is said once)."""
 
     def error(self, message):
+        words = self.prog.split()
+        where = f"{' '.join(words[1:])}: " if len(words) > 1 else ""
         print(
-            f"slidespin: error: {self.prog.split()[-1]}: {message} (see '{self.prog} --help')",
+            f"slidespin: error: {where}{message} (see '{self.prog} --help')",
             file=sys.stderr,
         )
         sys.exit(2)
+
+
+class _Commands:
+    """The subcommands' parsers by name (to say which command an unknown argument was given
+    to: argparse's own message names only the program)."""
+
+    def __init__(self, sub):
+        self.sub = sub
+        self.parsers: dict[str, argparse.ArgumentParser] = {}
+
+    def add(self, name, **kwargs):
+        p = self.sub.add_parser(name, **kwargs)
+        self.parsers[name] = p
+        return p
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -478,8 +543,9 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--debug", action="store_true", help="show tracebacks of internal errors")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
+    commands = _Commands(sub)
 
-    p = sub.add_parser("demo", help="simulate the demo case, print the stop, draw a figure")
+    p = commands.add("demo", help="simulate the demo case, print the stop, draw a figure")
     _add_outputs(p)
     p.set_defaults(func=_cmd_demo)
     p.epilog = (
@@ -487,12 +553,12 @@ def build_parser() -> argparse.ArgumentParser:
         "Exit status: 0 stopped, 1 not converged, 2 bad input, 3 internal error."
     )
 
-    p = sub.add_parser("simulate", help="simulate a case described in a TOML file")
+    p = commands.add("simulate", help="simulate a case described in a TOML file")
     p.add_argument("case", metavar="CASE.toml", help="case file (see examples/)")
     _add_outputs(p)
     p.set_defaults(func=_cmd_simulate)
 
-    p = sub.add_parser("sweep", help="run a parameter sweep (locally or on a Dask cluster)")
+    p = commands.add("sweep", help="run a parameter sweep (locally or on a Dask cluster)")
     p.add_argument(
         "spec", metavar="SPEC.toml", help="sweep specification (see examples/sweep_*.toml)"
     )
@@ -515,16 +581,18 @@ def build_parser() -> argparse.ArgumentParser:
         "The summary counts the cases per status and per ending (also in "
         "DIR/manifest.json). Exit status 1 if some cases did not converge "
         "(max_steps, step_too_small, non_finite), 2 on bad input, a busy directory "
-        "(DIR/.lock) or a failed write (the sweep can then be finished with --resume)."
+        "(DIR/.lock) or a failed write (the sweep can then be finished with --resume). "
+        "Run again on its finished DIR, a sweep is checked and reported complete (exit 0, "
+        "one line; nothing computed or written)."
     )
 
-    p = sub.add_parser("sweep-read", help="gather a sweep's results into one CSV table")
+    p = commands.add("sweep-read", help="gather a sweep's results into one CSV table")
     p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--csv", required=True, metavar="OUT.csv")
     _add_include(p)
     p.set_defaults(func=_cmd_sweep_read)
 
-    p = sub.add_parser("sweep-plot", help="heat map or line plot of a sweep result")
+    p = commands.add("sweep-plot", help="heat map or line plot of a sweep result")
     p.add_argument("dir", metavar="DIR", help="sweep result directory (from slidespin sweep)")
     p.add_argument("--x", required=True, help="input column for the x axis, e.g. fx")
     p.add_argument("--y", help="input column for the y axis (heat map), e.g. I_star")
@@ -549,9 +617,10 @@ def build_parser() -> argparse.ArgumentParser:
             if exc.name and module.startswith(exc.name):
                 continue  # that part of slidespin is not installed in this version
             raise
-        p = sub.add_parser(name, help=help_text)
+        p = commands.add(name, help=help_text)
         mod.configure(p)
         p.set_defaults(func=mod.run)
+    parser.set_defaults(_commands=commands.parsers)
     return parser
 
 
@@ -565,9 +634,13 @@ def main(argv=None) -> int:
     try:
         parser = build_parser()
         try:
-            args = parser.parse_args(argv)
+            args, extra = parser.parse_known_args(argv)
+            if extra:  # named after the command they were given to, not the program
+                owner = args._commands.get(args.command, parser)
+                owner.error(f"unrecognized arguments: {' '.join(extra)}")
         except SystemExit as exc:  # --help, --version, or a one-line usage error
             return int(exc.code or 0)
+        del args._commands
         return int(args.func(args) or 0)
     except ValueError as exc:
         if debug:

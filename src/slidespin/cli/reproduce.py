@@ -23,13 +23,16 @@ from __future__ import annotations
 import importlib
 import math
 
-from slidespin import _validate as v
-from slidespin.paper import _shared as sh
+# nothing heavy at the top: the parser is built from this module (`slidespin --help`); the
+# paper's modules (SciPy, matplotlib) are imported by run()
 
-__all__ = ["configure", "run", "TARGETS"]
+__all__ = ["configure", "run", "TARGETS", "FORMATS"]
 
 #: what ``slidespin reproduce`` takes: one name per table, figure or check, or ``all``
 TARGETS = ("table1", "table2", "fig2", "fig3", "fig4", "errata", "phase", "all")
+#: figure formats of ``--format`` (those of :data:`slidespin.paper._shared.FORMATS`, which a
+#: test keeps equal; spelled here so that the parser does not import the paper's modules)
+FORMATS = ("png", "pdf", "svg")
 
 _HELP = {
     "table1": "Table 1: beta of eq. 16, fx inferred, vs printed, and the true terminal states",
@@ -90,13 +93,22 @@ def configure(parser) -> None:
     parser.add_argument(
         "--format",
         default=None,
-        choices=sh.FORMATS,
+        choices=FORMATS,
         dest="format",
         help="figure file format (default png)",
+    )
+    parser.add_argument(
+        "--quiet",
+        action="store_true",
+        help="no progress bar (the bar is drawn only when stderr is a terminal)",
     )
 
 
 def _check(args) -> dict:
+    # deferred: keeps `slidespin --help` fast (NumPy and the paper's modules load on use)
+    from slidespin import _validate as v
+    from slidespin.paper import _shared as sh
+
     target = args.target
     given = {name for name in ("fx", "mu", "format") if getattr(args, name) is not None}
     extra = sorted(given - _ACCEPTS[target])
@@ -104,7 +116,8 @@ def _check(args) -> dict:
         ok = sorted(t for t, acc in _ACCEPTS.items() if extra[0] in acc)
         raise ValueError(
             f"--{extra[0]} = {getattr(args, extra[0])!r} does not apply to '{target}'; "
-            f"valid for: {', '.join(ok)}"
+            f"valid for the targets: {', '.join(ok)}; '{target}' takes "
+            + (", ".join(f"--{o}" for o in sorted(_ACCEPTS[target])) or "none of them")
         )
     kw = {}
     if args.fx is not None:
@@ -127,14 +140,14 @@ def _check(args) -> dict:
 
 def run(args) -> int:
     """Run ``slidespin reproduce TARGET``; returns the exit status."""
+    from slidespin.cli._busy import busy
+
     kw = _check(args)
     target = args.target
-    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
-    if target == "all":
-        from slidespin.paper import report
-
-        report.main(args.out, as_json=args.json, **kw)
-        return 0
-    module = importlib.import_module(f"slidespin.paper.{target}")
-    module.main(args.out, as_json=args.json, **kw)
+    with busy(f"reproduce {target}", enabled=False if getattr(args, "quiet", False) else None):
+        # deferred: keeps `slidespin --help` fast (SciPy, matplotlib load on use)
+        module = importlib.import_module(
+            "slidespin.paper.report" if target == "all" else f"slidespin.paper.{target}"
+        )
+        module.main(args.out, as_json=args.json, **kw)
     return 0

@@ -10,6 +10,17 @@ the four footprint shapes). Every key is checked:
 an unknown key (a typo) or a missing required key is an error naming the table and the key,
 never silently ignored. Angles are in radians unless the key ends in ``_deg``.
 
+The ``[initial]`` table uses the names of the sweep specifications and of the sweep result
+columns (one vocabulary, :data:`INITIAL_KEYS`): ``x0``, ``y0`` [m], ``phi0`` [rad] (or
+``phi0_deg``), and either ``v0`` [m/s] with ``theta0`` [rad] (or ``theta0_deg``), the speed of
+G and its direction, or ``vx0``, ``vy0`` [m/s]; ``omega0`` [rad/s]. The earlier names ``x``,
+``y``, ``phi``, ``phi_deg``, ``speed``, ``theta``, ``theta_deg``, ``vx``, ``vy``, ``omega`` are
+aliases (:data:`INITIAL_ALIASES`), accepted so that existing case files keep working; a
+message about a key names it as the file spells it.
+
+A command that reads a case file but cannot honour one of its tables or keys refuses it
+(:func:`refuse_unused`): every option of a case file is either used or refused.
+
 Files are read defensively (:func:`read_toml`, also used for sweep specs): only a regular file
 (a FIFO or a device such as ``/dev/zero`` is refused without waiting), at most
 :data:`MAX_FILE_BYTES` bytes, UTF-8 text, nesting of at most :data:`MAX_DEPTH` levels, integers
@@ -55,6 +66,10 @@ __all__ = [
     "MAX_NAME_CHARS",
     "MAX_DEPTH",
     "MAX_STEPS_LIMIT",
+    "INITIAL_KEYS",
+    "INITIAL_ALIASES",
+    "read_case",
+    "refuse_unused",
 ]
 
 #: largest case file or sweep specification read [bytes] (real ones are about 1 kB)
@@ -77,6 +92,33 @@ _FOOTPRINT_KEYS = {
 _PLACEMENT = {"centre", "angle", "angle_deg"}
 _SHAPES = ("ellipse", "circle", *_FOOTPRINT_KEYS, "pads")
 
+#: the keys of ``[initial]`` (the names of the sweep specifications and result columns)
+INITIAL_KEYS = (
+    "x0",
+    "y0",
+    "phi0",
+    "phi0_deg",
+    "v0",
+    "theta0",
+    "theta0_deg",
+    "vx0",
+    "vy0",
+    "omega0",
+)
+#: earlier names of the ``[initial]`` keys, still accepted (alias → name)
+INITIAL_ALIASES = {
+    "x": "x0",
+    "y": "y0",
+    "phi": "phi0",
+    "phi_deg": "phi0_deg",
+    "speed": "v0",
+    "theta": "theta0",
+    "theta_deg": "theta0_deg",
+    "vx": "vx0",
+    "vy": "vy0",
+    "omega": "omega0",
+}
+
 _TABLES = {
     "patch": {
         "shape",
@@ -97,18 +139,7 @@ _TABLES = {
     "pressure": {"law", "xi_c", "eta_c"},
     "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg"},
     "body": {"mass", "moment_of_inertia", "inertia_ratio"},
-    "initial": {
-        "x",
-        "y",
-        "phi",
-        "phi_deg",
-        "vx",
-        "vy",
-        "omega",
-        "speed",
-        "theta",
-        "theta_deg",
-    },
+    "initial": set(INITIAL_KEYS) | set(INITIAL_ALIASES),
     "solver": {"g", "rtol", "max_steps", "t_end"},
     "load": set(LOAD_KEYS),
     "incline": set(INCLINE_KEYS),
@@ -139,7 +170,10 @@ class Case:
 
 def _angle(table: dict, where: str, key: str, default: float = 0.0) -> float:
     if key in table and f"{key}_deg" in table:
-        raise ValueError(f"[{where}] gives both {key} and {key}_deg; give one")
+        raise ValueError(
+            f"[{where}] gives both {key} and {key}_deg; give one (valid: {key} in rad or "
+            f"{key}_deg in degrees)"
+        )
     if f"{key}_deg" in table:
         return math.radians(v.finite(f"[{where}] {key}_deg", table[f"{key}_deg"]))
     return v.finite(f"[{where}] {key}", table.get(key, default))
@@ -156,14 +190,20 @@ def _in(where: str, build, *args, **kwargs):
 
 def _need(table: dict, where: str, key: str):
     if key not in table:
-        raise ValueError(f"[{where}] is missing the required key {key!r}")
+        raise ValueError(
+            f"[{where}] is missing the required key {key!r}; valid: a [{where}] table that "
+            f"gives {key}"
+        )
     return table[key]
 
 
 def case_from_dict(data: dict) -> Case:
     """Build and validate a :class:`Case` from a parsed TOML document."""
     if not isinstance(data, dict):
-        raise ValueError("a case must be a TOML table")
+        raise ValueError(
+            f"a case must be a TOML table, got {type(data).__name__}; valid: a document with "
+            "the tables [patch], [pressure], [friction], [body], [initial]"
+        )
     for key in data:
         if key not in _TABLES and key not in _TOP:
             raise ValueError(
@@ -172,11 +212,14 @@ def case_from_dict(data: dict) -> Case:
             )
     for name in ("patch", "pressure", "friction", "body", "initial"):
         if name not in data:
-            raise ValueError(f"the case file is missing the table [{name}]")
+            raise ValueError(
+                f"the case file is missing the table [{name}]; valid: a case file with the "
+                "tables [patch], [pressure], [friction], [body], [initial]"
+            )
     for name, allowed in _TABLES.items():
         table = data.get(name, {})
         if not isinstance(table, dict):
-            raise ValueError(f"[{name}] must be a table, got {table!r}")
+            raise ValueError(f"[{name}] must be a table, got {_short(table)}; valid: a TOML table")
         for key in table:
             if key not in allowed:
                 raise ValueError(
@@ -190,21 +233,29 @@ def case_from_dict(data: dict) -> Case:
     elif shape == "circle":
         extra = sorted(set(p) - {"shape", "radius"})
         if extra:
-            raise ValueError(f"[patch] shape 'circle' takes only 'radius', not {extra[0]!r}")
+            raise ValueError(
+                f"[patch] shape 'circle' takes only 'radius', not {extra[0]!r}; valid keys: "
+                "shape, radius"
+            )
         patch = _in("patch", Circle, v.positive("[patch] radius", _need(p, "patch", "radius"), "m"))
     else:
         extra = sorted(set(p) - {"shape", "a", "b", "eccentricity", "radius"})
         if extra:
             raise ValueError(
-                f"[patch] shape 'ellipse' takes a and b or eccentricity, not {extra[0]!r}"
+                f"[patch] shape 'ellipse' takes a and b or eccentricity, not {extra[0]!r}; "
+                "valid keys: shape, a, b, eccentricity"
             )
         if "radius" in p:
             raise ValueError(
-                "[patch] 'radius' is for shape = 'circle'; an ellipse takes a and b or eccentricity"
+                "[patch] 'radius' is for shape = 'circle'; valid keys for an ellipse: a, and b "
+                "or eccentricity"
             )
         a = v.positive("[patch] a", _need(p, "patch", "a"), "m")
         if ("b" in p) == ("eccentricity" in p):
-            raise ValueError("[patch] give exactly one of 'b' and 'eccentricity' for an ellipse")
+            raise ValueError(
+                "[patch] give exactly one of 'b' and 'eccentricity' for an ellipse; valid: b "
+                "[m] > 0, or eccentricity in [0, 1)"
+            )
         if "b" in p:
             patch = _in("patch", Ellipse, a, v.positive("[patch] b", p["b"], "m"))
         else:
@@ -234,28 +285,16 @@ def case_from_dict(data: dict) -> Case:
     bd = data["body"]
     mass = v.positive("[body] mass", _need(bd, "body", "mass"), "kg")
     if "moment_of_inertia" in bd and "inertia_ratio" in bd:
-        raise ValueError("[body] give at most one of 'moment_of_inertia' and 'inertia_ratio'")
+        raise ValueError(
+            "[body] give at most one of 'moment_of_inertia' and 'inertia_ratio'; valid: one of "
+            "them, or neither (the uniform plate)"
+        )
     if "inertia_ratio" in bd:
         body = _in("body", Body.from_inertia_ratio, patch, law, mass, bd["inertia_ratio"])
     else:
         body = _in("body", Body, patch, law, mass, bd.get("moment_of_inertia"))
 
-    ini = data["initial"]
-    has_speed = "speed" in ini or "theta" in ini or "theta_deg" in ini
-    has_v = "vx" in ini or "vy" in ini
-    if has_speed and has_v:
-        raise ValueError("[initial] give either speed/theta or vx/vy, not both")
-    phi = _angle(ini, "initial", "phi")
-    omega = v.finite("[initial] omega", ini.get("omega", 0.0))
-    x0 = v.finite("[initial] x", ini.get("x", 0.0))
-    y0 = v.finite("[initial] y", ini.get("y", 0.0))
-    if has_speed:
-        speed = v.in_range("[initial] speed", ini.get("speed", 0.0), 0.0, math.inf, hi_open=True)
-        state = _in(
-            "initial", State.from_speed, speed, omega, _angle(ini, "initial", "theta"), phi, x0, y0
-        )
-    else:
-        state = _in("initial", State, x0, y0, phi, ini.get("vx", 0.0), ini.get("vy", 0.0), omega)
+    state = _initial_state(data["initial"])
 
     so = data.get("solver", {})
     g = v.positive("[solver] g", so.get("g", 9.81), "m/s^2")
@@ -279,6 +318,56 @@ def case_from_dict(data: dict) -> Case:
     return Case(body, friction, state, g, rtol, max_steps, name, load, incline, t_end)
 
 
+def _initial_state(ini: dict) -> State:
+    """The ``[initial]`` table (names of :data:`INITIAL_KEYS` or their aliases) as a State;
+    every message names the key as the file spells it."""
+    table: dict = {}
+    spelled: dict = {}
+    for key, val in ini.items():
+        name = INITIAL_ALIASES.get(key, key)
+        if name in table:
+            raise ValueError(
+                f"[initial] gives both {spelled[name]!r} and {key!r}, two names of {name}; "
+                f"give one (valid: {name}, or its alias)"
+            )
+        table[name], spelled[name] = val, key
+
+    def named(name: str) -> str:
+        return f"[initial] {spelled.get(name, name)}"
+
+    def angle(name: str) -> float:
+        if name in table and f"{name}_deg" in table:
+            raise ValueError(
+                f"[initial] gives both {spelled[name]} and {spelled[name + '_deg']}; give one "
+                f"(valid: {name} in rad or {name}_deg in degrees)"
+            )
+        if f"{name}_deg" in table:
+            return math.radians(v.finite(named(f"{name}_deg"), table[f"{name}_deg"]))
+        return v.finite(named(name), table.get(name, 0.0))
+
+    def component(name: str, bound: float, unit: str) -> float:
+        return v.symmetric(named(name), v.finite(named(name), table.get(name, 0.0)), bound, unit)
+
+    polar = [n for n in ("v0", "theta0", "theta0_deg") if n in table]
+    cartesian = [n for n in ("vx0", "vy0") if n in table]
+    if polar and cartesian:
+        raise ValueError(
+            "[initial] give either speed/theta or vx/vy, not both: "
+            f"{spelled[polar[0]]!r} and {spelled[cartesian[0]]!r} given; valid: v0 and "
+            "theta0 (or theta0_deg), or vx0 and vy0"
+        )
+    phi = angle("phi0")
+    omega = component("omega0", v.SPIN, "rad/s")
+    x0 = component("x0", v.POSITION, "m")
+    y0 = component("y0", v.POSITION, "m")
+    if polar:
+        speed = v.in_range(named("v0"), table.get("v0", 0.0), 0.0, v.SPEED)
+        return _in("initial", State.from_speed, speed, omega, angle("theta0"), phi, x0, y0)
+    vx = component("vx0", v.SPEED, "m/s")
+    vy = component("vy0", v.SPEED, "m/s")
+    return _in("initial", State, x0, y0, phi, vx, vy, omega)
+
+
 def _footprint(p: dict, where: str, nested: bool = False):
     """A footprint from a [patch] table (or one [[patch.pads]] entry, ``nested``)."""
     shape = v.choice(
@@ -298,7 +387,10 @@ def _footprint(p: dict, where: str, nested: bool = False):
     if shape == "pads":
         pads = _need(p, where, "pads")
         if not isinstance(pads, list) or not pads or not all(isinstance(x, dict) for x in pads):
-            raise ValueError(f"[{where}] pads must be one or more [[{where}.pads]] tables")
+            raise ValueError(
+                f"[{where}] pads = {_short(pads)} is invalid; valid: one or more "
+                f"[[{where}.pads]] tables"
+            )
         items = [_footprint(x, f"{where}.pads[{i}]", nested=True) for i, x in enumerate(pads)]
         return _in(where, Pads, items)
     place = {
@@ -344,7 +436,10 @@ def _pair(value, where: str, key: str) -> tuple[float, float]:
 def check_name(name, key: str = "name") -> str:
     """The ``name`` of a case or sweep: a string of at most :data:`MAX_NAME_CHARS` characters."""
     if not isinstance(name, str):
-        raise ValueError(f"{key} = {_short(name)} must be a string")
+        raise ValueError(
+            f"{key} = {_short(name)} must be a string; valid: a string of at most "
+            f"{MAX_NAME_CHARS} characters"
+        )
     if len(name) > MAX_NAME_CHARS:
         raise ValueError(
             f"{key} is {len(name)} characters long; valid: a string of at most "
@@ -438,8 +533,66 @@ def load_case(path) -> Case:
         Unreadable or malformed TOML, unknown or missing keys, or invalid values; the message
         names the file, the key, the value and the valid range.
     """
+    return read_case(path)[0]
+
+
+def read_case(path, *, initial_required: bool = True) -> tuple[Case, dict]:
+    """Read and validate a case file: the :class:`Case` and the parsed document (which keys
+    the file gives, for :func:`refuse_unused`).
+
+    With ``initial_required=False`` the ``[initial]`` table may be left out (the body then
+    starts at rest at the origin).
+    """
     data = read_toml(path, "case file")
+    doc = data
+    if not initial_required and isinstance(data, dict) and "initial" not in data:
+        data = {**data, "initial": {}}
     try:
-        return case_from_dict(data)
+        return case_from_dict(data), doc
     except ValueError as exc:
         raise ValueError(f"{path}: {exc}") from None
+
+
+def refuse_unused(path, data: dict, command: str, unused) -> None:
+    """Refuse the tables and keys of a case file that ``command`` cannot honour.
+
+    Parameters
+    ----------
+    path : str or Path
+        The case file (named in the message).
+    data : dict
+        Its parsed document (:func:`read_case`).
+    command : str
+        The command, e.g. ``"slidespin fit"``.
+    unused : sequence of (table, keys, reason)
+        ``keys`` None refuses the whole table; otherwise the keys of the table (for
+        ``[initial]`` the names of :data:`INITIAL_KEYS`, whose aliases are refused with them).
+        ``reason`` says why the command cannot use it and what can.
+
+    Raises
+    ------
+    ValueError
+        Naming the file, the table or key as the file spells it, and the reason.
+    """
+    alias_of: dict[str, list[str]] = {}
+    for alias, name in INITIAL_ALIASES.items():
+        alias_of.setdefault(name, []).append(alias)
+    for table, keys, reason in unused:
+        given = data.get(table)
+        if given is None:
+            continue
+        if keys is None:
+            raise ValueError(
+                f"{path}: [{table}] is not used by {command} ({reason}); valid: a case file "
+                f"without [{table}]"
+            )
+        if not isinstance(given, dict):
+            continue  # refused by case_from_dict
+        for name in keys:
+            spellings = [name] + (alias_of.get(name, []) if table == "initial" else [])
+            for key in spellings:
+                if key in given:
+                    raise ValueError(
+                        f"{path}: [{table}] {key} = {_short(given[key])} is not used by "
+                        f"{command} ({reason}); valid: leave {key} out of [{table}]"
+                    )

@@ -67,7 +67,7 @@ def load_from_table(table: dict, where: str = "load") -> Load:
     (2.0, 0.0, 0.1)
     """
     if not isinstance(table, dict):
-        raise ValueError(f"[{where}] must be a table, got {table!r}")
+        raise ValueError(f"[{where}] must be a table, got {table!r}; valid: a TOML table")
     unknown = sorted(set(table) - set(LOAD_KEYS))
     if unknown:
         raise ValueError(
@@ -80,7 +80,7 @@ def load_from_table(table: dict, where: str = "load") -> Load:
         if both:
             raise ValueError(
                 f"[{where}] gives both 'force' and {both[0]!r}; give force = [Fx, Fy] or "
-                "fx, fy, not both"
+                "fx, fy, not both (valid: one of the two forms)"
             )
     profile = [k for k in ("times", "profile_fx", "profile_fy", "profile_torque") if k in table]
     if profile:
@@ -88,11 +88,14 @@ def load_from_table(table: dict, where: str = "load") -> Load:
         if constant:
             raise ValueError(
                 f"[{where}] give either {constant[0]!r} (a constant load) or "
-                "times/profile_* (a load varying in time), not both"
+                "times/profile_* (a load varying in time), not both (valid: one of the two)"
             )
         for key in ("times", "profile_fx", "profile_fy"):
             if key not in table:
-                raise ValueError(f"[{where}] is missing the required key {key!r} of a profile")
+                raise ValueError(
+                    f"[{where}] is missing the required key {key!r} of a profile; valid: times "
+                    "with profile_fx, profile_fy (and optionally profile_torque)"
+                )
         return _table_value(
             where,
             Load.piecewise_linear,
@@ -134,7 +137,7 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
     15.0
     """
     if not isinstance(table, dict):
-        raise ValueError(f"[{where}] must be a table, got {table!r}")
+        raise ValueError(f"[{where}] must be a table, got {table!r}; valid: a TOML table")
     unknown = sorted(set(table) - set(INCLINE_KEYS))
     if unknown:
         raise ValueError(
@@ -143,7 +146,10 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
 
     def angle(key, default=None):
         if key in table and f"{key}_deg" in table:
-            raise ValueError(f"[{where}] gives both {key} and {key}_deg; give one")
+            raise ValueError(
+                f"[{where}] gives both {key} and {key}_deg; give one (valid: {key} in rad or "
+                f"{key}_deg in degrees)"
+            )
         if f"{key}_deg" in table:
             deg = v.finite(f"[{where}] {key}_deg", as_real(table[f"{key}_deg"]))
             if key == "angle" and not 0.0 <= deg < 90.0:
@@ -153,7 +159,10 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
             return math.radians(deg)
         if key not in table:
             if default is None:
-                raise ValueError(f"[{where}] is missing the required key 'angle' (or angle_deg)")
+                raise ValueError(
+                    f"[{where}] is missing the required key 'angle' (or angle_deg); valid: "
+                    "angle in [0, pi/2) rad or angle_deg in [0, 90), or times with a profile"
+                )
             return default
         return v.finite(f"[{where}] {key}", as_real(table[key]))
 
@@ -163,13 +172,17 @@ def incline_from_table(table: dict, where: str = "incline") -> Incline:
         if fixed:
             raise ValueError(
                 f"[{where}] give either {fixed[0]!r} (a fixed tilt) or times/profile_angle "
-                "(a tilt varying in time), not both"
+                "(a tilt varying in time), not both (valid: one of the two)"
             )
         if "times" not in table:
-            raise ValueError(f"[{where}] is missing the required key 'times' of a profile")
+            raise ValueError(
+                f"[{where}] is missing the required key 'times' of a profile; valid: times "
+                "[s] with profile_angle or profile_angle_deg"
+            )
         if ("profile_angle" in table) == ("profile_angle_deg" in table):
             raise ValueError(
-                f"[{where}] give one of 'profile_angle' [rad] or 'profile_angle_deg' with 'times'"
+                f"[{where}] give one of 'profile_angle' [rad] or 'profile_angle_deg' with "
+                "'times' (valid: exactly one of them)"
             )
         if "profile_angle_deg" in table:
             deg = _table_value(where, v.real_array, "profile_angle_deg", table["profile_angle_deg"])

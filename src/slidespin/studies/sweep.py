@@ -7,7 +7,8 @@ cut into chunks (:func:`~slidespin.studies.sweep_chunk.compute_chunk`); each fin
 written to ``DIR/chunks/chunk-NNNNNN.parquet`` and recorded in ``DIR/manifest.json``
 (:mod:`slidespin.studies.sweep_store`). A sweep killed at any moment loses only its unfinished
 chunks; ``resume=True`` checks every chunk file, recomputes damaged ones and computes the
-missing ones. ``DIR/.lock`` keeps a second sweep off a directory in use.
+missing ones; running a finished sweep again checks its chunk files and reports it complete,
+computing and writing nothing. ``DIR/.lock`` keeps a second sweep off a directory in use.
 :func:`~slidespin.studies.sweep_read.read_sweep` and
 :func:`~slidespin.studies.sweep_read.to_pandas` read a sweep back.
 
@@ -30,10 +31,8 @@ tilt keys ``load_fx``, ``load_fy``, ``load_torque``, ``load_frame``, ``incline_a
 from __future__ import annotations
 
 import concurrent.futures as cf
-import math
 import os
 import shutil
-import sys
 import tempfile
 import time
 from collections.abc import Iterable
@@ -64,30 +63,19 @@ MIN_TASK_CASES = 1000
 
 
 # --------------------------------------------------------------------------- progress
-class _Progress:
-    def __init__(self, total: int, done: int, enabled: bool):
-        self.total, self.done, self.enabled = total, done, enabled
-        self.t0 = time.monotonic()
-        self.start_done = done
+def _progress_bar(total: int, done: int, enabled: bool | None):
+    """The shared bar (:func:`slidespin._progress.progress_bar`: on a terminal only, never
+    with ``progress=False``), started at the ``done`` cases of earlier runs (they count in the
+    bar, not in its rate)."""
+    # lazy: tqdm is needed only while a sweep runs
+    from slidespin._progress import progress_bar
 
-    def update(self, n: int) -> None:
-        self.done += n
-        if not self.enabled:
-            return
-        el = time.monotonic() - self.t0
-        rate = (self.done - self.start_done) / el if el > 0 else 0.0
-        eta = (self.total - self.done) / rate if rate > 0 else float("nan")
-        frac = self.done / self.total if self.total else 1.0
-        bar = "#" * int(30 * frac)
-        eta_s = f"{eta:5.0f}s" if math.isfinite(eta) else "    ?"
-        sys.stderr.write(
-            f"\r[{bar:<30}] {self.done}/{self.total} cases  {rate:8.0f} cases/s  ETA {eta_s}"
-        )
-        sys.stderr.flush()
-
-    def close(self) -> None:
-        if self.enabled:
-            sys.stderr.write("\n")
+    bar = progress_bar(total, "sweep", unit="case", enabled=enabled)
+    if done:
+        # tqdm's own `initial`: counted as done, not as work of this run
+        bar.n = bar.last_print_n = bar.initial = done
+        bar.refresh()
+    return bar
 
 
 # --------------------------------------------------------------------------- driver
@@ -111,6 +99,8 @@ class SweepResult:
     status_counts: dict = field(default_factory=dict)
     ending_counts: dict = field(default_factory=dict)
     chunks_repaired: int = 0
+    #: the sweep was finished before this call: its chunk files were checked, nothing computed
+    already_complete: bool = False
 
     @property
     def cases_per_second(self) -> float:
@@ -159,8 +149,10 @@ def sweep(
     resume : bool
         Finish a sweep that was interrupted: only missing chunks are computed. Every chunk
         file already there is checked first (readable Parquet, its columns, row count and
-        case numbers); damaged ones are computed again. Without ``resume`` an existing sweep
-        directory is refused, and a directory of a different spec always is.
+        case numbers); damaged ones are computed again. Without ``resume`` an unfinished or
+        damaged sweep directory is refused (the message says which chunks), a finished one is
+        checked and reported complete (``already_complete``; nothing is computed or written),
+        and a directory of a different spec is always refused, naming the keys that differ.
     progress : bool or None
         Progress bar on stderr; ``None`` means only when stderr is a terminal.
     task_cases : int or None
@@ -184,6 +176,16 @@ def sweep(
         isinstance(task_cases, bool) or not isinstance(task_cases, int) or task_cases < 1
     ):
         raise SweepError(f"task_cases = {task_cases!r} is invalid; valid range: integer >= 1")
+    _check_executor(executor)
+    if not isinstance(out, (str, os.PathLike)) or not str(out):
+        raise SweepError(
+            f"out = {out!r:.60} is invalid; valid values: a directory path (str or "
+            "os.PathLike), new, empty or holding this sweep"
+        )
+    for name, flag in (("resume", resume), ("progress", progress)):
+        if not (isinstance(flag, bool) or (flag is None and name == "progress")):
+            valid = "True, False or None" if name == "progress" else "True, False"
+            raise SweepError(f"{name} = {flag!r:.60} is invalid; valid values: {valid}")
     spec = load_spec(spec)
     if task_cases is None:
         task_cases = MIN_TASK_CASES if spec.mode == "stop" else 1
@@ -195,32 +197,56 @@ def sweep(
         except FileExistsError:
             pass
         except OSError as exc:
-            raise SweepError(f"out = {str(out)!r} cannot be created: {exc.strerror}") from None
+            raise SweepError(
+                f"out = {str(out)!r} cannot be created: {exc.strerror}; valid: a path whose "
+                "parent directory exists and is writable"
+            ) from None
     with _Lock(out):
         return _run_sweep(spec, out, executor, resume, progress, task_cases)
 
 
+def _check_executor(executor) -> None:
+    """``None``, a ``dask.distributed.Client`` or a ``concurrent.futures.Executor``."""
+    if executor is None or _is_dask_client(executor) or isinstance(executor, cf.Executor):
+        return
+    raise SweepError(
+        f"executor = {executor!r:.60} is invalid; valid values: None (all local cores), a "
+        "dask.distributed.Client (see connect_dask) or a concurrent.futures.Executor"
+    )
+
+
 def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult:
-    done, repaired, counts = _prepare(out, spec, resume)
+    t0 = time.perf_counter()
+    done, repaired, counts, complete = _prepare(out, spec, resume)
     if repaired:
         _write_manifest(out, spec, done, counts)
     todo = [i for i in range(spec.n_chunks) if i not in done]
-    show = sys.stderr.isatty() if progress is None else bool(progress)
-    bar = _Progress(spec.n_cases, sum(_chunk_len(spec, i) for i in done), show)
-    t0 = time.perf_counter()
     columns = chunk_columns(spec)
+    bar = _progress_bar(
+        spec.n_cases,
+        sum(_chunk_len(spec, i) for i in done),
+        False if complete or not todo else progress,
+    )
+    counted = {"cases": 0}  # cases of the chunk under way already counted by on_case
+
+    def on_case():
+        counted["cases"] += 1
+        bar.update(1)
 
     def finish(i, table):
         _write_chunk(out, i, table, columns)
         done.add(i)
         _add_counts(counts, table["status"], table["ending"])
         _write_manifest(out, spec, done, counts)
-        bar.update(_chunk_len(spec, i))
+        bar.update(_chunk_len(spec, i) - counted["cases"])
+        counted["cases"] = 0
 
     try:
         if executor is None:
             for i in todo:
-                finish(i, compute_chunk(spec, i))
+                # statics and loaded cases take milliseconds to minutes each: the bar moves
+                # with every case (a compiled stop chunk is done at once)
+                finish(i, compute_chunk(spec, i, on_case=on_case))
         else:
             # one task computes consecutive chunks totalling >= MIN_TASK_CASES cases, so that
             # scheduling overhead stays small; each chunk is still written on its own
@@ -256,6 +282,7 @@ def _run_sweep(spec, out, executor, resume, progress, task_cases) -> SweepResult
         ordered(counts["status"], STATUS_ORDER),
         ordered(counts["ending"], ENDINGS),
         repaired,
+        complete,
     )
 
 
@@ -276,11 +303,23 @@ def connect_dask(address: str | None = None, workers: int | None = None):
         raise SweepError(
             "Dask is not installed: pip install 'slidespin[cluster]' (dask[distributed])"
         ) from None
+    if workers is not None and (
+        isinstance(workers, bool) or not isinstance(workers, int) or workers < 1
+    ):
+        raise SweepError(f"workers = {workers!r} is invalid; valid range: integer >= 1")
     if address:
+        if workers is not None:
+            raise SweepError(
+                f"workers = {workers!r} is for a new local cluster; with address = "
+                f"{address!r} the scheduler's own workers run the sweep (valid: one of them)"
+            )
         try:
             return Client(address, timeout="10s")
         except (OSError, TimeoutError) as exc:
-            raise SweepError(f"--scheduler {address!r}: cannot connect ({exc})") from None
+            raise SweepError(
+                f"--scheduler {address!r}: cannot connect ({exc}); valid: the address of a "
+                "running Dask scheduler, tcp://HOST:PORT"
+            ) from None
     cluster = LocalCluster(
         n_workers=workers or 2,
         threads_per_worker=1,

@@ -134,6 +134,7 @@ def chunk_columns(spec: SweepSpec) -> tuple:
         else:
             geo = _SHAPE_COLUMNS[shape]
         inputs = ("case_id", "shape", *geo, *_FOOTPRINT_COMMON)
+    inputs += _degree_columns(spec)
     if spec.mode == "statics":
         return inputs + LOAD_COLUMNS + STATICS_COLUMNS
     if spec.mode == "loaded":
@@ -141,32 +142,47 @@ def chunk_columns(spec: SweepSpec) -> tuple:
     return inputs + RESULT_COLUMNS
 
 
-def compute_chunk(spec_data: dict | SweepSpec, index: int) -> dict:
+def _degree_columns(spec: SweepSpec) -> tuple:
+    """``theta0_deg``, ``phi0_deg``: the start angles in degrees, a column when the spec gives
+    them (beside ``theta0``, ``phi0`` in radians), so that a sweep is read and plotted by the
+    names it was written with. Sweeps without them keep the layout of every earlier sweep."""
+    given = set(spec.data.get("fixed", {})) | set(spec.data.get("vary", {}))
+    return tuple(k for k in ("theta0_deg", "phi0_deg") if k in given)
+
+
+def compute_chunk(spec_data: dict | SweepSpec, index: int, on_case=None) -> dict:
     """Compute chunk ``index`` of a sweep (a pure function: usable as a Dask task).
 
     Returns a dict of equal-length columns (:func:`chunk_columns`): the case inputs and the
-    results (the stop, the statics, or the loaded run: the spec's ``compute``).
+    results (the stop, the statics, or the loaded run: the spec's ``compute``). ``on_case``,
+    if given, is called with no argument after each statics or loaded case (one Python call
+    per case: a progress bar moves with them); the compiled stop sweeps compute a chunk at
+    once and do not call it.
     """
     spec = load_spec(spec_data) if not isinstance(spec_data, SweepSpec) else spec_data
     _limit_threads_in_dask_worker()
     start = index * spec.chunk_size
     cols = spec.parameters(start, start + spec.chunk_size)
     rtol = float(spec.data.get("rtol", 1e-10))
+    # the engines' own default budget unless the spec gives one (the same number)
+    budget = {"max_steps": spec.max_steps} if "max_steps" in spec.data else {}
     if spec.shape == "ellipse" and spec.mode == "stop":
         fields = _case_fields(cols)
         out = _input_table(cols, fields)
-        _add_results(out, simulate_cases(fields, rtol=rtol))
+        out.update({k: np.asarray(cols[k], dtype=float) for k in _degree_columns(spec)})
+        _add_results(out, simulate_cases(fields, rtol=rtol, **budget))
         return out
     inp = _case_inputs(spec, cols)
     out = dict(inp.table)
+    out.update({k: np.asarray(cols[k], dtype=float) for k in _degree_columns(spec)})
     given = set(spec.data.get("fixed", {})) | set(spec.data.get("vary", {}))
     if spec.mode != "stop":
         args = (inp.bodies, inp.frictions, inp.states, inp.g, inp.loads or {}, given)
         try:
             if spec.mode == "statics":
-                out.update(compute_statics(*args))
+                out.update(compute_statics(*args, on_case=on_case))
             else:
-                out.update(compute_loaded(*args, rtol))
+                out.update(compute_loaded(*args, rtol, max_steps=spec.max_steps, on_case=on_case))
         except CaseError as exc:
             # a per-case failure the checks before the run did not foresee: name the case
             raise SweepError(f"case {int(cols['case_id'][exc.index])}: {exc}") from exc
@@ -181,6 +197,7 @@ def compute_chunk(spec_data: dict | SweepSpec, index: int) -> dict:
                 inp.states[sel],
                 float(gv),
                 rtol,
+                **budget,
             ).as_dict()
             parts.append((sel, res))
         for k in RESULT_COLUMNS:

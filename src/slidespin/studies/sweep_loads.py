@@ -13,6 +13,14 @@ name (``load_fx``, ``incline_angle``, ...), and ``t_end`` of ``[solver]``:
 ``t_end``                   end of a loaded run [s], in (0, 1e9] (required when loaded)
 ==========================  ================================================================
 
+What bounds the work of a loaded case is the spec's ``max_steps`` (the budget of integrator
+steps of each run, default 200 000, as :func:`slidespin.simulate`; the engine's budget of stick
+and slip phases is 1000), not ``t_end``: a long ``t_end`` ends, at the latest, with the status
+``max_steps`` (measured on a spinning, pushed disk with t_end = 1e7 s: about 2 minutes per
+case on one core of a 2-core machine at the default budget). Loads the engines would refuse
+mid-run (larger than 10⁶ times the weight) are refused before the sweep starts
+(:func:`slidespin.studies._sweep_inputs.check_loads`).
+
 ``compute = "statics"`` (MODEL §11; :mod:`slidespin.contact.statics`): per case, the critical tilt
 α_c along ``incline_downhill`` at the body angle ``phi0``
 (:func:`~slidespin.critical_tilt`; the load keys do not enter it), the load factor
@@ -163,7 +171,9 @@ def load_columns(cols: dict, n: int, mode: str) -> dict:
     out["incline_angle_deg"] = deg
     if mode == "loaded":
         if "t_end" not in cols:
-            raise ValueError("compute = 'loaded' needs 't_end' [s] (fix or vary it)")
+            raise ValueError(
+                "compute = 'loaded' needs 't_end' [s] (fix or vary it); valid range: (0, 1e9] s"
+            )
         t_end = np.asarray(cols["t_end"], dtype=float)
         with np.errstate(all="ignore"):
             _bad("t_end", t_end, np.isfinite(t_end) & (t_end > 0) & (t_end <= 1e9), "(0, 1e9] s")
@@ -187,7 +197,7 @@ def _load_objects(loads: dict, i: int, given: set):
 
 
 def compute_statics(
-    bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict, given: set
+    bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict, given: set, on_case=None
 ) -> dict:
     """Statics of each case at rest (critical tilt, load factor, sticks or slides).
 
@@ -202,6 +212,8 @@ def compute_statics(
         :func:`load_columns`.
     given : set of str
         The keys the spec fixes or varies (a load or tilt group it omits is absent).
+    on_case : callable or None
+        Called with no argument after each case (progress).
 
     Returns
     -------
@@ -221,6 +233,8 @@ def compute_statics(
             lam[i] = statics.load_factor(body, fr, w, phi, float(g[i]), incline=incline)
         except (ValueError, RuntimeError) as exc:
             raise CaseError(i, exc) from exc
+        if on_case is not None:
+            on_case()
     sticks = lam >= 1.0
     return {
         "critical_tilt": tilt,
@@ -232,11 +246,24 @@ def compute_statics(
 
 
 def compute_loaded(
-    bodies, frictions, states: np.ndarray, g: np.ndarray, loads: dict, given: set, rtol: float
+    bodies,
+    frictions,
+    states: np.ndarray,
+    g: np.ndarray,
+    loads: dict,
+    given: set,
+    rtol: float,
+    *,
+    max_steps: int = 200_000,
+    on_case=None,
 ) -> dict:
     """One loaded run per case (:func:`slidespin.simulate` with ``load``, ``incline`` and
     ``t_end``); the columns of :data:`LOADED_COLUMNS` (final state at the end of the run,
-    number and total time of the slip phases, energy-balance error, right-hand sides)."""
+    number and total time of the slip phases, energy-balance error, right-hand sides).
+
+    ``max_steps`` is each run's budget of integrator steps: it bounds a case's work whatever
+    its ``t_end`` (a run that spends it has the status ``max_steps``). ``on_case`` is called
+    with no argument after each case (progress)."""
     n = len(bodies)
     num = {
         k: np.empty(n) for k in LOADED_COLUMNS if k not in ("ending", "status", "n_slip", "n_rhs")
@@ -255,6 +282,7 @@ def compute_loaded(
                 State(*(float(x) for x in states[i])),
                 float(g[i]),
                 rtol,
+                max_steps=max_steps,
                 load=load,
                 incline=incline,
                 t_end=t_end,
@@ -281,4 +309,6 @@ def compute_loaded(
         n_rhs[i] = tr.n_rhs
         ending[i] = tr.ending
         status[i] = tr.status
+        if on_case is not None:
+            on_case()
     return {**num, "n_slip": n_slip, "n_rhs": n_rhs, "ending": ending, "status": status}

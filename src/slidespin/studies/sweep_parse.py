@@ -12,19 +12,23 @@ from __future__ import annotations
 
 import copy
 import math
+import os
 
 import numpy as np
 
 from slidespin import _validate as v
 from slidespin.motion._cases import SHAPE_KEYS
 from slidespin.studies._sweep_inputs import _case_fields, _case_inputs
-from slidespin.studies.case import check_document, check_name, read_toml
+from slidespin.studies.case import MAX_STEPS_LIMIT, check_document, check_name, read_toml
 from slidespin.studies.sweep_loads import LOAD_PARAMETERS, MODES
 from slidespin.studies.sweep_spec import (
+    _CARTESIAN,
     _ELLIPSE_KEYS,
     _EXCLUSIVE,
     _FIXED_ONLY,
     _GEOMETRY_KEYS,
+    _MOTION_KEYS,
+    _POLAR,
     _TOP_KEYS,
     MAX_CASES,
     MAX_CHUNK,
@@ -50,12 +54,17 @@ def _validate_spec(data: dict) -> SweepSpec:
     _only(vary, set(PARAMETERS), "[vary]")
     both = sorted(set(fixed) & set(vary))
     if both:
-        raise SweepError(f"parameter {both[0]!r} is both fixed and varied")
+        raise SweepError(
+            f"parameter {both[0]!r} is both fixed and varied; valid: in [fixed] or in "
+            "[vary], not both"
+        )
     given = set(fixed) | set(vary)
     mode = v.choice("compute", data.get("compute", "stop"), MODES)
     for k in _FIXED_ONLY:
         if k in vary:
-            raise SweepError(f"{k!r} cannot be varied; fix it in [fixed] (one {k} per sweep)")
+            raise SweepError(
+                f"{k!r} cannot be varied; valid: fix it in [fixed] (one {k} per sweep)"
+            )
     shape = _check_value("[fixed] shape", fixed.get("shape", "ellipse"), "shape")
     allowed = set(_ELLIPSE_KEYS) if shape == "ellipse" else set(SHAPE_KEYS[shape])
     for k in sorted(given & _GEOMETRY_KEYS - allowed):
@@ -74,23 +83,68 @@ def _validate_spec(data: dict) -> SweepSpec:
         for k in sorted(given & set(LOAD_PARAMETERS)):
             raise SweepError(
                 f"{k!r} is a load, tilt or time bound: it needs compute = "
-                "'statics' or 'loaded' (the default 'stop' coasts on a level plane)"
+                "'statics' or 'loaded' (the default 'stop' coasts on a level plane); valid: "
+                "compute = 'statics' | 'loaded', or leave it out"
             )
-    elif mode == "statics" and "t_end" in given:
-        raise SweepError("'t_end' is for compute = 'loaded'; compute = 'statics' has no time")
+    elif mode == "statics":
+        if "t_end" in given:
+            raise SweepError(
+                "'t_end' is for compute = 'loaded'; compute = 'statics' has no time (valid: "
+                "leave t_end out, or compute = 'loaded')"
+            )
+        # a body at rest at the angle phi0: no start motion, no integration to tune
+        for k in sorted(given & set(_MOTION_KEYS)):
+            raise SweepError(
+                f"{k!r} is not used by compute = 'statics' (the statics of a body at rest "
+                "at the angle phi0); valid: leave it out, or compute = 'loaded'"
+            )
+        for k in ("rtol", "max_steps"):
+            if k in data:
+                raise SweepError(
+                    f"{k!r} is not used by compute = 'statics' (it integrates no motion); "
+                    "valid: leave it out, or compute = 'stop' | 'loaded'"
+                )
     for group in _EXCLUSIVE:
         if len(given & set(group)) > 1:
-            raise SweepError(f"give at most one of {', '.join(group)}")
+            raise SweepError(
+                f"give at most one of {', '.join(group)} (got "
+                f"{', '.join(k for k in group if k in given)}); valid: one of them"
+            )
+    polar, cartesian = sorted(given & set(_POLAR)), sorted(given & set(_CARTESIAN))
+    if polar and cartesian:
+        raise SweepError(
+            f"give the start velocity either as v0 and theta0 (or theta0_deg) or as vx0 and "
+            f"vy0, not both (got {polar[0]} and {cartesian[0]}); valid: one of the two forms"
+        )
     for req in ("a",) if shape == "ellipse" else ():
         if req not in given:
-            raise SweepError(f"the sweep spec must fix or vary {req!r}")
+            raise SweepError(
+                f"the sweep spec must fix or vary {req!r}; valid: a value in [fixed] or "
+                "values in [vary]"
+            )
     for req in ("fx",):
         if req not in given:
-            raise SweepError(f"the sweep spec must fix or vary {req!r}")
+            raise SweepError(
+                f"the sweep spec must fix or vary {req!r}; valid: a value in [fixed] or "
+                "values in [vary]"
+            )
     if not given & {"fy", "mu"}:
-        raise SweepError("the sweep spec must fix or vary 'fy' or 'mu'")
+        raise SweepError(
+            "the sweep spec must fix or vary 'fy' or 'mu'; valid: one of them in [fixed] or [vary]"
+        )
     for k, val in fixed.items():
         _check_value(f"[fixed] {k}", val, k)
+    centroid = sorted(given & {"xi_c", "eta_c"})
+    if centroid:
+        laws = [fixed.get("law", PARAMETERS["law"])]
+        if isinstance(vary.get("law"), list):
+            laws = vary["law"]
+        if not any(isinstance(x, str) and x.lower() == "linear" for x in laws):
+            raise SweepError(
+                f"{centroid[0]!r} is the centroid of the linear pressure law, and no case of "
+                f"this sweep has law = 'linear' (law: {', '.join(map(str, laws))}); valid: "
+                "law = 'linear' in [fixed] or among the laws in [vary], or leave it out"
+            )
     check_name(data.get("name", ""))
     chunk = data.get("chunk_size", 1000)
     if isinstance(chunk, bool) or not isinstance(chunk, int) or not 1 <= chunk <= MAX_CHUNK:
@@ -99,9 +153,23 @@ def _validate_spec(data: dict) -> SweepSpec:
         )
     if "rtol" in data:
         v.in_range("rtol", data["rtol"], 0.0, 1e-3, lo_open=True)
+    if "max_steps" in data:
+        steps = data["max_steps"]
+        if (
+            isinstance(steps, bool)
+            or not isinstance(steps, int)
+            or not 1 <= steps <= MAX_STEPS_LIMIT
+        ):
+            raise SweepError(
+                f"max_steps = {steps!r} is invalid; valid range: integer >= 1 and <= "
+                f"{MAX_STEPS_LIMIT}"
+            )
     if kind == "grid":
         if "random" in data:
-            raise SweepError("[random] is only for kind = 'random'")
+            raise SweepError(
+                "[random] is only for kind = 'random'; valid: kind = 'random' with [random], "
+                "or a grid without it"
+            )
         sizes = [len(_grid_values(k, spec)) for k, spec in vary.items()]
         n = math.prod(sizes)
         if n > MAX_CASES:
@@ -112,7 +180,10 @@ def _validate_spec(data: dict) -> SweepSpec:
     else:
         rnd = data.get("random")
         if rnd is None:
-            raise SweepError("kind = 'random' needs a [random] table with 'samples'")
+            raise SweepError(
+                "kind = 'random' needs a [random] table with 'samples'; valid: [random] "
+                f"samples = an integer in [1, {MAX_CASES}]"
+            )
         _only(rnd, {"samples", "seed"}, "[random]")
         n = rnd.get("samples")
         if isinstance(n, bool) or not isinstance(n, int) or not 1 <= n <= MAX_CASES:
@@ -153,6 +224,11 @@ def load_spec(spec) -> SweepSpec:
             raise
         except ValueError as exc:
             raise SweepError(str(exc)) from None
+    if not isinstance(spec, (str, os.PathLike)):
+        raise SweepError(
+            f"spec = {spec!r:.60} is invalid; valid values: a path to a TOML file (str or "
+            "os.PathLike), a dict of its tables, or a SweepSpec"
+        )
     try:
         data = read_toml(spec, "sweep spec")
     except ValueError as exc:

@@ -22,11 +22,18 @@ Parameters a spec may fix or vary (SI units, angles in radians):
 ``mass``                            [kg]
 ``I_star`` | ``moment_of_inertia``  I/(m a²), or I [kg m²] (default: uniform plate)
 ``g``                               [m/s²]
-``v0``, ``theta0``                  initial speed of G [m/s] and its direction [rad]
+``v0``, ``theta0`` | ``theta0_deg``  initial speed of G [m/s] and its direction [rad] or [deg]
+``vx0``, ``vy0``                    or the initial velocity of G [m/s] (not with v0, theta0)
 ``omega0``                          initial spin [rad/s]
-``phi0``, ``x0``, ``y0``            initial body angle [rad] and position [m]
+``phi0`` | ``phi0_deg``, ``x0``,    initial body angle [rad] or [deg] and position [m]
+``y0``
 ``shape``                           patch shape, fixed (default ellipse; footprints below)
 ==================================  =============================================================
+
+The initial-state names are those of a case file's ``[initial]`` table and of the result
+columns (one vocabulary; a case file also accepts the earlier names ``speed``, ``theta``,
+``omega``, ... as aliases, :data:`slidespin.studies.case.INITIAL_ALIASES`; a sweep spec does
+not, and says which name it means).
 
 Footprints (``shape`` other than ellipse; issue #12) take the keys of the case file's
 ``[patch]`` table instead of ``a``, ``b``, ``e``, ``aspect``: ``radius`` (disk);
@@ -39,7 +46,11 @@ circle about the origin, the first on the η axis, neighbours ``pad_spacing`` ap
 (:attr:`slidespin.Body.length_unit`).
 
 The top-level key ``compute`` (``"stop"``, ``"statics"`` or ``"loaded"``) adds the load and
-tilt keys of :mod:`slidespin.studies.sweep_loads`.
+tilt keys of :mod:`slidespin.studies.sweep_loads`. The top-level key ``max_steps`` (integer in
+[1, 1e9], default :data:`DEFAULT_MAX_STEPS`) is each case's budget of integrator steps (stop
+and loaded sweeps): it bounds the work of every case, whatever ``t_end``; a case that runs out
+has the status ``max_steps``. ``compute = "statics"`` (a body at rest) integrates nothing and
+refuses ``rtol``, ``max_steps`` and the start state other than ``phi0``.
 
 Limits (checked before any work, with the key and the valid range in the message): at most
 :data:`MAX_CASES` cases, :data:`MAX_AXIS` values per grid axis or list, :data:`MAX_CHUNK`
@@ -68,6 +79,7 @@ __all__ = [
     "MAX_CASES",
     "MAX_AXIS",
     "MAX_CHUNK",
+    "DEFAULT_MAX_STEPS",
 ]
 
 #: sweep parameters and their defaults (None: required, or derived from another one)
@@ -91,8 +103,12 @@ PARAMETERS = {
     "g": 9.81,
     "v0": 0.0,
     "theta0": 0.0,
+    "theta0_deg": None,
+    "vx0": None,
+    "vy0": None,
     "omega0": 0.0,
     "phi0": 0.0,
+    "phi0_deg": None,
     "x0": 0.0,
     "y0": 0.0,
     # footprints (issue #12): the keys of the TOML [patch] table, see _cases.SHAPE_KEYS
@@ -134,7 +150,27 @@ _EXCLUSIVE = (
     ("inner_radius", "ring_width", "radius_ratio"),
     ("width", "aspect"),
     ("incline_angle", "incline_angle_deg"),
+    ("theta0", "theta0_deg"),
+    ("phi0", "phi0_deg"),
 )
+#: the start state's speed and direction, or its velocity components (not both)
+_POLAR = ("v0", "theta0", "theta0_deg")
+_CARTESIAN = ("vx0", "vy0")
+#: the start state, which ``compute = "statics"`` (a body at rest at angle phi0) does not use
+_MOTION_KEYS = ("v0", "theta0", "theta0_deg", "vx0", "vy0", "omega0", "x0", "y0")
+#: names of a case file's [initial] table that a sweep spec spells otherwise (for messages)
+_CASE_FILE_NAMES = {
+    "speed": "v0",
+    "theta": "theta0",
+    "theta_deg": "theta0_deg",
+    "omega": "omega0",
+    "phi": "phi0",
+    "phi_deg": "phi0_deg",
+    "x": "x0",
+    "y": "y0",
+    "vx": "vx0",
+    "vy": "vy0",
+}
 _TOP_KEYS = {
     "name",
     "description",
@@ -145,7 +181,11 @@ _TOP_KEYS = {
     "vary",
     "random",
     "compute",
+    "max_steps",
 }
+#: the budget of integrator steps of each case unless ``max_steps`` says otherwise (that of
+#: :func:`slidespin.simulate`)
+DEFAULT_MAX_STEPS = 200_000
 #: most cases in one sweep (they are all validated before work starts: about 1 µs each)
 MAX_CASES = 10_000_000
 #: most values on one grid axis (``num`` or a list) or in one list to pick from
@@ -196,6 +236,12 @@ class SweepSpec:
     def shape(self) -> str:
         """The patch shape (``[fixed] shape``; ``"ellipse"`` by default)."""
         return str(self.data.get("fixed", {}).get("shape", "ellipse"))
+
+    @property
+    def max_steps(self) -> int:
+        """Each case's budget of integrator steps (``max_steps``; default
+        :data:`DEFAULT_MAX_STEPS`)."""
+        return int(self.data.get("max_steps", DEFAULT_MAX_STEPS))
 
     @property
     def mode(self) -> str:
@@ -276,7 +322,7 @@ def _grid_values(name, spec):
             if lo <= 0 or hi <= 0:
                 raise SweepError(
                     f"{where}: log spacing needs start > 0 and stop > 0, got "
-                    f"start = {lo!r}, stop = {hi!r}"
+                    f"start = {lo!r}, stop = {hi!r}; valid range: start > 0, stop > 0"
                 )
             vals = np.geomspace(lo, hi, num)
         else:
@@ -287,7 +333,10 @@ def _grid_values(name, spec):
                     f"{where}: stop - start = {hi!r} - {lo!r} overflows; valid: a finite difference"
                 )
         return [_check_value(name, float(x)) for x in vals]
-    raise SweepError(f"{where} = {spec!r}: give a list of values or {{start, stop, num[, log]}}")
+    raise SweepError(
+        f"{where} = {_short(spec)} is invalid; valid values: a list of values or "
+        "{start, stop, num[, log]}"
+    )
 
 
 def _random_values(name, spec, rng, n):
@@ -300,7 +349,8 @@ def _random_values(name, spec, rng, n):
         return arr
     if not isinstance(spec, dict):
         raise SweepError(
-            f"{where} = {spec!r}: give a list of values to pick from or {{low, high[, log]}}"
+            f"{where} = {_short(spec)} is invalid; valid values: a list of values to pick "
+            "from or {low, high[, log]}"
         )
     _only(spec, {"low", "high", "log"}, where)
     lo = v.finite(f"{where}.low", spec.get("low"))
@@ -309,7 +359,9 @@ def _random_values(name, spec, rng, n):
         raise SweepError(f"{where}: low = {lo!r} > high = {hi!r}; valid: low <= high")
     if _flag(where, spec):
         if lo <= 0:
-            raise SweepError(f"{where}: log sampling needs low > 0, got low = {lo!r}")
+            raise SweepError(
+                f"{where}: log sampling needs low > 0, got low = {lo!r}; valid range: low > 0"
+            )
         return np.exp(rng.uniform(math.log(lo), math.log(hi), size=n))
     if not math.isfinite(hi - lo):
         raise SweepError(
@@ -320,12 +372,20 @@ def _random_values(name, spec, rng, n):
 
 def _only(table, allowed, where):
     if not isinstance(table, dict):
-        raise SweepError(f"{where} must be a table, got {table!r}")
+        raise SweepError(f"{where} must be a table, got {_short(table)}; valid: a TOML table")
     for k in table:
         if k not in allowed:
+            hint = ""
+            if k in _CASE_FILE_NAMES and _CASE_FILE_NAMES[k] in allowed:
+                hint = f" (a case file's {k!r} is {_CASE_FILE_NAMES[k]!r} here)"
             raise SweepError(
-                f"unknown key {k!r} in {where}; valid keys: {', '.join(sorted(allowed))}"
+                f"unknown key {k!r} in {where}{hint}; valid keys: {', '.join(sorted(allowed))}"
             )
+
+
+def _short(value, n: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= n else text[: n - 1] + "…"
 
 
 def _check_value(name, value, param=None):

@@ -5,8 +5,10 @@ and renamed into place, and ``DIR/manifest.json`` records the spec, its hash, th
 version, the chunks done and how many cases ended with each status and each ending
 (:mod:`slidespin.motion.outcomes`, :func:`count_outcomes`). Resuming checks every chunk file
 (readable Parquet, columns, row count, case numbers) and removes damaged ones for
-recomputation. ``DIR/.lock`` (pid and host) keeps a second sweep off a directory in use; a
-lock whose process is gone is taken over. A write that fails (disk full, permission denied)
+recomputation. Running a sweep again on its own finished directory checks every chunk file
+and writes nothing: the sweep is reported complete. A directory of another spec is refused,
+naming the keys that differ. ``DIR/.lock`` (pid and host) keeps a second sweep off a directory
+in use; a lock whose process is gone is taken over. A write that fails (disk full, permission denied)
 raises :class:`~slidespin.studies.sweep_spec.SweepError` naming the file and leaves a
 directory that ``resume=True`` completes.
 """
@@ -34,7 +36,7 @@ from slidespin.studies.sweep_chunk import CHUNK_COLUMNS, chunk_columns
 from slidespin.studies.sweep_loads import STATICS_ENDINGS, STATICS_STATUSES
 from slidespin.studies.sweep_spec import SweepError, SweepSpec
 
-__all__ = ["count_outcomes"]
+__all__ = ["count_outcomes", "spec_differences"]
 
 
 #: the file in a sweep directory that records the spec, the chunks done and the counts
@@ -153,7 +155,8 @@ def _read_chunk(path: Path):
         return pq.read_table(path)
     except Exception as exc:  # noqa: BLE001 - pyarrow raises several types for bad files
         raise SweepError(
-            f"{str(path)!r} is not a readable Parquet file ({type(exc).__name__}: "
+            f"{str(path)!r} is not a readable Parquet file (valid: one written by slidespin "
+            f"sweep; {type(exc).__name__}: "
             f"{str(exc).splitlines()[0] if str(exc) else ''}); rerun "
             "slidespin sweep SPEC --out DIR --resume to recompute it"
         ) from None
@@ -236,65 +239,159 @@ def _read_manifest(out: Path) -> dict | None:
     if not p.exists():
         return None
     if not p.is_file():
-        raise SweepError(f"{str(p)!r} is not a regular file; it is not a slidespin sweep directory")
+        raise SweepError(
+            f"{str(p)!r} is not a regular file; it is not a slidespin sweep directory (valid: "
+            "a directory written by slidespin sweep)"
+        )
     try:
         with open(p, "rb") as fh:
             raw = fh.read(MAX_MANIFEST_BYTES + 1)
         if len(raw) > MAX_MANIFEST_BYTES:
             raise SweepError(
                 f"{str(p)!r} is larger than {MAX_MANIFEST_BYTES} bytes; it is not "
-                "a slidespin sweep manifest"
+                "a slidespin sweep manifest (valid: one written by slidespin sweep)"
             )
         doc = json.loads(raw.decode("utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError) as exc:
         raise SweepError(
-            f"{str(p)!r} is unreadable ({exc}); it is not a slidespin sweep directory"
+            f"{str(p)!r} is unreadable ({exc}); it is not a slidespin sweep directory (valid: "
+            "a directory written by slidespin sweep)"
         ) from None
     if not isinstance(doc, dict):
-        raise SweepError(f"{str(p)!r} is not a slidespin sweep manifest")
+        raise SweepError(
+            f"{str(p)!r} is not a slidespin sweep manifest (valid: a JSON object written by "
+            "slidespin sweep)"
+        )
     return doc
 
 
 def _check_out(out: Path) -> dict | None:
     """Refuse a file or a foreign non-empty directory; return the manifest if any."""
     if out.exists() and not out.is_dir():
-        raise SweepError(f"out = {str(out)!r} exists and is not a directory")
+        raise SweepError(
+            f"out = {str(out)!r} exists and is not a directory; valid: a new, empty or sweep "
+            "directory"
+        )
     man = _read_manifest(out) if out.is_dir() else None
     if man is None and out.is_dir() and any(p.name != LOCK for p in out.iterdir()):
         raise SweepError(
             f"out = {str(out)!r} is a non-empty directory without a sweep "
-            "manifest; choose a new or empty directory"
+            "manifest; valid: a new or empty directory, or one written by slidespin sweep"
         )
     return man
 
 
+def _flat(doc, path: tuple = ()) -> dict:
+    """``{("vary", "mu"): [...], ("kind",): "grid", ...}``: the leaves of a spec."""
+    if isinstance(doc, dict) and (not path or path[0] in ("fixed", "vary", "random")):
+        out: dict = {}
+        for k, val in doc.items():
+            out.update(_flat(val, path + (str(k),)))
+        return out
+    return {path: doc}
+
+
+def spec_differences(old, new: dict, limit: int = 3) -> str:
+    """What differs between the spec a directory holds and ``new``, key by key (``[vary] mu
+    = [0.0, 0.1] there, [0.0, 0.2] here``), at most ``limit`` keys and how many more."""
+    if not isinstance(old, dict):
+        return "its manifest records no readable spec"
+    a, b = _flat(old), _flat(new)
+    keys = sorted(set(a) | set(b), key=lambda k: (len(k), k))
+    diffs = [k for k in keys if a.get(k, _ABSENT) != b.get(k, _ABSENT)]
+
+    def name(k):
+        return k[0] if len(k) == 1 else f"[{k[0]}] {'.'.join(k[1:])}"
+
+    def show(val):
+        return "absent" if val is _ABSENT else _short(val)
+
+    parts = [
+        f"{name(k)} = {show(a.get(k, _ABSENT))} there, {show(b.get(k, _ABSENT))} in this spec"
+        for k in diffs[:limit]
+    ]
+    if len(diffs) > limit:
+        parts.append(f"and {len(diffs) - limit} more")
+    return "; ".join(parts) or "the same keys, written differently"
+
+
+_ABSENT = object()
+
+
+def _short(value, n: int = 60) -> str:
+    text = repr(value)
+    return text if len(text) <= n else text[: n - 1] + "…"
+
+
+def _ranges(indices) -> str:
+    """``[0, 1, 2, 5]`` → ``"0-2, 5"`` (chunk numbers, for messages; at most 6 runs)."""
+    runs: list[list[int]] = []
+    for i in sorted(indices):
+        if runs and i == runs[-1][1] + 1:
+            runs[-1][1] = i
+        else:
+            runs.append([i, i])
+    text = [f"{a}" if a == b else f"{a}-{b}" for a, b in runs[:6]]
+    if len(runs) > 6:
+        text.append("...")
+    return ", ".join(text)
+
+
 def _prepare(out: Path, spec: SweepSpec, resume: bool):
     """Set up ``out`` (called holding the lock). Returns the sound chunks done, the number
-    of damaged chunk files removed for recomputation, and the counts of the sound chunks."""
+    of damaged chunk files removed for recomputation, the counts of the sound chunks, and
+    whether the sweep was complete already (then nothing is written)."""
     man = _check_out(out)
     counts: dict[str, dict[str, int]] = {"status": {}, "ending": {}}
     if man is None:
         try:
             (out / "chunks").mkdir(parents=True, exist_ok=True)
         except OSError as exc:
-            raise SweepError(f"out = {str(out)!r} cannot be created: {exc.strerror}") from None
+            raise SweepError(
+                f"out = {str(out)!r} cannot be created: {exc.strerror}; valid: a path whose "
+                "parent directory exists and is writable"
+            ) from None
         if not os.access(out, os.W_OK):
-            raise SweepError(f"out = {str(out)!r} is not writable")
+            raise SweepError(
+                f"out = {str(out)!r} is not writable; valid: a directory this user may write"
+            )
         _write_manifest(out, spec, set(), counts)
-        return set(), 0, counts
+        return set(), 0, counts, False
     if man.get("spec_sha256") != spec.digest:
         raise SweepError(
-            f"{str(out)!r} holds a different sweep (spec hash {str(man.get('spec_sha256'))[:12]}…, "
-            f"this spec {spec.digest[:12]}…); use another directory"
+            f"{str(out)!r} holds a different sweep: {spec_differences(man.get('spec'), spec.data)}"
+            f"; valid: the spec that made it (recorded in {MANIFEST}), or another directory"
         )
     done = _chunks_done(out)
     if not resume:
-        raise SweepError(
-            f"{str(out)!r} already holds this sweep ({len(done)} of {spec.n_chunks} chunks "
-            "done); pass --resume (resume=True) to finish it"
-        )
+        missing = [i for i in range(spec.n_chunks) if i not in done]
+        if missing:
+            raise SweepError(
+                f"{str(out)!r} already holds this sweep, unfinished: "
+                f"{spec.n_chunks - len(missing)} of {spec.n_chunks} chunks done, chunk "
+                f"{_ranges(missing)} missing; pass --resume (resume=True) to finish it (valid: "
+                "--resume, or another directory)"
+            )
+        # finished: every chunk file is checked, nothing is written
+        bad = sorted(i for i in done if i >= spec.n_chunks)
+        for i in range(spec.n_chunks):
+            ok = _verify_chunk(out, spec, i)
+            if ok is None:
+                bad.append(i)
+            else:
+                _add_counts(counts, *ok)
+        if bad:
+            raise SweepError(
+                f"{str(out)!r} holds this sweep, but chunk file {_ranges(sorted(bad))} is "
+                f"damaged or foreign ({_chunk_path(out, bad[0]).name}: unreadable, or not "
+                "its rows and columns); pass --resume (resume=True) to compute it again (valid: "
+                "--resume, or another directory)"
+            )
+        return set(range(spec.n_chunks)), 0, counts, True
     if not os.access(out, os.W_OK):
-        raise SweepError(f"out = {str(out)!r} is not writable")
+        raise SweepError(
+            f"out = {str(out)!r} is not writable; valid: a directory this user may write"
+        )
     (out / "chunks").mkdir(exist_ok=True)
     # leftovers of a killed run: temporary files are never valid results
     for p in (out / "chunks").glob(".chunk-*.tmp-*"):
@@ -309,7 +406,7 @@ def _prepare(out: Path, spec: SweepSpec, resume: bool):
         else:
             sound.add(i)
             _add_counts(counts, *ok)
-    return sound, repaired, counts
+    return sound, repaired, counts, False
 
 
 class _Lock:
@@ -336,7 +433,7 @@ class _Lock:
                 raise SweepError(
                     f"{str(self.path.parent)!r} is in use by another slidespin sweep ({who}; "
                     f"lock file {str(self.path)!r}); wait for it to finish, or delete the lock "
-                    "file if that process no longer runs"
+                    "file if that process no longer runs (valid: a directory no other sweep uses)"
                 ) from None
             except OSError as exc:
                 raise _os_error(exc, self.path, resumable=False) from None
@@ -346,7 +443,9 @@ class _Lock:
                 os.close(fd)
             self.held = True
             return self
-        raise SweepError(f"cannot take the lock {str(self.path)!r}")  # pragma: no cover
+        raise SweepError(
+            f"cannot take the lock {str(self.path)!r}; valid: a directory no other sweep uses"
+        )  # pragma: no cover
 
     def __exit__(self, *exc):
         if self.held:
