@@ -367,6 +367,18 @@ def _pole_eigen(par, kc, W, fp, sign, phi, out_v):
 
 
 @jit(error_model="numpy")
+def _turn_invariant(par):
+    """True if the flow does not depend on the body angle φ: an axisymmetric pressure about
+    G (a centred circle under a radial law, or a footprint flagged ``P_RSYM``) and a tensor
+    [[fx, f], [−f, fy]] with fx = fy (it commutes with rotations, in either frame)."""
+    if par[P_SHAPE] == SHAPE_FOOTPRINT:
+        axial = par[P_RSYM] != 0.0
+    else:
+        axial = par[P_BN] == 1.0 and par[P_XG] == 0.0 and par[P_YG] == 0.0
+    return axial and par[P_T00] == par[P_T11] and par[P_T01] == -par[P_T10]
+
+
+@jit(error_model="numpy")
 def _pure_spin_direction(par, kc, W, fp, u_pre, phi_pre, phi):
     """ϑ* of a pure-spinning ending (MODEL §9), or NaN where the velocity has no limiting
     direction.
@@ -376,17 +388,24 @@ def _pure_spin_direction(par, kc, W, fp, u_pre, phi_pre, phi):
     turning (NaN). J ∝ the identity: it is frozen. Real distinct eigenvalues: it tends to the
     eigenvector of the slower one, on the side of the component along it of the direction
     ``u_pre`` that the integration reached at the body angle ``phi_pre`` (read while |u₁₂| was
-    still far above round-off). If the body turned by more than ``PHI_RESOLVED`` after that,
-    the side is not resolved (NaN); below, the eigenvector is followed continuously from
+    still far above round-off). Where the flow does not depend on φ (:func:`_turn_invariant`)
+    J ∝ 1 freezes the direction at ``u_pre`` however far the body turns on. Otherwise, if the
+    body turned by more than ``PHI_RESOLVED`` after ``phi_pre``, the side is not resolved (NaN); below, the eigenvector is followed continuously from
     ``phi_pre`` to the final angle ``phi`` (steps of 0.02 rad).
     """
+    sign = 1.0 if u_pre[2] >= 0.0 else -1.0
+    ev = np.empty(4)
+    if _turn_invariant(par):
+        # an axisymmetric patch under a tensor that commutes with rotations: the flow does
+        # not depend on φ, J is fixed, and the direction is frozen (J ∝ 1) or turns for ever
+        if _pole_eigen(par, kc, W, fp, sign, phi_pre, ev) == 0:
+            return math.atan2(u_pre[1], u_pre[0])
+        return math.nan
     if not abs(phi - phi_pre) <= PHI_RESOLVED:
         # the spin was still turning the body (and with it the field that steers the
         # vanishing velocity) when |u₁₂| fell below what the integration resolves: which side
         # of the eigenvector the velocity ends on is not determined
         return math.nan
-    sign = 1.0 if u_pre[2] >= 0.0 else -1.0
-    ev = np.empty(4)
     vx = u_pre[0]
     vy = u_pre[1]
     kind = _pole_eigen(par, kc, W, fp, sign, phi_pre, ev)
