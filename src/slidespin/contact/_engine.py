@@ -53,7 +53,9 @@ P_BN, P_LAW, P_XG, P_YG, P_T00, P_T01, P_T10, P_T11, P_BODY, P_K, P_WTOL = range
 P_SHAPE, P_CSYM, P_RSYM = 11, 12, 13
 
 
-def elliptic_args(par: np.ndarray) -> tuple:
+def elliptic_args(
+    par: np.ndarray,
+) -> tuple[float, int, float, float, float, float, float, float, bool]:
     """The elliptic kernel's body and tensor arguments from ``par``: (b/a, law, ξ_G, η_G,
     t00, t01, t10, t11, body frame), in the order of :func:`slidespin.contact._kernel_ellipse.wrench_world`
     and :func:`slidespin.contact._kernel_ellipse.wrench_array` (a Python helper, not compiled)."""
