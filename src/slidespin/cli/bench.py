@@ -15,7 +15,9 @@ Everything is measured in one run on this machine and printed as a table (or as 
   memory of a batch (measured in a subprocess);
 * the Python-call overhead of :func:`slidespin.simulate` beyond its compiled part;
 * the JIT compile time of the first call, cold (empty numba cache, in a subprocess) and with
-  the cache;
+  the cache; and what a new user waits for (:mod:`slidespin.cli._bench_startup`): the CPU of a
+  first ``slidespin demo`` from an empty numba cache, a second one's wall time,
+  ``--version``, ``--help``, ``import slidespin``, and one loaded trajectory (the pushed box);
 * the accuracy reached: the wrench against the slow adaptive reference (``tests/references/reference.py``
   of a source checkout) and the trajectory against a run at rtol = 1e-13;
 * the baselines: (a) the naive route, ``scipy.integrate.dblquad`` for Fx, Fy and M at every
@@ -70,6 +72,13 @@ GOALS = {
     "footprint_wrench_us": 1.0,
     "footprint_trajectory_ms": 0.5,
     "footprint_batch_ratio": 2.0,
+    # the first five minutes (slidespin.cli._bench_startup): CPU of whole processes
+    "demo_cold_cpu_s": 10.0,
+    "demo_warm_wall_s": 1.5,
+    "version_cpu_s": 0.5,
+    "help_cpu_s": 0.5,
+    "import_cpu_s": 0.7,
+    "pushed_box_ms": 5.0,
 }
 
 
@@ -303,6 +312,18 @@ def _rows(r):
         )
     )
     rows.append(("simulate(): whole call, demo", f"{tj['simulate_ms']:.3f} ms", "", ""))
+    first = r.get("first_run")
+    if first:
+        for key, label, unit in (
+            ("demo_cold_cpu_s", "first `slidespin demo`, empty numba cache (CPU)", "s"),
+            ("demo_warm_wall_s", "`slidespin demo` again (wall)", "s"),
+            ("version_cpu_s", "`slidespin --version` (CPU)", "s"),
+            ("help_cpu_s", "`slidespin --help` (CPU)", "s"),
+            ("import_cpu_s", "`import slidespin` (CPU)", "s"),
+            ("pushed_box_ms", "loaded trajectory: the pushed box (stick, slip, stick)", "ms"),
+        ):
+            value, goal = first[key], GOALS[key]
+            rows.append((label, f"{value:.2f} {unit}", f"≤ {goal:g} {unit}", _verdict(value, goal)))
     comp = r.get("compile", {})
     for label, goal in (
         ("cold", GOALS["first_call_cold_s"]),
@@ -527,6 +548,7 @@ def _run(args, quick, naive_s, n_batch, n_mem, out_path, n_sl, n_sd) -> str:
         bench_wrench_python,
     )
     from slidespin.cli._bench_footprint import bench_footprint
+    from slidespin.cli._bench_startup import bench_startup
     from slidespin.contact.wrench import friction_wrench
     from slidespin.motion.batch import simulate_many
     from slidespin.motion.simulate import simulate
@@ -534,9 +556,10 @@ def _run(args, quick, naive_s, n_batch, n_mem, out_path, n_sl, n_sd) -> str:
     rng = np.random.default_rng(20261122)
     r = {"machine": _machine(), "quick": quick}
     t0 = time.perf_counter()
-    _stage("compile time (subprocesses)")
+    _stage("compile time and the first run (subprocesses)")
     if not args.no_compile:
         r["compile"] = bench_compile()
+        r["first_run"] = bench_startup(quick)
     _stage("warming up (numba cache or compile)")
 
     body, fr, st, g = _demo()
