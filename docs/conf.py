@@ -103,10 +103,21 @@ html_title = f"slidespin {release}"
 html_theme_options = {
     "description": "a flat body sliding and spinning under anisotropic dry friction",
     "fixed_sidebar": True,
-    "page_width": "1100px",
+    # below this window width the sidebar goes above the text (alabaster's narrow layout);
+    # above it, _static/slidespin.css lets the page grow with the window (up to 1440 px)
+    "page_width": "1000px",
     "sidebar_width": "250px",
+    "body_max_width": "none",  # the text column takes the page's width, not 800 px
 }
-html_static_path: list[str] = []
+html_static_path: list[str] = ["_static"]
+# the layout at laptop widths: a page as wide as the window, code blocks that fit it, a
+# sidebar that scrolls to its last entry (measured at 1280 x 800: docs/_static/slidespin.css)
+html_css_files = ["slidespin.css"]
+# the API pages are long (one section per module): their sidebar also lists the page's
+# modules, whose long dotted names wrap there (slidespin.css)
+html_sidebars = {
+    "api/*": ["about.html", "searchfield.html", "navigation.html", "localtoc.html", "relations.html"],
+}
 html_extra_path: list[str] = []
 
 

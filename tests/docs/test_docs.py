@@ -73,6 +73,7 @@ PUBLIC_MODULES = (
     # viz
     "slidespin.viz",
     "slidespin.viz.animate",
+    "slidespin.viz.fit_plot",
     "slidespin.viz.sweep_plot",
     "slidespin.viz.trajectory_plot",
     # paper

@@ -255,7 +255,7 @@ def animate(
     ax.set_xlabel("x [m]")
     ax.set_ylabel("y [m]")
     if title:
-        ax.set_title(title, fontsize=9)
+        ax.set_title(title, fontsize=9, y=1.0)
     ax.plot(st.x, st.y, color="0.6", lw=0.8, zorder=1)
     lines = [ax.plot([], [], color="C0", lw=1.6, zorder=3)[0] for _ in outlines]
     radius_line = ax.plot([], [], color="C0", lw=1.0, zorder=3)[0]

@@ -2,19 +2,22 @@
 against one (:func:`plot_sweep`), with unconverged and flagged cases marked, and readable axis
 labels with units for the sweep's columns (:func:`axis_label`).
 
-matplotlib is imported lazily, only by the function that draws
-(:func:`slidespin.viz._mpl._plt`); nothing here computes physics.
+Every figure has a title that says what is shown over what (the value, how cells are
+summarised, the axes, the number of cases). matplotlib is imported lazily, only by the function
+that draws; the layout is fixed margins in inches sized from the text it holds (tick labels,
+title lines, notes), computed once when the figure is built; nothing here computes physics.
 """
 
 from __future__ import annotations
 
+import re
 import textwrap
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from slidespin.motion.outcomes import FLAGGED, LOADED_UNCONVERGED, UNCONVERGED
-from slidespin.viz._mpl import _plt
+from slidespin.viz._mpl import _cmap, _figure, _rect
 
 if TYPE_CHECKING:
     from matplotlib.artist import Artist
@@ -78,6 +81,60 @@ _CATEGORIES = {
 def axis_label(name: str) -> str:
     """Readable axis label with units for a sweep column (no raw underscores)."""
     return _LABELS.get(name, name.replace("_", " "))
+
+
+def _short(name: str) -> str:
+    """The symbol of a column for a title: its axis label without the unit or the definition
+    (``$\\mu = f_y - f_x$`` → ``$\\mu$``, ``stop time [s]`` → ``stop time``)."""
+    label = re.sub(r"\s*\[[^\]]*\]$", "", axis_label(name))
+    m = re.match(r"^\$([^$]*?) = [^$]*\$(.*)$", label)
+    return f"${m.group(1)}${m.group(2)}" if m else label
+
+
+def _text_inches(text: str, size: float) -> float:
+    """Width [in] of ``text`` at ``size`` points in the default font (mathtext between ``$``
+    signs), measured by a 1-inch Agg renderer at 72 dpi, without drawing the figure."""
+    # lazy: matplotlib is imported only to draw
+    from matplotlib.backends.backend_agg import RendererAgg
+    from matplotlib.font_manager import FontProperties
+
+    if not text:
+        return 0.0
+    ismath = text.count("$") >= 2 and text.count("$") % 2 == 0
+    w, _, _ = RendererAgg(72, 72, 72).get_text_width_height_descent(
+        text, FontProperties(size=size), ismath=ismath
+    )
+    return float(w) / 72.0
+
+
+def _tick_inches(axis) -> float:
+    """Width [in] of the widest tick label ``axis`` will draw (its locator and formatter at
+    the current view, evaluated without drawing)."""
+    import matplotlib  # lazy: matplotlib is imported only to draw
+    from matplotlib.font_manager import FontProperties
+
+    lo, hi = sorted(axis.get_view_interval())
+    tol = 1e-9 * max(abs(lo), abs(hi), 1.0)
+    locs = [v for v in axis.get_major_locator()() if lo - tol <= v <= hi + tol]
+    labels = axis.get_major_formatter().format_ticks(locs) if locs else []
+    rc = matplotlib.rcParams
+    label_size = rc["ytick.labelsize"] if axis.axis_name == "y" else rc["xtick.labelsize"]
+    size = FontProperties(size=label_size).get_size_in_points()
+    return max((_text_inches(t, size) for t in labels), default=0.0)
+
+
+def _description(value, x, y, *, what, n_cases, per_cell=1, line_per=None, dots=False) -> str:
+    """The title of a sweep figure: what is plotted, over what, from how many cases."""
+    v, cases = _short(value), f"{n_cases} case{'s' if n_cases != 1 else ''}"
+    if y is not None:
+        if dots:
+            return f"{v} over {_short(x)} and {_short(y)}: each dot one case, {cases}"
+        cell = f"{what} of {per_cell} cases per cell, " if per_cell > 1 else ""
+        return f"{v} over the ({_short(x)}, {_short(y)}) grid: {cell}{cases}"
+    head = f"{v} against {_short(x)}"
+    if line_per:
+        head += f", one line per value of {_short(line_per)}"
+    return head + (f": each dot one case, {cases}" if dots else f" ({cases})")
 
 
 def _categorical(values) -> bool:
@@ -167,6 +224,10 @@ def plot_sweep(
         The sweep's varied parameters (from its manifest). Without ``y``, a grid sweep with
         one other axis draws one line per value of that axis (at most 12); with more axes
         it is refused (give ``y``). A random sweep is drawn as points, never joined.
+    title : str, optional
+        First line(s) of the title. The title always says what is shown over what: the
+        value, how a heat-map cell summarises its cases (mean, most frequent), the axes and
+        the number of cases drawn (``β* over the (μ, I*) grid: 9 cases``).
     kind : {"grid", "random"}, optional
         The sweep's kind (from its manifest); by default guessed from the data.
     left_out : ignored
@@ -175,12 +236,14 @@ def plot_sweep(
     Returns
     -------
     matplotlib.figure.Figure
+        Made through pyplot if pyplot is imported, else on an Agg canvas; fixed margins
+        sized from its text (no layout engine). Its axes: the plot, then the colour bar of
+        a heat map.
     """
     # lazy: matplotlib is imported only to draw
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
-    plt = _plt()
     for name in (x, value) + ((y,) if y else ()):
         if name not in table:
             raise ValueError(f"column {name!r} is not in the sweep; valid: {', '.join(table)}")
@@ -214,12 +277,16 @@ def plot_sweep(
     vs_all, vcats = _numeric(table, value)
     xs, vs = xs_all[keep], vs_all[keep]
     finite = np.isfinite(vs)
-    fig, ax = plt.subplots(figsize=(6.4, 4.8), layout="constrained")
+    fig = _figure(6.4, 4.8)  # resized below, when the text it holds is known
+    ax = fig.add_axes((0.15, 0.15, 0.6, 0.7))
     cmap_cat = None
+    mesh = None  # what the colour bar shows (a heat map)
+    describe: dict = {"what": "mean", "n_cases": int(keep.sum())}
     if vcats is not None:
         from matplotlib.colors import BoundaryNorm, ListedColormap  # lazy: only to draw
 
-        base = plt.get_cmap("tab10")
+        describe["what"] = "most frequent"
+        base = _cmap("tab10")
         cmap_cat = ListedColormap([base(i % 10) for i in range(len(vcats))])
         norm_cat = BoundaryNorm(np.arange(len(vcats) + 1) - 0.5, len(vcats))
     handles: list[Artist] = []
@@ -230,9 +297,10 @@ def plot_sweep(
         others = _independent_axes(table, x, varied) if varied is not None else []
         if kind == "random":
             ax.plot(xs[finite], vs[finite], "o", ms=2.5, alpha=0.6, lw=0)
-            others_txt = ", ".join(k.replace("_", " ") for k in (varied or []) if k != x)
-            if not title:
-                title = "each dot one case" + (f"; also varied: {others_txt}" if others_txt else "")
+            describe["dots"] = True
+            others_txt = ", ".join(_short(k) for k in (varied or []) if k != x)
+            if others_txt:
+                describe["also"] = f"also varied: {others_txt}"
         elif len(others) > 1 or (
             others and np.unique(np.asarray(table[others[0]]).astype(str)).size > 12
         ):
@@ -245,7 +313,8 @@ def plot_sweep(
             k = others[0]
             kcol = np.asarray(table[k])[keep]
             kvals = np.unique(kcol)
-            colors = plt.get_cmap("viridis")(np.linspace(0.0, 0.9, kvals.size))
+            colors = _cmap("viridis")(np.linspace(0.0, 0.9, kvals.size))
+            describe["line_per"] = k
             for c, kv in zip(colors, kvals):
                 sel = (kcol == kv) & finite
                 order = np.argsort(xs[sel], kind="stable")
@@ -314,10 +383,7 @@ def plot_sweep(
                 np.add.at(votes, (iy, ix, vs.astype(int)), 1.0)
                 grid = np.where(votes.sum(axis=2) > 0, votes.argmax(axis=2), np.nan)
                 mesh = ax.pcolormesh(ux, uy, grid, shading="nearest", cmap=cmap_cat, norm=norm_cat)
-            per_cell = n_all // (ux.size * uy.size)
-            if per_cell > 1 and not title:
-                what = "most frequent" if vcats is not None else "mean"
-                title = f"{axis_label(value)}: {what} of {per_cell} cases per cell"
+            describe["per_cell"] = n_all // (ux.size * uy.size)
             cell_bad = np.zeros((uy.size, ux.size), bool)
             cell_bad[np.searchsorted(uy, ys_all[bad]), np.searchsorted(ux, xs_all[bad])] = True
             cell_flag = np.zeros((uy.size, ux.size), bool)
@@ -331,6 +397,7 @@ def plot_sweep(
                 mesh = ax.scatter(xs[finite], ys[finite], c=vs[finite], s=12, cmap="viridis")
             else:
                 mesh = ax.scatter(xs, ys, c=vs, s=12, cmap=cmap_cat, norm=norm_cat)
+            describe["dots"] = True
             bx, by = xs_all[bad], ys_all[bad]
             fl = flagged & keep
             fx_, fy_ = xs_all[fl], ys_all[fl]
@@ -346,11 +413,6 @@ def plot_sweep(
             ax.plot(bx, by, "x", color="k", ms=5, mew=1.1, lw=0, path_effects=halo)
         if len(fx_):
             ax.plot(fx_, fy_, "o", ms=5, mfc="none", mec="C3", mew=1.1, lw=0, path_effects=halo)
-        if vcats is None:
-            fig.colorbar(mesh, ax=ax, label=axis_label(value))
-        else:
-            cb = fig.colorbar(mesh, ax=ax, label=axis_label(value), ticks=np.arange(len(vcats)))
-            cb.ax.set_yticklabels([c.replace("_", " ") for c in vcats])
         if ycats is not None:
             ax.set_yticks(range(len(ycats)), ycats)
         ax.set_ylabel(axis_label(y))
@@ -394,8 +456,48 @@ def plot_sweep(
             )
         )
     ax.set_xlabel(axis_label(x))
-    if handles:  # below the axes, outside them: the layout makes room (no overlap)
-        fig.legend(handles=handles, loc="outside lower left", fontsize=7, frameon=False)
+
+    also = describe.pop("also", None)
+    text = _description(value, x, y, **describe)
+    if also:
+        text += f"; {also}"
+    lines = textwrap.wrap(text, 72)
     if title:
-        ax.set_title(textwrap.fill(title, 72), fontsize=9)
+        lines = textwrap.wrap(title, 72) + lines
+    ax.set_title("\n".join(lines), fontsize=9, y=1.0)
+
+    # ---- the layout [in], computed once: the axes keep 5.0 x 3.3 in whatever the text is
+    cax = None
+    if mesh is not None:
+        cax = fig.add_axes((0.85, 0.15, 0.03, 0.7))
+        if vcats is None:
+            fig.colorbar(mesh, cax=cax, label=axis_label(value))
+        else:
+            cb = fig.colorbar(mesh, cax=cax, label=axis_label(value), ticks=np.arange(len(vcats)))
+            cb.ax.set_yticklabels([c.replace("_", " ") for c in vcats])
+    label_h = 0.25  # an axis label at 10 pt, with its pad
+    left = 0.15 + label_h + _tick_inches(ax.yaxis) + 0.1
+    right = 0.25
+    if cax is not None:  # the colour bar, its tick labels and its label
+        right = 0.15 + 0.16 + 0.1 + _tick_inches(cax.yaxis) + label_h + 0.1
+    top = 0.2 + 0.16 * len(lines)
+    notes_h = 0.17 * len(handles) + 0.05 if handles else 0.0
+    bottom = 0.3 + label_h + notes_h + 0.1  # tick labels, x label, then the notes
+    width = max(6.4, left + 4.0 + right)
+    height = top + 3.3 + bottom
+    fig.set_size_inches(width, height)
+    w_ax = width - left - right
+    ax.set_position(_rect(fig, left, bottom, w_ax, 3.3))
+    if cax is not None:
+        cax.set_position(_rect(fig, left + w_ax + 0.15, bottom, 0.16, 3.3))
+    if handles:  # below the axes and their x label, outside them (no overlap)
+        fig.legend(
+            handles=handles,
+            loc="lower left",
+            bbox_to_anchor=(0.05 / width, 0.08 / height),
+            fontsize=7,
+            frameon=False,
+            borderaxespad=0.0,
+            handletextpad=0.6,
+        )
     return fig

@@ -2,8 +2,11 @@
 along it, β(t) and ϑ(t) with their terminal values β*, ϑ*, the speed and the spin; MODEL §5,
 §9), and a loaded run (MODEL §11) with its stick phases shaded and the applied load.
 
-matplotlib is imported lazily, only by the functions that draw (:func:`slidespin.viz._mpl._plt`).
-Every function takes data objects (a :class:`~slidespin.motion.simulate.Trajectory` or a
+matplotlib is imported lazily, only by the functions that draw. The figures are built with
+fixed margins (no layout engine), and through pyplot only when pyplot is already imported (an
+interactive session or a notebook, where ``plt.show()`` shows them); otherwise they are bare
+figures on an Agg canvas, for ``savefig``. Every function takes data objects (a
+:class:`~slidespin.motion.simulate.Trajectory` or a
 :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`), draws on the axes it is given
 or creates a figure, and returns the axes or the figure; nothing here computes physics.
 """
@@ -15,7 +18,7 @@ import math
 import numpy as np
 
 from slidespin.motion.loads import applied_wrench
-from slidespin.viz._mpl import _plt
+from slidespin.viz._mpl import _cmap, _figure, _grid, _rect
 
 __all__ = [
     "plot_trajectory",
@@ -29,6 +32,7 @@ __all__ = [
     "BETA_LIMIT",
     "ANGLE_NOISE",
     "STICK_GID",
+    "WIDE_PATH",
 ]
 
 #: |β/a| beyond which β/a is not drawn (the centre of rotation is more than 10 semi-axes
@@ -40,6 +44,10 @@ ANGLE_NOISE = 1e-9
 STICK_GID = "stick"
 #: number of instants at which the applied load of a loaded run is drawn
 LOAD_SAMPLES = 801
+#: data aspect (width/height of the path with its outlines) from which the path is drawn
+#: across the top of its figure, above a row of time panels, rather than in a column beside
+#: them (a long straight slide or push would leave a column mostly empty)
+WIDE_PATH = 3.0
 
 
 def outline_world(body, x, y, phi, n: int = 121) -> np.ndarray:
@@ -76,8 +84,8 @@ def draw_path(
     where the body is slow; their shade darkens with time. ``traj`` is a
     :class:`~slidespin.Trajectory` or a
     :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory` (any object with arrays
-    ``t, x, y, phi`` and a ``body``); ``end_label`` names the marker of the last point. Lengths are in cm when the drawn extent (path and patch) is below 1 m,
-    in m otherwise.
+    ``t, x, y, phi`` and a ``body``); ``end_label`` names the marker of the last point.
+    Lengths are in cm when the drawn extent (path and patch) is below 1 m, in m otherwise.
     """
     a = traj.body.length_unit  # the semi-axis a, or a footprint's extent
     extent = max(float(np.ptp(traj.x)), float(np.ptp(traj.y))) + 2.0 * a
@@ -91,7 +99,7 @@ def draw_path(
         times = np.interp(np.linspace(0.0, progress[-1], n_outlines), progress, traj.t)
     else:
         times = np.linspace(0.0, traj.t[-1], n_outlines)
-    cmap = _plt().get_cmap("Greys")
+    cmap = _cmap("Greys")
     for i, ti in enumerate(times):
         xi = np.interp(ti, traj.t, traj.x)
         yi = np.interp(ti, traj.t, traj.y)
@@ -135,45 +143,94 @@ def plot_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     Returns
     -------
     matplotlib.figure.Figure
+        Made through pyplot if pyplot is imported (``plt.show()`` shows it), else on an Agg
+        canvas (``fig.savefig`` writes it). Its axes, in order: path, β, ϑ, speed, spin.
     """
     if hasattr(traj, "phases"):
         return plot_loaded_trajectory(traj, title=title, n_outlines=n_outlines)
-    plt = _plt()
-    fig = plt.figure(figsize=(12.5, 6.2), layout="constrained")
-    gs = fig.add_gridspec(2, 3, width_ratios=[1.8, 1.0, 1.0])
-    ax_path = fig.add_subplot(gs[:, 0])
-    ax_beta = fig.add_subplot(gs[0, 1])
-    ax_theta = fig.add_subplot(gs[0, 2])
-    ax_v = fig.add_subplot(gs[1, 1])
-    ax_w = fig.add_subplot(gs[1, 2])
-
+    # fixed margins [in]: room for the tick labels and the label of each y axis, the titles
+    # above each row and the suptitle. The path panel takes the shape of the path (equal
+    # scales): beside a 2 x 2 block of time panels, up to 4.65 in wide, or, for a long path
+    # (WIDE_PATH), across the top above a row of the four; the figure is 12.5 in wide at most
+    height, left, right, bottom, gap = 6.2, 0.75, 0.2, 0.55, 0.85
+    top = 0.65 if title else 0.4
+    fig = _figure(12.5, height)
+    ax_path = fig.add_axes((0.1, 0.1, 0.4, 0.8))
     draw_path(ax_path, traj, n_outlines)
-    ax_path.legend(loc="best", fontsize=8, frameon=False)
-    ax_path.set_title("path of the mass centre", fontsize=10)
+    box = ax_path.dataLim
+    aspect = max(box.width, 1e-12) / max(box.height, 1e-12)
+    wide = aspect >= WIDE_PATH
+    if wide:
+        width, h_time, hgap, gap = 12.5, 2.3, 0.85, 0.95
+        w_path = width - left - right
+        h_path = min(max(w_path / aspect, 1.3), 3.2)
+        height = top + h_path + hgap + h_time + bottom
+        fig.set_size_inches(width, height)
+        ax_path.set_position(_rect(fig, left, height - top - h_path, w_path, h_path))
+        gs = _grid(
+            fig, 1, 4, left=left, right=right, bottom=bottom, top=top + h_path + hgap, wgap=gap
+        )
+        cells = [gs[0, k] for k in range(4)]
+    else:
+        h_path = height - top - bottom
+        w_path = min(max(h_path * aspect, 3.0), 4.65)
+        width = left + w_path + gap + 2 * 2.6 + gap + right  # two columns of time panels
+        fig.set_size_inches(width, height)
+        ax_path.set_position(_rect(fig, left, bottom, w_path, h_path))
+        gs = _grid(
+            fig,
+            2,
+            2,
+            left=left + w_path + gap,
+            right=right,
+            bottom=bottom,
+            top=top,
+            wgap=gap,
+            hgap=0.8,
+        )
+        cells = [gs[0, 0], gs[0, 1], gs[1, 0], gs[1, 1]]
+    ax_beta, ax_theta, ax_v, ax_w = (fig.add_subplot(c) for c in cells)
+
+    if wide:  # above the panel, right of its title: a long path leaves no room inside
+        ax_path.legend(
+            loc="lower right",
+            bbox_to_anchor=(1.0, 1.0),
+            ncols=3,
+            fontsize=8,
+            frameon=False,
+            borderaxespad=0.1,
+        )
+    else:
+        ax_path.legend(loc="best", fontsize=8, frameon=False)
+    # titles at a given height (y=1.0; no ticks on top): matplotlib then skips measuring the
+    # top tick labels of every axes at every draw (a fifth of the drawing time)
+    ax_path.set_title("path of the mass centre", fontsize=10, y=1.0)
 
     t = traj.t
     a = traj.body.length_unit
-    draw_beta(ax_beta, t, traj.beta / a, traj.beta_stop / a)
-    ax_beta.set_ylabel("β/ℓ = v/(ℓω), ℓ = extent" if traj.body.is_footprint else "β/a = v/(aω)")
-    ax_beta.set_title("distance to the centre of rotation", fontsize=10)
+    footprint = bool(getattr(traj.body, "is_footprint", False))
+    symbol = "β/ℓ" if footprint else "β/a"
+    draw_beta(ax_beta, t, traj.beta / a, traj.beta_stop / a, symbol=symbol)
+    ax_beta.set_ylabel("β/ℓ = v/(ℓω), ℓ = extent" if footprint else "β/a = v/(aω)")
+    ax_beta.set_title("distance to the centre of rotation", fontsize=10, y=1.0)
 
-    draw_angle(ax_theta, t, traj.theta, traj.theta_stop, "ϑ*")
+    draw_angle(ax_theta, t, traj.theta, traj.theta_stop, "ϑ*", speed=traj.speed)
     ax_theta.set_ylabel("ϑ [rad]")
-    ax_theta.set_title("direction of the velocity of G", fontsize=10)
+    ax_theta.set_title("direction of the velocity of G", fontsize=10, y=1.0)
 
     ax_v.plot(t, traj.speed, color="C2")
     ax_v.set_ylabel("v [m/s]")
-    ax_v.set_title("speed of G", fontsize=10)
+    ax_v.set_title("speed of G", fontsize=10, y=1.0)
     ax_w.plot(t, traj.omega, color="C4")
     ax_w.set_ylabel("ω [rad/s]")
-    ax_w.set_title("spin rate", fontsize=10)
+    ax_w.set_title("spin rate", fontsize=10, y=1.0)
     for ax in (ax_beta, ax_theta, ax_v, ax_w):
         ax.set_xlabel("t [s]")
         ax.axvline(traj.t_stop, color="C3", lw=0.8, ls=":")
         ax.set_xlim(0.0, traj.t_stop * 1.02)
         ax.grid(alpha=0.25)
     if title:
-        fig.suptitle(title, fontsize=11)
+        fig.suptitle(title, fontsize=11, y=1.0 - 0.12 / fig.get_size_inches()[1], va="top")
     return fig
 
 
@@ -236,14 +293,53 @@ _LOADED_END_LABELS = {
 }
 
 
+def _flat(ax, values, symbol: str, unit: str, meaning: str) -> bool:
+    """Say so on ``ax`` if ``values`` are constant, with limits around the value.
+
+    A curve that does not change (ω ≡ 0 of a push through G) would otherwise sit on an
+    axis spanning round-off, or on matplotlib's default ±0.05. Returns True if flat.
+    """
+    v = np.asarray(values, dtype=float)
+    v = v[np.isfinite(v)]
+    if v.size == 0:
+        return False
+    big = float(np.max(np.abs(v)))
+    if float(np.ptp(v)) > 1e-9 * big:
+        return False
+    if big == 0.0:
+        ax.set_ylim(-1.0, 1.0)
+        ax.set_yticks([0.0])
+        text = f"{symbol} = 0 throughout: {meaning}"
+    else:
+        c = float(np.mean(v))
+        ax.set_ylim(c - 0.5 * abs(c), c + 0.5 * abs(c))
+        text = f"{symbol} = {c:.4g} {unit} throughout"
+    ax.text(
+        0.5,
+        0.75,
+        text,
+        transform=ax.transAxes,
+        ha="center",
+        va="center",
+        fontsize=9,
+        color="0.3",
+    )
+    return True
+
+
 def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     """Summary of a loaded run (MODEL §11): path with outlines, speed, spin and the load.
 
-    Left, the path of the mass centre with the patch outline along it. Right, against time:
-    the speed of G, the spin rate and the applied load (force components in the plane frame
-    and the moment about G; on a slope, the pull of gravity along the plane included), with
-    the stick phases shaded (:data:`STICK_GID`). The legend sits below the axes, outside
-    them, so it never covers the data; the figure title gives the ending and the status.
+    The path of the mass centre with the patch outline along it, and against time: the speed
+    of G, the spin rate and the applied load (force components in the plane frame and the
+    moment about G; on a slope, the pull of gravity along the plane included), with the stick
+    phases shaded (:data:`STICK_GID`). The path panel takes the shape of the path (equal
+    scales on x and y): a long path (wider than :data:`WIDE_PATH` times its height) is drawn
+    across the top of the figure above the three time panels, any other beside them. A
+    curve that does not change (no spin, no motion) is said to be constant in its panel, and
+    a force component that is zero throughout is not drawn (its legend entry says so). The
+    legend sits below the axes, outside them, so it never covers the data; the figure title
+    gives the ending and the status.
 
     Parameters
     ----------
@@ -264,14 +360,10 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     """
     from matplotlib.patches import Patch  # lazy: matplotlib is imported only to draw
 
-    plt = _plt()
-    fig = plt.figure(figsize=(12.0, 7.4), layout="constrained")
-    gs = fig.add_gridspec(3, 2, width_ratios=[1.35, 1.0])
-    ax_path = fig.add_subplot(gs[:, 0])
-    ax_v = fig.add_subplot(gs[0, 1])
-    ax_w = fig.add_subplot(gs[1, 1], sharex=ax_v)
-    ax_q = fig.add_subplot(gs[2, 1], sharex=ax_v)
-
+    head = f"ending: {traj.ending}, status: {traj.status}"
+    suptitle = f"{title}\n{head}" if title else head
+    fig = _figure(12.0, 7.4)  # resized below, once the extent of the path is known
+    ax_path = fig.add_axes((0.1, 0.1, 0.8, 0.8))
     end_label = _LOADED_END_LABELS.get(traj.ending, f"end: {traj.ending}")
     draw_path(ax_path, traj, n_outlines, end_label=end_label)
     where = "path of the mass centre"
@@ -281,26 +373,79 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
         a1 = math.degrees(inc.angle_at(float(traj.t[-1])))
         tilt = f"{a0:.4g}°" if inc.is_constant else f"{a0:.4g}°→{a1:.4g}°"
         where += f" (plane tilted {tilt}, downhill {math.degrees(inc.downhill):.4g}° from x)"
-    ax_path.set_title(where, fontsize=10)
+    ax_path.set_title(where, fontsize=10, y=1.0)
+
+    tq, qx, qy, mz = applied_load_history(traj)
+    fx_on, fy_on = bool(np.any(qx != 0.0)), bool(np.any(qy != 0.0))
+    force_on = fx_on or fy_on
+    moment_on = bool(np.any(mz != 0.0))
+    twin = force_on and moment_on
+
+    # ---- the layout, in inches, from the shape of the path (its data limits, with outlines)
+    box = ax_path.dataLim
+    aspect = max(box.width, 1e-12) / max(box.height, 1e-12)
+    wide = aspect >= WIDE_PATH
+    # the legend's entries: the path's (path, start, end), the stick phases, the load's
+    n_handles = len(ax_path.get_legend_handles_labels()[0]) + 1 + fx_on + fy_on + moment_on
+    ncols = min(n_handles, 4)
+    legend_h = 0.2 * math.ceil(n_handles / ncols) + 0.1
+    top = 0.2 + 0.21 * (suptitle.count("\n") + 1) + 0.3  # the suptitle, then the axes' titles
+    bottom = 0.55 + legend_h + 0.1  # tick labels and t [s], then the legend
+    left, gap = 0.85, 0.95  # the tick labels and the label of a y axis
+    right = 0.85 if twin else 0.25  # the moment's axis on the right of the load panel
+    if wide:
+        width = 12.0
+        w_path = width - left - 0.25
+        h_path = min(max(w_path / aspect, 1.2), 3.4)
+        h_time = 2.3
+        height = top + h_path + 0.9 + h_time + bottom
+        fig.set_size_inches(width, height)
+        ax_path.set_position(_rect(fig, left, height - top - h_path, w_path, h_path))
+        w_time = (width - left - right - 2 * gap) / 3
+        time_rects = [
+            _rect(fig, left + k * (w_time + gap), bottom, w_time, h_time) for k in range(3)
+        ]
+    else:
+        height = 7.4
+        h_path = height - top - bottom
+        w_path = min(max(h_path * aspect, 2.6), 6.5)
+        w_time = 5.0
+        width = left + w_path + gap + w_time + right
+        fig.set_size_inches(width, height)
+        ax_path.set_position(_rect(fig, left, bottom, w_path, h_path))
+        hgap = 0.4  # the titles of the panels below
+        h_time = (h_path - 2 * hgap) / 3
+        x0 = left + w_path + gap
+        time_rects = [
+            _rect(fig, x0, bottom + (2 - k) * (h_time + hgap), w_time, h_time) for k in range(3)
+        ]
+    ax_v = fig.add_axes(time_rects[0])
+    ax_w = fig.add_axes(time_rects[1], sharex=ax_v)
+    ax_q = fig.add_axes(time_rects[2], sharex=ax_v)
 
     t = np.asarray(traj.t, dtype=float)
     style = "o-" if t.size == 1 else "-"  # a run that ends at t = 0 is one point
     ax_v.plot(t, traj.speed, style, color="C2", ms=3)
     ax_v.set_ylabel("v [m/s]")
-    ax_v.set_ylim(bottom=0.0)  # a speed
-    ax_v.set_title("speed of G", fontsize=10)
+    ax_v.set_title("speed of G", fontsize=10, y=1.0)
+    if not _flat(ax_v, traj.speed, "v", "m/s", "G does not move"):
+        ax_v.set_ylim(bottom=0.0)  # a speed
     ax_w.plot(t, traj.omega, style, color="C4", ms=3)
     ax_w.set_ylabel("ω [rad/s]")
-    ax_w.set_title("spin rate", fontsize=10)
+    ax_w.set_title("spin rate", fontsize=10, y=1.0)
+    _flat(ax_w, traj.omega, "ω", "rad/s", "the body does not turn")
 
-    tq, qx, qy, mz = applied_load_history(traj)
-    force_on = bool(np.any(qx != 0.0) or np.any(qy != 0.0))
-    moment_on = bool(np.any(mz != 0.0))
     load_handles = []
     qstyle = "o-" if tq.size == 1 else "-"
     if force_on:
-        load_handles += ax_q.plot(tq, qx, qstyle, color="C0", ms=3, label="$Q_x$ (force, x)")
-        load_handles += ax_q.plot(tq, qy, qstyle, color="C1", ms=3, label="$Q_y$ (force, y)")
+        # a component that is zero throughout is not drawn: its entry says so (the colours
+        # differ from the path's, C0, which shares the legend)
+        if fx_on:
+            label = "$Q_x$ (force, x)" + ("" if fy_on else "; $Q_y$ = 0")
+            load_handles += ax_q.plot(tq, qx, qstyle, color="C1", ms=3, label=label)
+        if fy_on:
+            label = "$Q_y$ (force, y)" + ("" if fx_on else "; $Q_x$ = 0")
+            load_handles += ax_q.plot(tq, qy, qstyle, color="C9", ms=3, label=label)
         ax_q.set_ylabel("force [N]")
         if moment_on:
             ax_m = ax_q.twinx()
@@ -331,6 +476,7 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     ax_q.set_title(
         "applied load" + (" (with gravity along the slope)" if traj.incline is not None else ""),
         fontsize=10,
+        y=1.0,
     )
 
     t_final = float(t[-1])
@@ -339,31 +485,36 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
         ax.grid(alpha=0.25)
         if t_final > 0.0:
             ax.set_xlim(0.0, t_final)
-    for ax in (ax_v, ax_w):
-        ax.tick_params(labelbottom=False)
-    ax_q.set_xlabel("t [s]")
+        if wide:
+            ax.set_xlabel("t [s]")
+    if not wide:  # stacked: one time axis, labelled below the lowest panel
+        for ax in (ax_v, ax_w):
+            ax.tick_params(labelbottom=False)
+        ax_q.set_xlabel("t [s]")
 
     handles, _ = ax_path.get_legend_handles_labels()
     handles.append(Patch(facecolor="0.86", edgecolor="none", label="stick (held at rest)"))
     handles += load_handles
     fig.legend(
         handles=handles,
-        loc="outside lower center",
+        loc="lower center",
+        bbox_to_anchor=(0.5, 0.1 / height),
         ncols=min(len(handles), 4),
         fontsize=8,
         frameon=False,
     )
-    head = f"ending: {traj.ending}, status: {traj.status}"
-    fig.suptitle(f"{title}\n{head}" if title else head, fontsize=11)
+    fig.suptitle(suptitle, fontsize=11, y=1.0 - 0.12 / height, va="top")
     return fig
 
 
-def draw_beta(ax, t, ratio, ratio_stop, limit: float = BETA_LIMIT):
+def draw_beta(ax, t, ratio, ratio_stop, limit: float = BETA_LIMIT, symbol: str = "β/a"):
     """β/a against t, without the excursions to ±∞ where ω changes sign.
 
     Points with |β/a| > ``limit`` are not drawn (the line is broken there, not joined
-    across ±∞); the axis spans the points drawn and the terminal value, and a note says
-    that parts are off the scale.
+    across ±∞); the axis spans the points drawn and the terminal value, and the legend says
+    that parts are off the scale (a legend, placed where it covers no line, rather than a
+    note at a fixed place, which could sit on the terminal value). ``symbol`` names the
+    ratio in the legend: ``"β/a"`` for an ellipse, ``"β/ℓ"`` for a footprint (ℓ its extent).
     """
     ratio = np.asarray(ratio, dtype=float)
     shown = np.where(np.isfinite(ratio) & (np.abs(ratio) <= limit), ratio, np.nan)
@@ -376,12 +527,14 @@ def draw_beta(ax, t, ratio, ratio_stop, limit: float = BETA_LIMIT):
         )
         if math.isfinite(v)
     ]
+    num, _, den = symbol.partition("/")
+    star = f"{num}*/{den}" if den else f"{num}*"
     if math.isfinite(ratio_stop):
-        ax.axhline(ratio_stop, color="0.5", lw=0.8, ls="--", label=f"β*/a = {ratio_stop:.4f}")
+        ax.axhline(ratio_stop, color="0.5", lw=0.8, ls="--", label=f"{star} = {_num(ratio_stop)}")
         if abs(ratio_stop) <= limit:
             span.append(ratio_stop)
     elif ratio_stop == math.inf:
-        ax.plot([], [], " ", label="β* = ∞ (pure sliding)")
+        ax.plot([], [], " ", label=f"{num}* = ∞ (pure sliding)")
     if span:
         lo, hi = min(span), max(span)
         pad = max(0.05 * (hi - lo), 0.02 * max(abs(lo), abs(hi)), 0.05)
@@ -389,31 +542,46 @@ def draw_beta(ax, t, ratio, ratio_stop, limit: float = BETA_LIMIT):
     with np.errstate(invalid="ignore"):
         off = ~np.isnan(ratio) & ~(np.abs(ratio) <= limit)
     if off.any():
-        ax.text(
-            0.98,
-            0.02,
-            f"|β/a| > {limit:g} off the scale",
-            transform=ax.transAxes,
-            ha="right",
-            va="bottom",
-            fontsize=7,
-            color="0.4",
-        )
+        ax.plot([], [], " ", label=f"|{symbol}| > {limit:g}: off the scale")
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8, frameon=False)
+        ax.legend(fontsize=8, frameon=False, loc="best")
     return ax
 
 
-def draw_angle(ax, t, angle, angle_stop, symbol: str = "ϑ*", noise: float = ANGLE_NOISE):
+def _num(x: float) -> str:
+    """``x`` with 4 decimals, never "-0.0000" (round-off of a zero)."""
+    return f"{float(f'{x:.4f}') + 0.0:.4f}"
+
+
+def draw_angle(
+    ax,
+    t,
+    angle,
+    angle_stop,
+    symbol: str = "ϑ*",
+    noise: float = ANGLE_NOISE,
+    speed=None,
+):
     """An angle against t, unwrapped (no jumps of 2π); a constant one is drawn as such.
 
     If the angle varies by less than ``noise`` [rad] (round-off of a direction that does not
     change, ~1e-15), the axis is centred on it with a ±0.1 rad span instead of magnifying the
-    noise, and the legend says it is constant.
+    noise, and the legend says it is constant. With ``speed`` (the speed of G at the same
+    instants), the direction of the velocity is not drawn where the speed is exactly 0: it is
+    undefined there (a stop by pure spinning ends with v = 0 before ω = 0), and a value such
+    as atan2(0, 0) = 0 would draw a drop that is not in the motion. Only a value equal to the
+    terminal direction ``angle_stop`` (mod 2π) is kept at such an instant.
     """
     angle = np.asarray(angle, dtype=float)
     ok = np.isfinite(angle)
-    unwrapped = angle.copy()
+    if speed is not None:
+        at_rest = np.asarray(speed, dtype=float) == 0.0
+        if math.isfinite(angle_stop):
+            with np.errstate(invalid="ignore"):
+                turn = np.remainder(angle - angle_stop + math.pi, 2.0 * math.pi) - math.pi
+            at_rest &= ~(np.abs(turn) <= 1e-9)  # the data already gives the limit there
+        ok &= ~at_rest
+    unwrapped = np.full_like(angle, np.nan)
     if ok.any():
         unwrapped[ok] = np.unwrap(angle[ok])
     ax.plot(t, unwrapped, color="C1")
@@ -423,13 +591,13 @@ def draw_angle(ax, t, angle, angle_stop, symbol: str = "ϑ*", noise: float = ANG
         stop = angle_stop + 2 * math.pi * round((last - angle_stop) / (2 * math.pi))
     vals = unwrapped[ok]
     if vals.size and np.ptp(vals) < noise:
-        centre = float(np.mean(vals)) + 0.0
+        centre = float(np.mean(vals))
         ax.set_ylim(centre - 0.1, centre + 0.1)
-        ax.plot([], [], " ", label=f"constant: {centre:.4f} rad")
+        ax.plot([], [], " ", label=f"constant: {_num(centre)} rad")
     if math.isfinite(stop):
-        ax.axhline(stop, color="0.5", lw=0.8, ls="--", label=f"{symbol} = {angle_stop:.4f} rad")
+        ax.axhline(stop, color="0.5", lw=0.8, ls="--", label=f"{symbol} = {_num(angle_stop)} rad")
     elif ok.any():
         ax.plot([], [], " ", label=f"{symbol} undefined (no limiting direction)")
     if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8, frameon=False)
+        ax.legend(fontsize=8, frameon=False, loc="best")
     return ax
