@@ -270,67 +270,8 @@ def run(args) -> int:
 
 
 def plot_fit(result, labels=None, title=None):
-    """Figure of measured (dots) vs fitted (lines) paths and angles, with residuals.
+    """Figure of a fit: measured points and fitted lines, with residuals
+    (:func:`slidespin.viz.fit_plot.plot_fit`). Returns the figure."""
+    from slidespin.viz.fit_plot import plot_fit as draw  # deferred: matplotlib
 
-    Panels: the path y(x) of G; φ(t); the position residuals x, y against t [mm]; the angle
-    residuals against t [mrad]. Each run has its own colour. Returns the figure.
-    """
-    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
-    import numpy as np
-
-    from slidespin.viz._mpl import _plt
-
-    plt = _plt()
-    fig, axes = plt.subplots(2, 2, figsize=(11, 8), constrained_layout=True)
-    ax_path, ax_phi, ax_rp, ax_ra = axes.ravel()
-    labels = labels or [str(k) for k in range(result.n_runs)]
-    for k in range(result.n_runs):
-        col = f"C{k % 10}"
-        d, r = result.data[k], result.residuals[k]
-        t0 = d["t"][0]
-        tt = np.linspace(t0, d["t"][-1], 400)
-        pred = result.predict(k, tt)
-        name = f"run {labels[k]}"
-        if "x" in d and "y" in d:
-            ax_path.plot(d["x"], d["y"], ".", ms=3, color=col, alpha=0.6)
-            ax_path.plot(pred["x"], pred["y"], "-", lw=1.4, color=col, label=name)
-        if "phi" in d:
-            ax_phi.plot(d["t"], d["phi"], ".", ms=3, color=col, alpha=0.6)
-            ax_phi.plot(tt, pred["phi"], "-", lw=1.4, color=col, label=name)
-            ax_ra.plot(d["t"], r["phi"] * 1e3, ".", ms=3, color=col, label=name)
-        for c, mk in (("x", "."), ("y", "x")):
-            if c in d:
-                ax_rp.plot(d["t"], r[c] * 1e3, mk, ms=3, color=col, label=f"{name}: {c}")
-    ax_path.set(xlabel="x [m]", ylabel="y [m]", title="path of G: measured (dots), fitted")
-    ax_path.set_aspect("equal", adjustable="datalim")
-    ax_phi.set(xlabel="t [s]", ylabel="phi [rad]", title="body angle: measured, fitted")
-    ax_rp.set(
-        xlabel="t [s]", ylabel="residual [mm]", title="position residuals (x dots, y crosses)"
-    )
-    ax_ra.set(xlabel="t [s]", ylabel="residual [mrad]", title="angle residuals")
-    for ax in (ax_rp, ax_ra):
-        ax.axhline(0.0, color="0.5", lw=0.8)
-    for ax in axes.ravel():
-        if ax.has_data():
-            ax.grid(alpha=0.3)
-            if ax in (ax_path, ax_phi) and ax.get_legend_handles_labels()[0]:
-                ax.legend(fontsize=8)
-        else:
-            ax.text(
-                0.5,
-                0.5,
-                "not measured",
-                ha="center",
-                va="center",
-                transform=ax.transAxes,
-                color="0.5",
-            )
-    est = ", ".join(
-        f"{k} = {val:.4g} ± {result.std_errors[k]:.2g}" for k, val in result.estimates.items()
-    )
-    fig.suptitle(
-        (f"{title}\n" if title else "")
-        + (est or "start states only")
-        + f"   (chi2/dof = {result.reduced_chi2:.3g})"
-    )
-    return fig
+    return draw(result, labels=labels, title=title)
