@@ -10,12 +10,12 @@ Initial states (:func:`simulate_many`, :func:`simulate_bodies`) are an (N, 6) ar
 (x, y, phi, vx, vy, omega), a sequence of :class:`~slidespin.State`, or a table (a pandas
 DataFrame, or a dict of columns) read by column *name* (:data:`STATE_COLUMNS`).
 
-Memory: no per-step data is kept. The cases run in chunks of at most :data:`CHUNK` through
+Memory: no per-step data is kept. The cases run in chunks of at most ``CHUNK`` through
 :func:`slidespin.motion._parallel.integrate_many` (``prange`` over the cases of a chunk), so
 besides the inputs only the results and a copy of the initial states are held for all N
 (122 bytes per case) and the working arrays for one chunk; each worker thread integrates in a
 fixed ~20 kB. When a progress bar is drawn the chunks are smaller, about 1 % of the batch
-(:func:`chunk_size`), so that it moves. The cases are independent: the chunking does not
+(``chunk_size``), so that it moves. The cases are independent: the chunking does not
 change any number.
 """
 
@@ -66,7 +66,7 @@ STATE_FIELDS = ("x", "y", "phi", "vx", "vy", "omega")
 #: column names of a table of initial states (a DataFrame or a dict of columns) → the
 #: quantity each gives: the :class:`~slidespin.State` fields, the sweep tables' names with a
 #: 0 (``x0``, ..., ``omega0``, ``v0``, ``theta0``), and ``speed``, ``theta`` of
-#: :meth:`State.from_speed`. Required: ``omega`` and the velocity, as ``vx`` and ``vy`` or
+#: ``State.from_speed``. Required: ``omega`` and the velocity, as ``vx`` and ``vy`` or
 #: as ``speed`` [m/s] and ``theta`` [rad]; ``x``, ``y``, ``phi`` default to 0.
 STATE_COLUMNS = {
     **{name: name for name in STATE_FIELDS},
@@ -83,7 +83,7 @@ INPUT_COLUMNS = tuple(name + "0" for name in STATE_FIELDS)
 
 #: most cases per call of the parallel engine (bounds the temporary arrays of a batch)
 CHUNK = 1 << 16
-#: fewest cases per call of the parallel engine in a large batch (:func:`chunk_size`)
+#: fewest cases per call of the parallel engine in a large batch (``chunk_size``)
 MIN_CHUNK = 4096
 
 _ENDING_CODE = {name: i for i, name in enumerate(ENDINGS)}
@@ -278,10 +278,10 @@ def _no_footprints(n):
 
 def chunk_size(n: int) -> int:
     """Cases per call of the parallel engine for a batch of ``n``: about 1 % of the batch (a
-    progress bar then moves in steps of 1 %), at least :data:`MIN_CHUNK` and at most
-    :data:`CHUNK` (the temporary arrays stay small).
+    progress bar then moves in steps of 1 %), at least ``MIN_CHUNK`` and at most
+    ``CHUNK`` (the temporary arrays stay small).
 
-    Used only while a progress bar is drawn (otherwise the chunks are :data:`CHUNK`). The
+    Used only while a progress bar is drawn (otherwise the chunks are ``CHUNK``). The
     floor keeps the chunking from slowing the batch measurably: a call of 4096 cases takes
     seconds (about a millisecond of CPU per case), against a fixed cost per call of the
     parallel engine of about 30 ms (measured on 2 cores, 2026-11) and an idle tail (each
@@ -295,7 +295,7 @@ def chunk_size(n: int) -> int:
 def _integrate_all(
     n, pars_of, a, g, st, rtol, max_steps, footprints_of=None, progress=False, desc="cases"
 ) -> StopResults:
-    """Integrate n cases in chunks of :func:`chunk_size` and convert to SI stop results.
+    """Integrate n cases in chunks of ``chunk_size`` and convert to SI stop results.
 
     ``pars_of(lo, hi)``: parameter rows of cases lo..hi (natural units); ``a``, ``g``: length
     unit (semi-axis or footprint extent) and gravity (arrays of length n, or scalars); ``st``:
@@ -602,7 +602,7 @@ def simulate_many(
         * a sequence of :class:`~slidespin.State`;
         * a table, a pandas DataFrame or a dict of 1-D columns, read by column *name*
           (:data:`STATE_COLUMNS`): ``omega`` [rad/s] and the velocity, as ``vx`` and
-          ``vy`` [m/s] or as ``speed`` [m/s] and ``theta`` [rad] (:meth:`State.from_speed`),
+          ``vy`` [m/s] or as ``speed`` [m/s] and ``theta`` [rad] (``State.from_speed``),
           are required; ``x``, ``y`` [m] and ``phi`` [rad] default to 0. The sweep tables'
           names with a 0 (``x0``, ..., ``omega0``, ``v0``, ``theta0``) are accepted too, so
           the inputs of :meth:`StopResults.to_pandas` can be passed back. Any other column
@@ -620,14 +620,14 @@ def simulate_many(
     progress : bool or None, default None
         Draw a progress bar on stderr (:func:`slidespin._progress.progress_bar`); None: only
         if stderr is a terminal. With a bar the cases run in chunks of about 1 % of the
-        batch (:func:`chunk_size`) so that it moves, at a cost of 1–2 % of the run time;
+        batch (``chunk_size``) so that it moves, at a cost of 1–2 % of the run time;
         the chunking changes no number.
 
     Returns
     -------
     StopResults
         Gives the same numbers as :func:`slidespin.simulate` case by case, and keeps the
-        initial states (:attr:`StopResults.initial_states`).
+        initial states (``StopResults.initial_states``).
     """
     if progress is not None and not isinstance(progress, (bool, np.bool_)):
         raise ValueError(

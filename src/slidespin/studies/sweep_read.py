@@ -25,7 +25,7 @@ __all__ = ["read_sweep", "to_pandas", "to_xarray", "split_unconverged"]
 def read_sweep(out, *, include_unconverged: bool = False, as_xarray: bool = False):
     """The results of a sweep directory as one table: column name → array, sorted by case.
 
-    With ``as_xarray=True``, a grid sweep is returned as an :class:`xarray.Dataset` on its grid
+    With ``as_xarray=True``, a grid sweep is returned as an ``xarray.Dataset`` on its grid
     instead (:func:`to_xarray`; needs the optional extra ``slidespin[xarray]``).
 
     Parameters
@@ -138,7 +138,7 @@ def split_unconverged(table: dict):
 
 
 def to_xarray(out, *, include_unconverged: bool = False):
-    """A grid sweep's results as an :class:`xarray.Dataset` on its grid.
+    """A grid sweep's results as an ``xarray.Dataset`` on its grid.
 
     The swept parameters (the spec's ``[vary]`` keys, in its order) are the dimensions, with
     the grid's values as coordinates (strings for ``law``, ``frame``, ...); every column of the
