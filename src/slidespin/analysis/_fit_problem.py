@@ -16,8 +16,9 @@ import numpy as np
 from slidespin import _validate as v
 from slidespin.analysis.fit_data import _PAIR, CHANNELS, START, trajectory_at
 from slidespin.contact.body import Body
-from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.friction import ANGLE_MAX, FrictionTensor
 from slidespin.contact.pressure import LinearPressure
+from slidespin.contact.shapes import Blade
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 
@@ -79,7 +80,14 @@ class _Problem:
             "moment_of_inertia": body.moment_of_inertia,
         }
         self.base = base
-        if body.is_footprint:
+        if isinstance(body.patch, Blade):
+            # a line contact takes the uniform line load only: G stays over its centre
+            # (xi_c, eta_c cannot be freed, _check_free refuses them without a linear law)
+            cx, cy = body.patch.centroid
+            xi_lo = xi_hi = cx
+            eta_lo = eta_hi = cy
+            typ_xi = typ_eta = a / 4.0
+        elif body.is_footprint:
             # G's range: the core of the footprint (p >= 0) along each axis through the
             # area centroid; objects() projects a point outside the core back onto it
             cx, cy = body.patch.centroid
@@ -110,7 +118,7 @@ class _Problem:
             "fx": c_lo,
             "fy": c_lo,
             "f": -skew,
-            "angle": -np.inf,
+            "angle": -ANGLE_MAX,
             "xi_c": xi_lo,
             "eta_c": eta_lo,
             "moment_of_inertia": 1e-4 * body.moment_of_inertia,
@@ -119,7 +127,7 @@ class _Problem:
             "fx": c_hi,
             "fy": c_hi,
             "f": skew,
-            "angle": np.inf,
+            "angle": ANGLE_MAX,
             "xi_c": xi_hi,
             "eta_c": eta_hi,
             "moment_of_inertia": 1e4 * body.moment_of_inertia,

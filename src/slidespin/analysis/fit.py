@@ -22,14 +22,15 @@ name                   meaning                                           bounds
 ``fx``, ``fy``         principal coefficients of 𝔽 (paper eq. 2)         > 0 (dissipative), within
                                                                          FrictionTensor's range
 ``f``                  skew coefficient of 𝔽                             FrictionTensor's range
-``angle``              angle of 𝔽's principal axes [rad]                 any
+``angle``              angle of 𝔽's principal axes [rad]                 [−2π, 2π], FrictionTensor's
 ``xi_c``, ``eta_c``    linear law's pressure centroid = G [m] (eq. 10)   |ξc| ≤ a/4, |ηc| ≤ b/4;
                                                                          a footprint: its core
 ``moment_of_inertia``  I about G [kg m²]                                 [1e-4, 1e4] × the guess
 =====================  ================================================  =========================
 
 The body may rest on an ellipse or on any footprint of :mod:`slidespin.contact.shapes` (uniform or
-linear pressure, MODEL §10). G of the linear law is kept in the core of the patch, where the
+linear pressure, MODEL §10), a ``Blade`` included (its uniform line load keeps G over its
+centre: ``xi_c``, ``eta_c`` are not free there). G of the linear law is kept in the core of the patch, where the
 pressure is ≥ 0: the ellipse's (ξc/a)² + (ηc/b)² ≤ 1/16, a footprint's core (for a rectangle
 the middle-third rhombus |ξc|/(L/6) + |ηc|/(W/6) ≤ 1); a trial G outside it is projected onto
 it towards the area centroid. On a footprint the length a below is its extent ℓ
@@ -192,11 +193,15 @@ def _check_free(free, body):
             )
     dup = sorted({p for p in free if free.count(p) > 1})
     if dup:
-        raise ValueError(f"free parameter {dup[0]!r} is given twice")
+        raise ValueError(
+            f"free parameter {dup[0]!r} is given twice; valid values: distinct names from "
+            f"{', '.join(PARAMETERS)}"
+        )
     if ("xi_c" in free or "eta_c" in free) and not isinstance(body.pressure, LinearPressure):
         raise ValueError(
             f"free parameters xi_c, eta_c need a body with LinearPressure; this body has "
-            f"{type(body.pressure).__name__}"
+            f"{type(body.pressure).__name__}; valid values: a body with LinearPressure(xi_c, "
+            "eta_c) (not on a Blade), or free parameters without xi_c, eta_c"
         )
     return free
 
@@ -354,7 +359,8 @@ def fit(
     if prob.n_obs <= n_par:
         raise ValueError(
             f"too few measured values: {prob.n_obs} for {n_par} fitted parameters "
-            f"({', '.join(prob.names)}); need more values than parameters"
+            f"({', '.join(prob.names)}); valid range: more measured values than fitted "
+            "parameters"
         )
     estimated = {c: c not in given for c in present}
     floor = {"x": 1e-10 * body.length_unit, "y": 1e-10 * body.length_unit, "phi": 1e-10}

@@ -37,7 +37,10 @@ def _channel(name, values, n, where):
     try:
         arr = np.asarray(values, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"{where}: column {name!r} must hold numbers") from None
+        raise ValueError(
+            f"{where}: column {name!r} must hold numbers; valid values: real numbers (NaN "
+            "marks a missing value)"
+        ) from None
     if arr.ndim != 1 or arr.shape[0] != n:
         raise ValueError(
             f"{where}: column {name!r} has shape {arr.shape}; valid: one value per time ({n})"
@@ -71,11 +74,16 @@ def _as_run(obj, where: str) -> dict:
         if k not in allowed:
             raise ValueError(f"{where}: unknown column {k!r}; valid columns: t, x, y, phi")
     if "t" not in names:
-        raise ValueError(f"{where}: the column 't' (time [s]) is missing")
+        raise ValueError(
+            f"{where}: the column 't' (time [s]) is missing; valid columns: t and any of x, y, phi"
+        )
     try:
         t = np.asarray(get("t"), dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"{where}: column 't' must hold numbers") from None
+        raise ValueError(
+            f"{where}: column 't' must hold numbers; valid values: finite, strictly "
+            "increasing times [s]"
+        ) from None
     if t.ndim != 1 or t.size == 0:
         raise ValueError(f"{where}: column 't' has shape {t.shape}; valid: a 1-D array of times")
     bad = np.flatnonzero(~np.isfinite(t))
@@ -93,7 +101,9 @@ def _as_run(obj, where: str) -> dict:
         if c in names:
             run[c] = _channel(c, get(c), t.size, where)
     if not any(np.isfinite(run[c]).any() for c in CHANNELS if c in run):
-        raise ValueError(f"{where}: no measured value; give at least one of x, y, phi")
+        raise ValueError(
+            f"{where}: no measured value; valid values: at least one finite value of x, y or phi"
+        )
     return run
 
 
@@ -162,11 +172,17 @@ def read_runs(path, *, labels: bool = False):
     try:
         text = raw.decode("utf-8-sig")
     except UnicodeDecodeError:
-        raise ValueError(f"data file {name!r} is not a UTF-8 text (CSV) file") from None
+        raise ValueError(
+            f"data file {name!r} is not a UTF-8 text (CSV) file; valid values: a UTF-8 CSV "
+            "file with a header line t,x,y,phi[,run]"
+        ) from None
     try:
         rows = list(csv.reader(io.StringIO(text, newline="")))
     except csv.Error as exc:
-        raise ValueError(f"data file {name!r} cannot be read: {exc}") from None
+        raise ValueError(
+            f"data file {name!r} cannot be read: {exc}; valid values: a CSV file with a "
+            "header line t,x,y,phi[,run]"
+        ) from None
     lines = [(i + 1, r) for i, r in enumerate(rows) if r and any(cell.strip() for cell in r)]
     if not lines:
         raise ValueError(f"{name}: the file is empty; valid: a header line t,x,y,phi[,run]")
@@ -180,36 +196,57 @@ def read_runs(path, *, labels: bool = False):
             )
     dup = sorted({c for c in cols if cols.count(c) > 1})
     if dup:
-        raise ValueError(f"{name}: line {head_line}: column {dup[0]!r} appears twice")
+        raise ValueError(
+            f"{name}: line {head_line}: column {dup[0]!r} appears twice; valid values: each "
+            "of t, x, y, phi, run at most once"
+        )
     if "t" not in cols:
-        raise ValueError(f"{name}: line {head_line}: the column 't' (time [s]) is missing")
+        raise ValueError(
+            f"{name}: line {head_line}: the column 't' (time [s]) is missing; valid "
+            "columns: t and any of x, y, phi (and run)"
+        )
     if not set(cols) & set(CHANNELS):
-        raise ValueError(f"{name}: line {head_line}: no column x, y or phi")
+        raise ValueError(
+            f"{name}: line {head_line}: no column x, y or phi; valid columns: t and at least "
+            "one of x, y, phi (and run)"
+        )
     if len(lines) == 1:
-        raise ValueError(f"{name}: no data rows after the header")
+        raise ValueError(
+            f"{name}: no data rows after the header; valid values: at least one row of numbers"
+        )
     runs: dict[str, dict[str, list]] = {}
     for line, r in lines[1:]:
         if len(r) != len(cols):
-            raise ValueError(f"{name}: line {line} has {len(r)} fields; the header has {len(cols)}")
+            raise ValueError(
+                f"{name}: line {line} has {len(r)} fields; valid values: {len(cols)} fields, "
+                "one per column of the header"
+            )
         label = "0"
         vals = {}
         for c, cell in zip(cols, r):
             cell = cell.strip()
             if c == "run":
                 if not cell:
-                    raise ValueError(f"{name}: line {line}, column 'run': empty run label")
+                    raise ValueError(
+                        f"{name}: line {line}, column 'run': empty run label; valid values: "
+                        "a non-empty label"
+                    )
                 label = cell
                 continue
             if cell == "" or cell.lower() == "nan":
                 if c == "t":
-                    raise ValueError(f"{name}: line {line}, column 't': missing time")
+                    raise ValueError(
+                        f"{name}: line {line}, column 't': missing time; valid values: a "
+                        "finite time [s] on every line"
+                    )
                 vals[c] = math.nan
                 continue
             try:
                 x = float(cell)
             except ValueError:
                 raise ValueError(
-                    f"{name}: line {line}, column {c!r}: {cell!r} is not a number"
+                    f"{name}: line {line}, column {c!r}: {cell!r} is not a number; valid "
+                    "values: a finite number, or an empty cell for a missing value"
                 ) from None
             if not math.isfinite(x):
                 raise ValueError(
@@ -221,7 +258,8 @@ def read_runs(path, *, labels: bool = False):
         if run["t"] and vals["t"] <= run["t"][-1]:
             raise ValueError(
                 f"{name}: line {line}, column 't': {vals['t']!r} does not increase (previous "
-                f"time of run {label!r}: {run['t'][-1]!r})"
+                f"time of run {label!r}: {run['t'][-1]!r}); valid values: strictly increasing "
+                "times within a run"
             )
         run["line"].append(line)
         for c, x in vals.items():
@@ -232,7 +270,7 @@ def read_runs(path, *, labels: bool = False):
         if not any(np.isfinite(d[c]).any() for c in CHANNELS if c in d):
             raise ValueError(
                 f"{name}: run {label!r} (lines {run['line'][0]}-{run['line'][-1]}) has no "
-                "measured x, y or phi"
+                "measured x, y or phi; valid values: at least one finite value per run"
             )
         out.append(d)
     return (out, list(runs)) if labels else out

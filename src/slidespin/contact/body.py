@@ -22,7 +22,7 @@ and the natural units of the integrator.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -53,6 +53,8 @@ from slidespin.contact.pressure_map import mass_centre as pressure_centroid
 __all__ = ["Body", "check_body_friction"]
 
 _LAWS = (UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure)
+#: how many friction tensors' :meth:`Body.engine_params` a body keeps (oldest dropped first)
+ENGINE_CACHE = 8
 
 
 @dataclass(frozen=True, slots=True)
@@ -64,13 +66,17 @@ class Body:
     patch : Ellipse or a footprint
         The contact patch: an ellipse (the paper's), or a footprint of
         :mod:`slidespin.contact.shapes` (``Polygon``, ``Rectangle``, ``Disk``, ``Annulus``,
-        ``Pads``, ``Blade``; MODEL §10). A ``Blade`` works with :func:`slidespin.friction_wrench`
-        only: the integrating functions refuse it (``docs/guide/patches.md``).
+        ``Pads``, ``Blade``; MODEL §10). Every patch, a ``Blade`` (a line contact) included,
+        works with every feature: :func:`slidespin.friction_wrench`, :func:`slidespin.simulate`
+        (also under loads and on slopes, with static friction), ``simulate_many``, the
+        terminal analysis, the statics (:func:`slidespin.can_stick`, ``load_factor``,
+        ``onset``, ``critical_tilt``), the limit surface and ``fit``, for any friction tensor.
     pressure : UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure or PressureMap
         Normal-pressure law on the patch. The mass centre G lies above the pressure
         centroid: the patch centre (the area centroid of a footprint), or (ξc, ηc) for the
-        linear law. Footprints take the uniform and linear laws (the linear law must stay
-        ≥ 0 on the footprint); a ``Disk`` also takes ``BoussinesqPressure()`` and
+        linear law. Area footprints take the uniform and linear laws (the linear law must
+        stay ≥ 0 on the footprint), a ``Blade`` ``UniformPressure()`` only (a uniform line
+        load, G over its centre); a ``Disk`` also takes ``BoussinesqPressure()`` and
         ``HertzPressure()`` (G at the disk's centre; the body is then the circle of that
         radius, run by the elliptic engine: :attr:`is_footprint` is False); a user
         ``PressureMap`` on an area footprint (G at its centroid) works with
@@ -104,6 +110,8 @@ class Body:
     pressure: PressureLaw
     mass: float
     moment_of_inertia: float | None = None
+    # engine_params per friction tensor (the object is immutable; see engine_params)
+    _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         patch = self.patch
@@ -162,6 +170,15 @@ class Body:
                     f"{hi * m * a * a:.6g}] kg m^2"
                 )
         object.__setattr__(self, "moment_of_inertia", inertia)
+
+    def __getstate__(self):
+        """The fields, without the engine-parameter cache (a pickled body stays small)."""
+        return (self.patch, self.pressure, self.mass, self.moment_of_inertia)
+
+    def __setstate__(self, state) -> None:
+        for name, value in zip(("patch", "pressure", "mass", "moment_of_inertia"), state):
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "_cache", None)
 
     @classmethod
     def from_inertia_ratio(cls, patch, pressure, mass: float, inertia_ratio: float) -> Body:
@@ -225,9 +242,10 @@ class Body:
         if self.is_footprint:
             raise ValueError(
                 f"patch = {self.patch!r} is a footprint; this function supports elliptic "
-                "patches only (an Ellipse, or a Disk under Boussinesq or Hertz pressure). "
-                "Footprints work with simulate, simulate_many, "
-                "friction_wrench, terminal_states and terminal_ratio"
+                "patches only (an Ellipse, or a Disk under Boussinesq or Hertz pressure); "
+                "valid here: such a patch. Footprints (a Blade too) work with every public "
+                "function (simulate, also loaded, simulate_many, friction_wrench, the terminal "
+                "analysis, the statics, limit_surface, fit); engine_params gives their arrays"
             )
         return self.engine_params(friction, wrench_tol)[0]
 
@@ -240,7 +258,33 @@ class Body:
         :func:`~slidespin.contact.pressure_map.kernel_geometry` in units of ℓ, unit load, and
         ``par`` carries the shape flag and the symmetry flags of
         :func:`slidespin.contact.pressure_map.symmetry` (MODEL §9–10).
+
+        Computed once per friction tensor (its fx, fy, f, frame and angle) and
+        ``wrench_tol``, and kept on the body (the last :data:`ENGINE_CACHE` of them): every
+        call returns fresh copies, which the caller may change without touching the cache.
         """
+        if not isinstance(friction, FrictionTensor):
+            raise ValueError(
+                f"friction = {v._short(friction)} is invalid; valid values: a FrictionTensor"
+            )
+        tol = v.finite("wrench_tol", wrench_tol)
+        key = (friction.fx, friction.fy, friction.f, friction.frame, friction.angle, tol)
+        cache = self._cache
+        if cache is None:
+            cache = {}
+            object.__setattr__(self, "_cache", cache)
+        got = cache.get(key)
+        if got is None:
+            got = self._engine_params(friction, tol)
+            for arr in got:
+                arr.flags.writeable = False  # the cached copy is never handed out
+            while len(cache) >= ENGINE_CACHE:
+                cache.pop(next(iter(cache)))
+            cache[key] = got
+        return tuple(arr.copy() for arr in got)
+
+    def _engine_params(self, friction: FrictionTensor, wrench_tol: float):
+        """:meth:`engine_params`, computed."""
         if isinstance(self.pressure, PressureMap):
             raise ValueError(
                 f"pressure = {self.pressure!r} works with friction_wrench only (an adaptive "

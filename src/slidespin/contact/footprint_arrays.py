@@ -29,7 +29,7 @@ import numpy as np
 
 from slidespin import _validate as v
 
-__all__ = ["FootprintArrays"]
+__all__ = ["FootprintArrays", "linear_load"]
 
 
 class FootprintArrays(NamedTuple):
@@ -131,15 +131,50 @@ def _moments(edges: np.ndarray, circles: np.ndarray):
     sxx = (cr * (x0 * x0 + x0 * x1 + x1 * x1)).sum() / 12.0
     syy = (cr * (y0 * y0 + y0 * y1 + y1 * y1)).sum() / 12.0
     sxy = (cr * (x0 * y1 + 2.0 * x0 * y0 + 2.0 * x1 * y1 + x1 * y0)).sum() / 24.0
-    for ox, oy, r, sg in circles:
-        ar = sg * math.pi * r * r
+    for ox, oy, big, small in _rings(circles):
+        # a disk (small = 0), or a ring: π (R − r)(R + r), without the cancellation of
+        # π R² − π r² for a thin ring (a disk with its hole in the next row)
+        ar = math.pi * (big - small) * (big + small)
+        quarter = 0.25 * (big * big + small * small)  # ∫(ξ − ξ_o)² dS / area
         a += ar
         sx += ar * ox
         sy += ar * oy
-        sxx += ar * (ox * ox + 0.25 * r * r)
-        syy += ar * (oy * oy + 0.25 * r * r)
+        sxx += ar * (ox * ox + quarter)
+        syy += ar * (oy * oy + quarter)
         sxy += ar * ox * oy
     return float(a), float(sx), float(sy), float(sxx), float(sxy), float(syy)
+
+
+def linear_load(arrays: FootprintArrays, p0: float, p1: float, p2: float) -> float:
+    """∫(p₀ + p₁ξ + p₂η) dS over the footprint of ``arrays`` (exact: shoelace and disk
+    formulas), taken about the mean of its points so that a footprint far from the origin
+    loses no digits. The kernel normalises its pressure by this load of the very arrays it
+    integrates (a thin ring's width in units of its radius carries ~1e-16 R/(R − r) of
+    rounding: the load must be that of the rounded ring)."""
+    e, c = arrays.edges, arrays.circles
+    pts = np.vstack((e[:, :2], c[:, :2]))
+    sx, sy = pts.mean(axis=0)
+    a, mx, my, *_ = _moments(e - np.array([sx, sy, sx, sy]), c - np.array([sx, sy, 0.0, 0.0]))
+    return float((p0 + p1 * sx + p2 * sy) * a + p1 * mx + p2 * my)
+
+
+def _rings(circles: np.ndarray):
+    """(ξ_o, η_o, R, r) per disk (r = 0) or ring R ≥ ρ ≥ r (a disk and its hole: the next row,
+    same centre, sign −1); a lone hole of radius r (sign −1) is (ξ_o, η_o, 0, r)."""
+    rows = []
+    i, n = 0, len(circles)
+    while i < n:
+        ox, oy, r, sg = (float(x) for x in circles[i])
+        nxt = circles[i + 1] if i + 1 < n else None
+        if sg < 0.0:
+            rows.append((ox, oy, 0.0, r))
+        elif nxt is not None and nxt[3] < 0.0 and nxt[0] == ox and nxt[1] == oy:
+            rows.append((ox, oy, r, float(nxt[2])))
+            i += 1
+        else:
+            rows.append((ox, oy, r, 0.0))
+        i += 1
+    return rows
 
 
 def _frame(edges: np.ndarray, circles: np.ndarray) -> np.ndarray:

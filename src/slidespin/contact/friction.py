@@ -27,6 +27,8 @@ __all__ = ["FrictionTensor", "FRAMES"]
 
 #: the frames a :class:`FrictionTensor` may be fixed to: the plane (the paper) or the body
 FRAMES = ("plane", "body")
+#: largest |angle| [rad] of the principal axes: 2π (a larger number is almost surely degrees)
+ANGLE_MAX = 2.0 * math.pi * (1.0 + 1e-15)
 
 
 def _rot(angle: float) -> NDArray[np.float64]:
@@ -49,11 +51,12 @@ class FrictionTensor:
         Whether the tensor is fixed to the plane (as in the paper) or turns with the body.
     angle : float, default 0
         Angle [rad] of the principal axes from OX (plane frame) or from the body axis Cξ
-        (body frame), any finite value.
+        (body frame), in [−2π, 2π] (the axes repeat every π; a larger number is refused
+        as a likely angle in degrees: give ``angle_deg`` then).
     angle_deg : float, optional (keyword)
-        The same angle in degrees (the ``angle_deg`` key of case files); give ``angle`` or
-        ``angle_deg``, not both. Stored as ``angle`` [rad]; ``tensor.angle_deg`` reads it
-        back in degrees.
+        The same angle in degrees, in [−360, 360] (the ``angle_deg`` key of case files);
+        give exactly one of ``angle`` and ``angle_deg``. Stored as ``angle`` [rad];
+        ``tensor.angle_deg`` reads it back in degrees.
 
     Notes
     -----
@@ -85,12 +88,18 @@ class FrictionTensor:
         object.__setattr__(self, "f", v.symmetric("f", f, v.SKEW))
         object.__setattr__(self, "frame", v.choice("frame", self.frame, FRAMES))
         angle = v.finite("angle", self.angle)
+        if not abs(angle) <= ANGLE_MAX:
+            raise ValueError(
+                f"angle = {angle!r} rad is invalid; valid range: [-{ANGLE_MAX:.6g}, "
+                f"{ANGLE_MAX:.6g}] rad (|angle| <= 2π; the axes repeat every π); degrees? "
+                f"give angle_deg={angle!r}"
+            )
         if angle_deg is not None:
-            deg = v.finite("angle_deg", angle_deg)
-            if angle != 0.0 and angle != math.radians(deg):
+            deg = v.bounded("angle_deg", angle_deg, -360.0, 360.0, "deg")
+            if angle != 0.0 and not math.isclose(angle, math.radians(deg), rel_tol=1e-12):
                 raise ValueError(
-                    f"FrictionTensor gives both angle = {angle!r} rad and angle_deg = {deg!r}; "
-                    "valid values: one of them"
+                    f"FrictionTensor gives both angle = {angle!r} rad and angle_deg = {deg!r} "
+                    "deg; valid values: exactly one of them (angle in rad or angle_deg in deg)"
                 )
             angle = math.radians(deg)
         object.__setattr__(self, "angle", angle)

@@ -117,7 +117,8 @@ class Incline:
         if callable(self.angle):
             raise ValueError(
                 f"incline = {self!r} has a tilt that varies in time, so it has no single "
-                f"{what}; use {what}_at(t), or Incline(incline.angle_at(t)) for the plane at t"
+                f"{what}; valid here: a fixed tilt (use {what}_at(t), or "
+                "Incline(incline.angle_at(t)) for the plane at t)"
             )
         return self.angle
 

@@ -233,12 +233,17 @@ class LimitSurface:
     def plot(self, ax=None):
         """3-D figure: the sampled wrenches (coloured by ω) and the fitted ellipsoid.
 
+        At most 5 ticks per axis (a long thin patch has a narrow force range and a wide
+        moment range, whose default ticks crowd), the axis labels pushed clear of the tick
+        labels, and the colour bar set apart to the right so that it hides no label.
+
         Returns the matplotlib ``Axes3D``.
         """
         import matplotlib.pyplot as plt  # lazy: matplotlib is slow to import, needed only to draw
+        from matplotlib.ticker import MaxNLocator
 
         if ax is None:
-            fig = plt.figure(figsize=(6.4, 5.6))
+            fig = plt.figure(figsize=(7.4, 5.8))
             ax = fig.add_subplot(projection="3d")
         w = self.wrenches
         sc = ax.scatter(
@@ -257,15 +262,20 @@ class LimitSurface:
             sph = np.stack((np.cos(uu) * np.sin(vv), np.sin(uu) * np.sin(vv), np.cos(vv)))
             pts = np.einsum("ij,jkl->ikl", vecs @ np.diag(1.0 / np.sqrt(vals)), sph)
             ax.plot_wireframe(pts[0], pts[1], pts[2], color="0.6", linewidth=0.4)
-        ax.set_xlabel("$F_x/P$")
-        ax.set_ylabel("$F_y/P$")
-        ax.set_zlabel(f"$M/(P\\ell)$, ℓ = {self.length:g} m")
+        for axis in (ax.xaxis, ax.yaxis, ax.zaxis):
+            axis.set_major_locator(MaxNLocator(nbins=4, min_n_ticks=3))
+        ax.tick_params(labelsize=8, pad=1)
+        ax.set_xlabel("$F_x/P$", labelpad=6)
+        ax.set_ylabel("$F_y/P$", labelpad=6)
+        ax.set_zlabel("$M/(P\\ell)$", labelpad=6)
         ax.set_title(
-            f"limit surface (ellipsoid error {self.ellipsoid_error:.2%}, "
-            f"quartic {self.quartic_error:.2%})",
+            f"limit surface, ℓ = {self.length:.4g} m\n(ellipsoid error "
+            f"{self.ellipsoid_error:.2%}, quartic {self.quartic_error:.2%})",
             fontsize=9,
         )
-        ax.figure.colorbar(sc, ax=ax, shrink=0.6, label="ℓω of the twist")
+        # the colour bar well to the right of the 3-D box: a 3-D axes' z label sits outside
+        # its box, where a colour bar at the default pad would cover it
+        ax.figure.colorbar(sc, ax=ax, shrink=0.55, pad=0.14, label="ℓω of the twist")
         return ax
 
 

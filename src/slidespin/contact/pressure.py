@@ -102,7 +102,8 @@ class _Law:
             xi, eta = np.broadcast_arrays(xi, eta)
         except ValueError:
             raise ValueError(
-                f"xi, eta have shapes {xi.shape}, {eta.shape} that do not broadcast together"
+                f"xi, eta have shapes {xi.shape}, {eta.shape} that do not broadcast together; "
+                "valid values: arrays of one shape (or a scalar and an array)"
             ) from None
         with np.errstate(over="ignore"):  # far outside: q = inf, p = 0
             q = (xi / patch.a) ** 2 + (eta / patch.b) ** 2

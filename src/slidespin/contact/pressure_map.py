@@ -34,7 +34,7 @@ import numpy as np
 from slidespin import _validate as v
 from slidespin.contact._kernel_footprint import NGEO
 from slidespin.contact.ellipse import Ellipse
-from slidespin.contact.footprint_arrays import FootprintArrays
+from slidespin.contact.footprint_arrays import FootprintArrays, linear_load
 from slidespin.contact.pressure import (
     BoussinesqPressure,
     HertzPressure,
@@ -184,7 +184,40 @@ class PressureMap:
         return cls(_GridMap(x, y, z))
 
     def __call__(self, xi, eta):
-        return np.asarray(self.function(xi, eta), dtype=float)
+        """The raw map at body-frame points: ``xi``, ``eta`` broadcast to one shape, and the
+        function's values, a float array of that shape (a ``ValueError`` otherwise)."""
+        xi, eta = _points(xi, eta)
+        raw = self.function(xi, eta)
+        try:
+            f = np.asarray(raw, dtype=float)
+        except (TypeError, ValueError):
+            f = None
+        if f is None or f.shape != xi.shape:
+            if f is None or not isinstance(raw, np.ndarray):
+                got = f"{v._short(raw)} ({type(raw).__name__})"
+            else:
+                got = f"an array of shape {f.shape}"
+            raise ValueError(
+                f"pressure map: function(xi, eta) returned {got} for inputs of shape "
+                f"{xi.shape}; valid values: an array of real numbers of the inputs' shape "
+                "(e.g. 1.0 + 0.0 * xi for a constant map)"
+            )
+        return f
+
+
+def _points(xi, eta) -> tuple[np.ndarray, np.ndarray]:
+    """``xi``, ``eta`` as float arrays of one (broadcast) shape, or a ``ValueError`` naming
+    them."""
+    xi = v.real_array("xi", xi, unit="m")
+    eta = v.real_array("eta", eta, unit="m")
+    try:
+        xi, eta = np.broadcast_arrays(xi, eta)
+    except ValueError:
+        raise ValueError(
+            f"xi has shape {xi.shape} and eta has shape {eta.shape}, which do not broadcast "
+            "together; valid values: arrays of one shape (or a scalar and an array)"
+        ) from None
+    return xi, eta
 
 
 # ---------------------------------------------------------------------------------------------
@@ -292,12 +325,7 @@ MAP_CHECK_NODES = 16
 def _map_values(pmap: PressureMap, pts: np.ndarray) -> np.ndarray:
     """The raw map at the nodes ``pts``; a ``ValueError`` for a wrong shape, non-finite or
     negative values."""
-    f = pmap(pts[:, 0], pts[:, 1])
-    if f.shape != (len(pts),):
-        raise ValueError(
-            "pressure map: function(xi, eta) must return an array of the shape of its "
-            f"inputs; got shape {f.shape} for inputs of shape ({len(pts)},)"
-        )
+    f = pmap(pts[:, 0], pts[:, 1])  # its shape is checked by PressureMap.__call__
     if not np.all(np.isfinite(f)):
         k = int(np.flatnonzero(~np.isfinite(f))[0])
         raise ValueError(
@@ -465,8 +493,7 @@ def density(footprint, pressure, xi, eta, load: float = 1.0) -> np.ndarray:
     Uniform, linear and map laws on any footprint; Boussinesq and Hertz on a single Disk
     (the circle's law of MODEL §3 about the disk's centre)."""
     load = v.positive("load", load, "N")
-    xi = np.asarray(xi, dtype=float)
-    eta = np.asarray(eta, dtype=float)
+    xi, eta = _points(xi, eta)
     _check_footprint(footprint)
     if _round_disk(footprint, pressure):
         cx, cy = footprint.centre
@@ -509,6 +536,10 @@ def kernel_geometry(
     geo[0:3] = arrays.frame / length
     geo[3] = p0 * length**2  # pressure per unit load and unit area (area in length²)
     geo[4:6] = (p1 * length**3, p2 * length**3)
+    if not isinstance(footprint, Blade):
+        # the load of the arrays the kernel reads (scaled: rounded) is exactly 1; a thin
+        # ring's width in units of ℓ carries a rounding of ~1e-16 ℓ/(R − r) (MODEL §10)
+        geo[3:6] /= linear_load(scaled_arrays(arrays, length), *geo[3:6])
     geo[6:8] = (xg / length, yg / length)
     geo[8:10] = geo[6:8]  # G is the pressure centroid
     geo[10] = 1.0

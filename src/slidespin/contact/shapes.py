@@ -73,15 +73,43 @@ __all__ = [
 
 
 def _point(name: str, value) -> tuple[float, float]:
+    """A pair of finite real numbers; a string or bytes (whose items are characters or
+    character codes, not coordinates) is refused like any other non-pair."""
+    bad = f"{name} = {v._short(value)} is invalid; valid values: a pair (xi, eta) of real numbers in m"
+    if isinstance(value, (str, bytes, bytearray, memoryview)):
+        raise ValueError(bad)
     try:
         seq = tuple(value)
     except TypeError:
-        raise ValueError(
-            f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m"
-        ) from None
+        raise ValueError(bad) from None
     if len(seq) != 2:
-        raise ValueError(f"{name} = {value!r} is invalid; valid values: a pair (xi, eta) in m")
-    return (v.finite(f"{name}[0]", seq[0]), v.finite(f"{name}[1]", seq[1]))
+        raise ValueError(bad)
+    out = []
+    for i, x in enumerate(seq):
+        try:
+            out.append(v.finite(f"{name}[{i}]", x))
+        except ValueError:
+            raise ValueError(
+                f"{name}[{i}] = {v._short(x)} ({type(x).__name__}) is invalid; valid values: "
+                "a finite real number (a coordinate in m; not a bool or a string)"
+            ) from None
+    return (out[0], out[1])
+
+
+#: valid range of ``n``, the number of points of a curved outline (:meth:`Annulus.outlines`)
+OUTLINE_POINTS = (2, 1_000_000)
+
+
+def _outline_points(n) -> int:
+    """``n`` of the ``outlines`` methods, an integer in OUTLINE_POINTS (checked for every
+    patch, also those whose outline is exact and do not use it)."""
+    lo, hi = OUTLINE_POINTS
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or not lo <= n <= hi:
+        raise ValueError(
+            f"n = {v._short(n)} is invalid; valid range: an integer in [{lo}, {hi}] (points "
+            "per curved outline)"
+        )
+    return int(n)
 
 
 #: largest length/width of a rectangle (and (2R)²/area of a polygon, R the largest distance
@@ -103,6 +131,16 @@ MAX_VERTICES = 20_000
 #: vertices' mean): a polygon drawn within LENGTH may be a few times smaller than its
 #: bounding dimension; its r⁴ moments stay far from under- and overflow
 POLYGON_SIZE = (1e-10, 1e6)
+
+
+def _closes(pts: list[tuple[float, float]]) -> bool:
+    """The last vertex repeats the first (to 1e-14 of the outline's size, the tolerance of
+    the repeated-vertex check): a closed outline."""
+    arr = np.array(pts)
+    with np.errstate(all="ignore"):
+        scale = float(np.max(np.abs(arr - arr.mean(axis=0))))
+    gap = math.hypot(pts[-1][0] - pts[0][0], pts[-1][1] - pts[0][1])
+    return gap <= 1e-14 * scale
 
 
 def _length(name: str, value) -> float:
@@ -140,7 +178,9 @@ class Polygon(_Patch):
     vertices : sequence of (float, float)
         At least 3 and at most :data:`MAX_VERTICES` = 20,000 vertices (ξ, η) [m] in the
         polygon's own frame, in order around the boundary (clockwise or counter-clockwise; the
-        closing edge is implied).
+        closing edge is implied). A closed outline, whose last vertex repeats the first, is
+        accepted: the repeat is dropped. Each vertex is a pair of real numbers (a string,
+        bytes or a bool is refused).
     centre : (float, float), default (0, 0)
         Where the polygon's own origin lies in the body frame [m].
     angle : float, default 0
@@ -149,8 +189,8 @@ class Polygon(_Patch):
     Raises
     ------
     ValueError
-        Fewer than 3 vertices, a non-finite coordinate, a repeated vertex, a
-        self-intersecting boundary or zero area; a size 2R outside [1e-10, 1e6] m (R: largest
+        Fewer than 3 vertices, a vertex that is not a pair of real numbers, a non-finite
+        coordinate, a repeated vertex, a self-intersecting boundary or zero area; a size 2R outside [1e-10, 1e6] m (R: largest
         distance of a vertex from the vertices' mean); (2R)²/area above 1e3 + 1e-3 (too
         thin); vertices or centre farther than min(1e6 m, 1e6 R) from the origin.
 
@@ -166,24 +206,35 @@ class Polygon(_Patch):
     _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
+        seq = self.vertices
+        if isinstance(seq, (str, bytes, bytearray, memoryview)):
+            seq = None  # characters are not vertices
         try:
-            raw = [tuple(p) for p in self.vertices]
+            raw = list(seq)  # type: ignore[arg-type]
         except TypeError:
             raise ValueError(
-                f"vertices = {self.vertices!r} is invalid; valid values: a sequence of at "
-                "least 3 pairs (xi, eta) in m"
+                f"vertices = {v._short(self.vertices)} is invalid; valid values: a sequence of "
+                "at least 3 pairs (xi, eta) of real numbers in m"
             ) from None
-        if len(raw) < 3:
-            raise ValueError(
-                f"vertices has {len(raw)} point(s); valid range: at least 3 pairs (xi, eta) in m"
-            )
-        if len(raw) > MAX_VERTICES:
+        if len(raw) > MAX_VERTICES + 1:  # (+1: a closed outline repeats its first vertex)
             raise ValueError(
                 f"vertices has {len(raw)} points; valid range: at most MAX_VERTICES = "
                 f"{MAX_VERTICES} (the wrench costs ~70 ns per edge; simplify the outline)"
             )
-        pts = tuple(_point(f"vertices[{i}]", p) for i, p in enumerate(raw))
-        object.__setattr__(self, "vertices", pts)
+        pts = [_point(f"vertices[{i}]", p) for i, p in enumerate(raw)]
+        if len(pts) >= 3 and _closes(pts):
+            pts.pop()  # a closed outline: its last vertex repeats the first
+        if len(pts) < 3:
+            raise ValueError(
+                f"vertices has {len(pts)} distinct point(s); valid range: at least 3 pairs "
+                "(xi, eta) in m"
+            )
+        if len(pts) > MAX_VERTICES:
+            raise ValueError(
+                f"vertices has {len(pts)} points; valid range: at most MAX_VERTICES = "
+                f"{MAX_VERTICES} (the wrench costs ~70 ns per edge; simplify the outline)"
+            )
+        object.__setattr__(self, "vertices", tuple(pts))
         _placement(self)
         arr = np.array(pts)
         with np.errstate(all="ignore"):  # coordinates near 1e308: an inf or nan size, refused
@@ -228,7 +279,9 @@ class Polygon(_Patch):
         return np.vstack((p, p[:1]))
 
     def outlines(self, n: int = 181) -> list[np.ndarray]:
-        """Closed outlines in the body frame [m] (one here; ``n`` is unused)."""
+        """Closed outlines in the body frame [m] (one here, exact; ``n``, an integer in
+        [2, 1e6], is checked but not needed)."""
+        _outline_points(n)
         return [self.outline()]
 
     def triangles(self) -> np.ndarray:
@@ -296,7 +349,9 @@ class Rectangle(_Patch):
         return self.as_polygon().outline()
 
     def outlines(self, n: int = 181) -> list[np.ndarray]:
-        """Closed outlines in the body frame [m]."""
+        """Closed outlines in the body frame [m] (one, exact; ``n``, an integer in [2, 1e6],
+        is checked but not needed)."""
+        _outline_points(n)
         return [self.outline()]
 
     def triangles(self) -> np.ndarray:
@@ -357,9 +412,7 @@ class Annulus(_Patch):
     def outlines(self, n: int = 181) -> list[np.ndarray]:
         """The outer circle and (if any) the hole, closed, in the body frame [m]; ``n`` points
         each, an integer in [2, 1e6]."""
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 2 <= n <= 10**6:
-            raise ValueError(f"n = {v._short(n)} is invalid; valid range: integer in [2, 1000000]")
-        t = np.linspace(0.0, 2.0 * np.pi, n)
+        t = np.linspace(0.0, 2.0 * np.pi, _outline_points(n))
         cx, cy = self.centre
         out = [
             np.column_stack(
@@ -455,15 +508,19 @@ def _overlap(a, b) -> bool:
     return poly_overlap(_polygon_points(a), _polygon_points(b))
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(frozen=True, slots=True, init=False)
 class Pads(_Patch):
     """A body resting on several separate patches (feet, runners, pads).
 
+    ``Pads(p1, p2, ...)``, ``Pads([p1, p2, ...])`` and ``Pads(patches=[p1, p2, ...])`` are
+    the same.
+
     Parameters
     ----------
-    patches : sequence of Polygon, Rectangle, Disk, Annulus or Pads
+    *patches : Polygon, Rectangle, Disk, Annulus or Pads, or one sequence of them
         At least one patch, each placed in the body frame by its own ``centre``/``angle``;
         nested ``Pads`` are flattened. Their interiors must be disjoint (touching is allowed).
+        The keyword ``patches=`` takes the sequence instead.
 
     Raises
     ------
@@ -477,18 +534,48 @@ class Pads(_Patch):
     ...                 Rectangle(0.8, 0.02, centre=(0, 0.2))])
     >>> round(runners.area, 6)
     0.032
+    >>> feet = Pads(Disk(0.01, centre=(0.0, 0.1)), Disk(0.01, centre=(0.0, -0.1)))
+    >>> round(feet.area / (2 * math.pi * 0.01**2), 12)
+    1.0
     """
 
     patches: tuple = field(default_factory=tuple)
     _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
-    def __post_init__(self) -> None:
-        try:
-            items = list(self.patches)
-        except TypeError:
+    def __init__(self, *args, patches=None) -> None:
+        if patches is not None and args:
             raise ValueError(
-                f"patches = {self.patches!r} is invalid; valid values: a sequence of patches"
-            ) from None
+                f"Pads got {len(args)} positional argument(s) and patches = "
+                f"{v._short(patches)}; valid values: the patches either positionally, "
+                "Pads(p1, p2, ...), or as one sequence, Pads([p1, p2, ...]) or "
+                "Pads(patches=[p1, p2, ...])"
+            )
+        if patches is None:
+            # one sequence (the list form), or the patches themselves
+            one = (
+                len(args) == 1
+                and hasattr(args[0], "__iter__")
+                and not isinstance(args[0], (_Patch, Blade, str, bytes, bytearray))
+            )
+            patches = args[0] if one else args
+        object.__setattr__(self, "patches", patches)
+        object.__setattr__(self, "_cache", None)
+        self.__post_init__()
+
+    def __post_init__(self) -> None:
+        if isinstance(self.patches, (str, bytes, bytearray)):
+            items = None
+        else:
+            try:
+                items = list(self.patches)
+            except TypeError:
+                items = None
+        if items is None:
+            raise ValueError(
+                f"patches = {v._short(self.patches)} is invalid; valid values: patches "
+                "(Polygon, Rectangle, Disk, Annulus or Pads), as Pads(p1, p2, ...) or "
+                "Pads([p1, p2, ...])"
+            )
         flat: list[Polygon | Rectangle | Annulus] = []
         for i, p in enumerate(items):
             if isinstance(p, Pads):
@@ -507,7 +594,7 @@ class Pads(_Patch):
                     "Annulus or Pads"
                 )
         if not flat:
-            raise ValueError("patches is empty; valid range: at least one patch")
+            raise ValueError("patches is empty; valid range: at least one patch, Pads(p1, p2, ...)")
         parts = sum(len(p.vertices) if isinstance(p, Polygon) else 4 for p in flat)
         if parts > MAX_VERTICES:
             raise ValueError(
@@ -544,7 +631,9 @@ class Pads(_Patch):
         return self._arrays_copy()
 
     def outlines(self, n: int = 181) -> list[np.ndarray]:
-        """Closed outlines of every pad in the body frame [m]."""
+        """Closed outlines of every pad in the body frame [m], ``n`` points per curved one
+        (an integer in [2, 1e6])."""
+        _outline_points(n)
         out = []
         for p in self.patches:
             out.extend(p.outlines(n))
@@ -631,12 +720,15 @@ class Blade:
         )
 
     def outline(self, n: int = 2) -> np.ndarray:
-        """The segment (2, 2) in the body frame [m] (``n`` is unused)."""
+        """The segment (2, 2) in the body frame [m] (``n``, an integer in [2, 1e6], is checked
+        but not needed)."""
+        _outline_points(n)
         return self.ends
 
     def outlines(self, n: int = 2) -> list[np.ndarray]:
-        """The segment, as one open curve (2, 2), in the body frame [m]."""
-        return [self.ends]
+        """The segment, as one open curve (2, 2), in the body frame [m] (``n`` as in
+        :meth:`outline`)."""
+        return [self.outline(n)]
 
 
 #: any footprint patch (the type of ``Body.patch`` beside ellipses)

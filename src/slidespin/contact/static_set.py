@@ -23,7 +23,8 @@ the image patch, and the support point is ∇h(d) = (−𝔽 F_iso, −M_iso). O
 On a footprint (MODEL §10; ``FootprintSupport``) the same change of variables holds,
 y = L r′ with the pressure p/det L: a polygon's image is a polygon (the exact footprint
 kernel), a disk's or a ring hole's is an ellipse (the elliptic kernel, one call per disk,
-with its own load and pressure centroid), and a linear pressure stays linear. For isotropic
+with its own load and pressure centroid), a blade's (a line contact) is a segment carrying
+the same load uniformly (the blade's closed forms), and a linear pressure stays linear. For isotropic
 friction no map is needed: h(d) = −W(d)·d and ∇h(d) = −W(d), one call of the footprint
 kernel. The sliding wrench W(u) of every feature below comes from one dispatch on the shape,
 :class:`slidespin.contact._engine.TwistWrench` (elliptic or footprint kernel).
@@ -52,12 +53,13 @@ from slidespin import _validate as v
 from slidespin.contact import _engine
 from slidespin.contact._engine import TwistWrench
 from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_world
-from slidespin.contact._kernel_footprint import NGEO
+from slidespin.contact._kernel_footprint import GEO_LOAD, NGEO
 from slidespin.contact._kernel_footprint import wrench_world as fp_wrench_world
 from slidespin.contact.body import Body, check_body_friction
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.contact.pressure import LAW_LINEAR, LAW_UNIFORM
+from slidespin.contact.shapes import Annulus, Blade, as_patches
 
 __all__ = ["StaticSupport", "support_function"]
 
@@ -150,7 +152,9 @@ class FootprintSupport:
     is again a footprint the exact kernels take: a linear map sends each polygon to a
     polygon (its edges mapped, orientation kept since det L > 0), each disk or hole of
     radius R to an ellipse with semi-axes R σ₁, R σ₂ (σ the singular values of L), and a
-    linear pressure to a linear pressure. The polygons are integrated by the footprint
+    linear pressure to a linear pressure; a blade (one edge, a line load q over its length
+    L) to the segment L·(blade) carrying the same load P with density q/|L ê| (ê its
+    direction), exact by the blade's closed forms. The polygons are integrated by the footprint
     kernel (exact), each disk (σ = ±1) by the elliptic kernel with its own load
     ∫_disk p = π R² p(o) and pressure centroid o + (R²/4) ∇p/p(o) (uniform or linear law,
     1e-13), moments carried to G. The support point is (−𝔽 F_iso, −M_iso), F_iso and M_iso
@@ -182,7 +186,19 @@ class FootprintSupport:
         grad = np.linalg.solve(mmap.T, np.array([p1, p2]))  # ∇ of p(y) in the image
         q0, q1, q2 = pg / det, grad[0] / det, grad[1] / det  # p̂ = p/det L
         e = tw.edges
-        if e.shape[0]:
+        if e.shape[0] == 1:
+            # a blade (one edge, MODEL §10): its image is a segment carrying the same load
+            # P uniformly (the line density q/|L ê| on a segment |L ê| times as long), G at
+            # the origin; the footprint kernel hands it to the blade's closed forms
+            a0 = (e[:, 0:2] - (gx, gy)) @ mmap.T
+            a1 = (e[:, 2:4] - (gx, gy)) @ mmap.T
+            self.edges = np.ascontiguousarray(np.hstack((a0, a1)))
+            mid = 0.5 * (a0[0] + a1[0])
+            half = 0.5 * float(np.hypot(*(a1[0] - a0[0])))
+            self.edge_geo = np.array(
+                [mid[0], mid[1], half, 0.0, 0.0, 0.0, 0.0, 0.0, mid[0], mid[1], geo[GEO_LOAD]]
+            )
+        elif e.shape[0]:
             a0 = (e[:, 0:2] - (gx, gy)) @ mmap.T
             a1 = (e[:, 2:4] - (gx, gy)) @ mmap.T
             self.edges = np.ascontiguousarray(np.hstack((a0, a1)))
@@ -304,8 +320,17 @@ def anisotropy_elongation(body, friction) -> float:
     return ratio * max(bn, 1.0 / bn)
 
 
+#: thinnest ring ((R − r)/R) whose static set an anisotropic tensor may ask for: the image of
+#: a ring is an elliptic ring, the outer ellipse's integral minus the hole's (the elliptic
+#: quadrature, to 1e-13 of each), which keeps ~1e-13 R/(R − r) (measured: load factors within
+#: 7e-14 at 1e-3, 7e-11 at 1e-6, 1e-4 at 1e-12); isotropic friction needs no image (exact)
+THIN_RING_STATICS = 1e-3
+
+
 def check_anisotropy(body, friction, feature="static friction") -> None:
-    """Raise ValueError naming ``friction`` unless cond(𝔽) × elongation ≤ 1e4."""
+    """Raise ValueError naming ``friction`` unless cond(𝔽) × elongation ≤ 1e4, and, for an
+    anisotropic tensor, unless every ring of the footprint is at least THIN_RING_STATICS
+    wide (relative to its radius)."""
     prod = anisotropy_elongation(body, friction)
     if not prod <= ANISOTROPY_ELONGATION:
         raise ValueError(
@@ -313,6 +338,20 @@ def check_anisotropy(body, friction, feature="static friction") -> None:
             f"(ratio of the tensor's singular values) x patch elongation max(b/a, a/b) = "
             f"{prod:.3g}; valid range: [1, {ANISOTROPY_ELONGATION:g}]"
         )
+    iso = friction.fx == friction.fy and friction.f == 0.0
+    if iso or not body.is_footprint or isinstance(body.patch, Blade):
+        return
+    for p in as_patches(body.patch):
+        if isinstance(p, Annulus) and p.inner_radius > 0.0:
+            width = (p.outer_radius - p.inner_radius) / p.outer_radius
+            if not width >= THIN_RING_STATICS * (1.0 - 1e-9):  # (R - r)/R rounds
+                raise ValueError(
+                    f"patch = {v._short(p, 100)} is invalid for {feature} under the "
+                    f"anisotropic friction = {friction!r}: its relative width (R - r)/R = "
+                    f"{width:.3g} is below what the static set of its image (an elliptic "
+                    f"ring) keeps digits for; valid range: (R - r)/R >= {THIN_RING_STATICS:g} "
+                    "(or isotropic friction, which takes any ring)"
+                )
 
 
 def _check(body, friction):
@@ -321,15 +360,23 @@ def _check(body, friction):
 
 
 def _wrench3(name, w):
+    """Three finite real numbers (Fx, Fy, M) as an array; a string, bytes or bools refused."""
+    bad = (
+        f"{name} = {v._short(w)} is invalid; valid values: three finite real numbers (Fx, Fy, "
+        "M) [N, N, N m]"
+    )
+    if isinstance(w, (str, bytes, bytearray)):
+        raise ValueError(bad)
     try:
-        items = [float(x) for x in w]
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} = {w!r} is invalid; valid values: (Fx, Fy, M)") from None
-    if len(items) != 3 or not all(math.isfinite(x) for x in items):
-        raise ValueError(
-            f"{name} = {w!r} is invalid; valid values: three finite numbers (Fx, Fy, M)"
-        )
-    return np.array(items)
+        items = list(w)
+    except TypeError:
+        raise ValueError(bad) from None
+    if len(items) != 3:
+        raise ValueError(bad)
+    try:
+        return np.array([v.finite(f"{name}[{i}]", x) for i, x in enumerate(items)])
+    except ValueError:
+        raise ValueError(bad) from None
 
 
 def _normal(incline, normal_factor):

@@ -35,6 +35,7 @@ extent of a footprint).
 
 from __future__ import annotations
 
+import inspect
 import math
 from dataclasses import dataclass
 
@@ -77,16 +78,50 @@ def _norm(b):
     return big * float(np.linalg.norm(b / big)) if 0.0 < big < math.inf else big
 
 
-def _check_load(name, b):
-    """Range of a natural-unit wrench b; False if it is negligible (held exactly)."""
+def _check_load(name, b, incline=None):
+    """Range of a natural-unit wrench b (per unit normal load); False if it is negligible
+    (held exactly). On an incline the normal load is m g cos α: a steep slope, not the
+    applied wrench, is then what makes b large, and the message says so."""
     nb = _norm(b)
     if not nb <= WRENCH_MAX:
+        if incline is not None and incline.normal_factor < 1.0:
+            alpha = incline.angle
+            raise ValueError(
+                f"incline angle = {alpha!r} rad is invalid for static friction: it leaves a "
+                f"normal load of m g cos(angle) = {incline.normal_factor:.3g} m g, and the "
+                "load to hold there (the applied wrench plus the slope's pull m g sin(angle) "
+                f"= {incline.downhill_factor:.3g} m g) is {nb:.3g} times it, far beyond "
+                "what friction can give (at most the friction coefficient, <= 5, times it); "
+                f"valid range: loads up to {WRENCH_MAX:g} times the normal load, i.e. on the "
+                f"slope alone angle <= atan({WRENCH_MAX:g}) = {math.atan(WRENCH_MAX):.9g} rad"
+            )
         raise ValueError(
             f"{name} = ({', '.join(f'{x:.6g}' for x in b)}) in units of (m g, m g, m g a) is "
             f"invalid; valid range: magnitude <= {WRENCH_MAX:g} m g (the load must be finite "
             "relative to the weight)"
         )
     return nb >= WRENCH_NEGLIGIBLE
+
+
+def _applied(body, applied_wrench, phi, t):
+    """W_a = (Qx, Qy, M about G) [N, N, N m] in the fixed frame from a triple, or from a load
+    object: anything with a method ``wrench(t, phi, mass_centre)`` returning that triple
+    (:class:`slidespin.Load`; ``contact`` cannot import it, so it is recognised by this
+    method), evaluated at time ``t`` and body angle ``phi``."""
+    method = getattr(applied_wrench, "wrench", None)
+    if callable(method) and not isinstance(applied_wrench, (str, bytes)):
+        t = v.finite("t", t)
+        try:
+            inspect.signature(method).bind(t, phi, body.mass_centre)
+        except (TypeError, ValueError):
+            raise ValueError(
+                f"applied_wrench = {v._short(applied_wrench)} is invalid: its wrench method "
+                "does not take (t, phi, mass_centre); valid values: (Fx, Fy, M), or a load "
+                "such as slidespin.Load with wrench(t, phi, mass_centre) -> (Qx, Qy, M)"
+            ) from None
+        w = method(t, phi, body.mass_centre)
+        return _wrench3(f"applied_wrench.wrench({t!r}, {phi!r}, mass_centre)", w)
+    return _wrench3("applied_wrench", applied_wrench)
 
 
 def _with_pull(body, w, incline, g):
@@ -141,6 +176,7 @@ def load_factor(
     g: float = 9.81,
     *,
     incline: Incline | None = None,
+    t: float = 0.0,
 ) -> float:
     """Load factor λ*: the applied wrench can be multiplied by λ* before the body slips.
 
@@ -151,9 +187,13 @@ def load_factor(
     ----------
     body, friction : Body, FrictionTensor
         The body and its friction tensor.
-    applied_wrench : (float, float, float)
+    applied_wrench : (float, float, float) or a load
         W_a = (Qx [N], Qy [N], moment about G [N m]) in the fixed frame: the loads other
-        than gravity (``(0, 0, 0)`` asks whether the body holds on the slope alone).
+        than gravity (``(0, 0, 0)`` asks whether the body holds on the slope alone). Or a
+        load object, such as :class:`slidespin.Load`: anything with a method
+        ``wrench(t, phi, mass_centre)`` returning that triple (a force given in the body
+        frame or acting away from G is turned and carried to G by it), evaluated at time
+        ``t``, body angle ``phi`` and the body's mass centre.
     phi : float
         Body angle [rad].
     g : float
@@ -163,6 +203,9 @@ def load_factor(
         gravity's downhill pull m g sin α d at G is added to ``applied_wrench``, as
         :func:`slidespin.simulate` does. λ* then multiplies the total W_a + m g sin α d.
         A tilt varying in time is refused (give the plane at one time).
+    t : float, default 0
+        Time [s] at which a load object that varies in time is evaluated (unused for a
+        triple).
 
     Returns
     -------
@@ -191,14 +234,15 @@ def load_factor(
     1.4
     """
     _check(body, friction)
-    w = _wrench3("applied_wrench", applied_wrench)
+    phi = v.finite("phi", phi)
+    w = _applied(body, applied_wrench, phi, t)
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     w = _with_pull(body, w, incline, g)
     b = _natural_wrench(body, w, nf, g)
-    if not _check_load("applied_wrench", b):
+    if not _check_load("applied_wrench", b, incline):
         return math.inf
-    sup = static_support(TwistWrench(body, friction), friction, v.finite("phi", phi))
+    sup = static_support(TwistWrench(body, friction), friction, phi)
     return _load_factor_nat(sup, b)[0]
 
 
@@ -217,13 +261,16 @@ def can_stick(
     g: float = 9.81,
     *,
     incline: Incline | None = None,
+    t: float = 0.0,
 ) -> bool:
     """Whether static friction can hold the body at rest under ``applied_wrench``.
 
     True iff −W_a ∈ C (MODEL §11), i.e. :func:`load_factor` ≥ 1: a load exactly at the
-    threshold is held. Arguments as in :func:`load_factor`: with ``incline`` gravity's
-    downhill pull is included, so ``can_stick(body, friction, (0, 0, 0), incline=...)``
-    answers "does it hold on this slope?" (for isotropic friction: iff tan α ≤ μ).
+    threshold is held. Arguments as in :func:`load_factor`: ``applied_wrench`` is a triple
+    (Qx, Qy, M about G) or a load such as ``slidespin.Load(force=(2.0, 0.0))`` (at time
+    ``t``); with ``incline`` gravity's downhill pull is included, so
+    ``can_stick(body, friction, (0, 0, 0), incline=...)`` answers "does it hold on this
+    slope?" (for isotropic friction: iff tan α ≤ μ).
 
     Examples
     --------
@@ -233,7 +280,7 @@ def can_stick(
     >>> can_stick(disk, fr, (0.0, 0.0, 0.199), g=10.0), can_stick(disk, fr, (0.0, 0.0, 0.201), g=10.0)
     (True, False)
     """
-    return load_factor(body, friction, applied_wrench, phi, g, incline=incline) >= 1.0
+    return load_factor(body, friction, applied_wrench, phi, g, incline=incline, t=t) >= 1.0
 
 
 def critical_tilt(
@@ -396,14 +443,16 @@ def onset(
     g: float = 9.81,
     *,
     incline: Incline | None = None,
+    t: float = 0.0,
 ) -> Onset | None:
     """Direction and initial rate in which a body at rest starts to slip (MODEL §11).
 
     Parameters
     ----------
-    body, friction, applied_wrench, phi, g, incline
-        As in :func:`load_factor`; with ``incline`` gravity's downhill pull m g sin α d is
-        added to ``applied_wrench`` (the loads other than gravity).
+    body, friction, applied_wrench, phi, g, incline, t
+        As in :func:`load_factor` (``applied_wrench`` a triple or a load such as
+        :class:`slidespin.Load`, at time ``t``); with ``incline`` gravity's downhill pull
+        m g sin α d is added to ``applied_wrench`` (the loads other than gravity).
 
     Returns
     -------
@@ -435,14 +484,14 @@ def onset(
     ([1.0, 0.0, 0.0], 2.0)
     """
     _check(body, friction)
-    w = _wrench3("applied_wrench", applied_wrench)
+    phi = v.finite("phi", phi)
+    w = _applied(body, applied_wrench, phi, t)
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    phi = v.finite("phi", phi)
     w = _with_pull(body, w, incline, g)
     tw = TwistWrench(body, friction, _TOL)
     wn = _natural_wrench(body, w, nf, g)
-    if not _check_load("applied_wrench", wn):
+    if not _check_load("applied_wrench", wn, incline):
         return None
     sup = static_support(tw, friction, phi)
     lam_star, d = _load_factor_nat(sup, wn)

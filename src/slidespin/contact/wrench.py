@@ -165,7 +165,8 @@ def motion_arrays(
         raise ValueError(
             "vx, vy, omega, phi have shapes "
             + ", ".join(str(a.shape) for a in arrays)
-            + " that do not broadcast together"
+            + " that do not broadcast together; valid values: arrays of one shape (or "
+            "scalars and arrays of one shape)"
         ) from None
     vxf, vyf, omf, phf = (np.ascontiguousarray(x, dtype=float).ravel() for x in b)
     return vxf, vyf, omf, phf, b[0].shape, scalar
