@@ -40,7 +40,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import minimize, root
 
 from slidespin import _validate as v
 from slidespin.contact._engine import TwistWrench
@@ -157,6 +156,9 @@ def _load_factor_nat(sup: StaticSupport, b: np.ndarray, d0=None):
     # minimum is global; a second start only guards against a failed line search
     best = None
     for p0 in starts:
+        # lazy: scipy.optimize costs ~0.8 s to import, needed only when a load is tested
+        from scipy.optimize import minimize
+
         r = minimize(fun, p0, jac=True, method="BFGS", options={"gtol": 1e-13, "maxiter": 400})
         if best is None or r.fun < best.fun:
             best = r
@@ -388,6 +390,8 @@ def _onset_nat(acc_fun, b, u0, quick=False, allow_negative=False, lam_tol=0.0):
             u = u / np.linalg.norm(u)
             t, _ = residual_at(u)
             return [t @ e1, t @ e2]
+
+        from scipy.optimize import root  # lazy: see load_factor
 
         sol = root(eqs, np.zeros(2), method="hybr", options={"xtol": 1e-14})
         u = u_start + sol.x[0] * e1 + sol.x[1] * e2
