@@ -535,7 +535,10 @@ def test_load(data):
     if load is not None:
         t = data.draw(st.floats(0.0, 1e3), label="t")
         phi = data.draw(st.floats(-10.0, 10.0), label="phi")
-        finite_everywhere((load.wrench(t, phi, (0.01, -0.02)), load.force_at(t), load.torque_at(t)))
+        # a huge force far from G may overflow the moment: refused by name when evaluated
+        w = call(load.wrench, ("force", "torque", "at"), t, phi, (0.01, -0.02))
+        if w is not None:
+            finite_everywhere((w, load.force_at(t), load.torque_at(t)))
     args = Args(data, "times", "fx", "fy", "torque")
     n = data.draw(st.integers(1, 4), label="n")  # 1: refused (at least 2)
     times = args("times", st.just(list(np.linspace(0.0, 1.0, n))))

@@ -22,7 +22,7 @@ from slidespin.motion import _integrator
 BODIES = {
     "ellipse": lambda: ss.Body(ss.Ellipse.from_eccentricity(0.1, 0.866), ss.UniformPressure(), 1.0),
     "linear ellipse": lambda: ss.Body(
-        ss.Ellipse(0.08, 0.05), ss.LinearPressure(0.3, -0.2), 2.0
+        ss.Ellipse(0.08, 0.05), ss.LinearPressure(0.01, -0.005), 2.0
     ),
     "rectangle": lambda: ss.Body(ss.Rectangle(0.2, 0.1), ss.UniformPressure(), 1.0),
     "ring": lambda: ss.Body(ss.Annulus(0.06, 0.1), ss.UniformPressure(), 1.0),

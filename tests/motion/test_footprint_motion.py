@@ -378,7 +378,7 @@ def test_case_footprints_build_the_objects():
             None,
             "[patch] shape 'rectangle' does not take 'radius'",
         ),
-        ({"shape": "polygon", "vertices": [[0, 0], [1, 0]]}, None, "vertices has 2 point(s)"),
+        ({"shape": "polygon", "vertices": [[0, 0], [1, 0]]}, None, "vertices has 2 distinct point(s)"),
         ({"shape": "polygon", "vertices": [[0, 0], [1, 0], "x"]}, None, "[patch] vertices[2] = "),
         ({"shape": "polygon", "vertices": [[0, 0], [1, 1], [1, 0], [0, 1]]}, None, "[patch] "),
         ({"shape": "annulus", "inner_radius": 0.2, "outer_radius": 0.1}, None, "outer_radius"),

@@ -260,7 +260,7 @@ class Body:
         :func:`slidespin.contact.pressure_map.symmetry` (MODEL §9–10).
 
         Computed once per friction tensor (its fx, fy, f, frame and angle) and
-        ``wrench_tol``, and kept on the body (the last :data:`ENGINE_CACHE` of them): every
+        ``wrench_tol``, and kept on the body (the last ``ENGINE_CACHE`` of them): every
         call returns fresh copies, which the caller may change without touching the cache.
         """
         if not isinstance(friction, FrictionTensor):
