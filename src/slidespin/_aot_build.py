@@ -7,7 +7,9 @@ The core is the integrator's entries, the batch loop and the recorded-wrench loo
 :func:`simulate`, compiled by numba's ``pycc`` from the same sources the JIT compiles (no
 second implementation): :func:`slidespin.motion._integrator.integrate_fp` for an ellipse and
 for a footprint, the batch loop of :mod:`slidespin.motion._parallel` run serially (for small
-batches), and the two ``wrench_array`` loops of the ellipse and footprint kernels. The result
+batches), the ``wrench_world`` entries and ``wrench_array`` loops of the ellipse and footprint
+kernels (one twist, called from Python by the statics, and many), and the loaded
+engine's one entry :func:`slidespin.motion._loaded_core.run_loaded` for each. The result
 is an ordinary extension module, ``slidespin/_aot_core.*.so`` (it needs neither numba
 nor LLVM at runtime), and beside it ``_aot_core.json``: the numba version, the CPU it was
 compiled for, and the SHA-256 of every slidespin source file imported while compiling.
@@ -33,8 +35,11 @@ from numba.pycc import CC
 
 from slidespin import _jit
 from slidespin.contact._kernel_ellipse import wrench_loop as _ellipse_wrench_array
+from slidespin.contact._kernel_ellipse import wrench_world as _ellipse_wrench_world
 from slidespin.contact._kernel_footprint import wrench_array as _footprint_wrench_array
+from slidespin.contact._kernel_footprint import wrench_world as _footprint_wrench_world
 from slidespin.motion._integrator import integrate_fp
+from slidespin.motion._loaded_core import run_loaded
 from slidespin.motion._parallel import _integrate_many, _stop_direction
 
 #: the extension module's name (in ``slidespin.motion``) and its manifest's file name
@@ -53,6 +58,9 @@ _TAIL = (_A1, _F, _F, _F, _F, _I, _F, T.boolean)
 _IA2 = T.Array(T.int64, 2, "C")
 _MANY = T.Tuple((_A2, _IA1, _IA1, _IA1, _IA1, _A2))
 _MANY_TAIL = (_F, _F, _F, _F, _I)
+# run_loaded's result, and its arguments after (task, par, fp)
+_LOADED = T.Tuple((_A1, _I, _I, _I, _I, _A2, _A1))
+_LOADED_TAIL = (_A1, _F, _A1, _F, _A1, _F, _F, _A1, _F, _F, _F, _I)
 
 # the batch loop of slidespin.motion._parallel without ``prange`` (pycc compiles no parallel
 # code; a prange in a serial function is a range): the same source, run case after case.
@@ -97,6 +105,24 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
             edges, circles, geo, t00, t01, t10, t11, body, phi, vx, vy, om
         )
 
+    @cc.export(
+        "wrench_world_ellipse",
+        T.Tuple((_F, _F, _F, _I))(_F, _I, _F, _F, _F, _F, _F, _F, T.boolean, _F, _F, _F, _F, _F),
+    )
+    def wrench_world_ellipse(bn, law, xg, yg, t00, t01, t10, t11, body, phi, vx, vy, om, tol):
+        return _ellipse_wrench_world(
+            bn, law, xg, yg, t00, t01, t10, t11, body, phi, vx, vy, om, tol
+        )
+
+    @cc.export(
+        "wrench_world_footprint",
+        T.UniTuple(_F, 3)(_A2, _A2, _A1, _F, _F, _F, _F, T.boolean, _F, _F, _F, _F),
+    )
+    def wrench_world_footprint(edges, circles, geo, t00, t01, t10, t11, body, phi, vx, vy, om):
+        return _footprint_wrench_world(
+            edges, circles, geo, t00, t01, t10, t11, body, phi, vx, vy, om
+        )
+
     @cc.export("integrate_batch_ellipse", _MANY(_A2, _A2, *_MANY_TAIL))
     def integrate_batch_ellipse(pars, init, rtol, atol, utol, s_drop, max_steps):
         return _integrate_serial(pars, None, init, rtol, atol, utol, s_drop, max_steps)
@@ -107,6 +133,25 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
     ):
         fps = (edges, circles, eidx, cidx, geos)
         return _integrate_serial(pars, fps, init, rtol, atol, utol, s_drop, max_steps)
+
+    @cc.export("loaded_ellipse", _LOADED(_F, _A1, *_LOADED_TAIL))
+    def loaded_ellipse(
+        task, par, tab, mode, y0, rtol, atol, h_max, t_end, breaks, ln_stop, s_arg, t_tol, steps
+    ):
+        return run_loaded(
+            task, par, None, tab, mode, y0, rtol, atol, h_max, t_end, breaks, ln_stop, s_arg,
+            t_tol, steps,
+        )  # fmt: skip
+
+    @cc.export("loaded_footprint", _LOADED(_F, _A1, _A2, _A2, _A1, *_LOADED_TAIL))
+    def loaded_footprint(
+        task, par, fe, fc, geo, tab, mode, y0, rtol, atol, h_max, t_end, breaks, ln_stop, s_arg,
+        t_tol, steps,
+    ):  # fmt: skip
+        return run_loaded(
+            task, par, (fe, fc, geo), tab, mode, y0, rtol, atol, h_max, t_end, breaks, ln_stop,
+            s_arg, t_tol, steps,
+        )  # fmt: skip
 
     @cc.export("stop_direction", T.Tuple((_A1, _A1))(_A2))
     def stop_direction(yend):

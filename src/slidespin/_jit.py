@@ -129,15 +129,15 @@ def jit(fn=None, **options):
 
 # ---------------------------------------------------------------- the one note on compiling
 #: rough CPU seconds of a first compile, by the compiled entry called from Python (measured
-#: from an empty cache on 2 shared cores; the rest: a few seconds)
-COMPILE_SECONDS = {"integrate_fp": 30, "integrate_many": 40, "accelerations": 10}
+#: from an empty cache on 2 shared cores; the rest: up to about a minute)
+COMPILE_SECONDS = {"integrate_fp": 30, "integrate_many": 40, "accelerations": 10, "run_loaded": 60}
 _compiling: dict = {"noted": False, "enabled": True}
 
 
 def compile_note(name: str) -> str:
     """The line printed once on stderr when slidespin first compiles ``name`` in a process."""
     seconds = COMPILE_SECONDS.get(name)
-    cost = f"about {seconds} s" if seconds else "a few seconds"
+    cost = f"about {seconds} s" if seconds else "up to about a minute"
     return (
         f"slidespin: compiling the numerical kernels once ({name}: {cost}); "
         "later runs load them from numba's on-disk cache"

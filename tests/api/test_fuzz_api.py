@@ -155,6 +155,9 @@ def warm_up():
     ss.friction_wrench(box, fr, 1.0, 0.0, 1.0)
     ss.simulate(box, fr, ss.State(vx=0.1), max_steps=20)
     ss.simulate(body, fr, ss.State(), load=ss.Load((1.0, 0.0)), t_end=0.01, max_steps=20)
+    # a slip under a load: the compiled loaded engine of an ellipse and of a footprint
+    for b in (body, box):
+        ss.simulate(b, fr, ss.State(), load=ss.Load((10.0, 0.0)), t_end=0.01, max_steps=20)
     ss.onset(body, fr, (10.0, 0.0, 0.0))
 
 

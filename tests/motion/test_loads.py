@@ -432,15 +432,20 @@ def test_off_centre_ramp_starts_at_the_independent_threshold_however_written():
         assert tr.phi[-1] == pytest.approx(runs[0].phi[-1], rel=1e-8)
 
 
-def test_an_onset_that_cannot_be_found_ends_the_run_honestly(monkeypatch):
+@pytest.mark.parametrize("method", ["auto", "scipy"])
+def test_an_onset_that_cannot_be_found_ends_the_run_honestly(monkeypatch, method):
     """No input may reach a RuntimeError: a failed onset solve (a slip direction always
     exists beyond C, so this is a solver failure, forced here) ends the run at that time,
-    at rest, with status "no_onset" and a message."""
+    at rest, with status "no_onset" and a message; in the compiled engine (whose Newton
+    solve from the normal of C is forced to fail too, so that the Python onset with all
+    its starts runs) and in the Python path."""
     import slidespin.contact.statics as st
+    import slidespin.motion._loaded_engine as engine
     from test_statics import off_centre_push_threshold
 
     f_c, _ = off_centre_push_threshold(0.05, 0.3, 1.0, 0.02)
     monkeypatch.setattr(st, "_onset_nat", lambda *args, **kwargs: None)
+    monkeypatch.setattr(engine, "slaved_direction", lambda *args: (False, None, 0.0, 0))
     tr = simulate_loaded(
         disk(),
         ss.FrictionTensor(0.3, 0.3),
@@ -448,6 +453,7 @@ def test_an_onset_that_cannot_be_found_ends_the_run_honestly(monkeypatch):
         load=_off_centre_pushes()[0],
         t_end=3.0,
         g=G,
+        method=method,
     )
     assert tr.status == "no_onset"
     assert "could not be started" in tr.message and "load factor" in tr.message
@@ -483,25 +489,43 @@ def test_a_profile_that_reaches_the_threshold_at_a_kink_or_stays_on_it():
         assert tr.phases == (("stick", 0.0, 3.0),)
 
 
-def test_an_integrator_that_gives_up_ends_the_run_with_a_status(monkeypatch):
+@pytest.mark.parametrize("method", ["auto", "scipy"])
+def test_an_integrator_that_gives_up_ends_the_run_with_a_status(monkeypatch, method):
     """An integrator failure (forced here) ends the run with status "step_too_small", the
-    values as reached and the integrator's message, in the slow start and in a slip."""
-    import slidespin.motion._stick_slip as lo
+    values as reached and the integrator's message, in the slow start and in a slip: in
+    the compiled engine (its steppers made to report a failure) and in the Python path
+    (solve_ivp made to)."""
+    import scipy.integrate as lo  # the Python path imports solve_ivp from it when it runs
 
-    real = lo.solve_ivp
+    import slidespin.motion._loaded_dop853 as dop
+    import slidespin.motion._loaded_engine as engine
 
-    def failing(*args, **kwargs):
-        sol = real(*args, **kwargs)
-        sol.status, sol.message = -1, "forced failure"
-        return sol
+    if method == "scipy":
+        real = lo.solve_ivp
 
-    monkeypatch.setattr(lo, "solve_ivp", failing)
+        def failing(*args, **kwargs):
+            sol = real(*args, **kwargs)
+            sol.status, sol.message = -1, "forced failure"
+            return sol
+
+        monkeypatch.setattr(lo, "solve_ivp", failing)
+        said = "forced failure"
+    else:
+        for name in ("run_dop853", "run_radau"):
+            real_run = getattr(engine, name)
+
+            def failing_run(*args, _real=real_run):
+                out = _real(*args)
+                return (out[0], dop.R_FAILED, *out[2:])
+
+            monkeypatch.setattr(engine, name, failing_run)
+        said = "step size fell below"
     fr = ss.FrictionTensor(0.3, 0.3)
     for state, load, where in [
         (ss.State(vx=1.2), None, "slip integrator"),
         (ss.State(), _off_centre_pushes()[0], "slow start"),
     ]:
-        tr = simulate_loaded(disk(), fr, state, load=load, t_end=3.0, g=G)
+        tr = simulate_loaded(disk(), fr, state, load=load, t_end=3.0, g=G, method=method)
         assert tr.status == "step_too_small"
-        assert where in tr.message and "forced failure" in tr.message
+        assert where in tr.message and said in tr.message
         assert tr.phases[-1][0] == "slip" and tr.phases[-1][2] == pytest.approx(tr.t[-1])

@@ -420,7 +420,9 @@ def test_tilt_profile_in_a_case_file(tmp_path):
     t_star = math.atan(MU) / rate
     assert tr.phases[0][2] == pytest.approx(t_star, abs=1e-9)
     v_end = _tilt_reference(lambda t: rate * t, t_star, 7.0)
-    assert tr.vy[-1] == pytest.approx(v_end, rel=1e-8) and abs(tr.vx[-1]) < 1e-12 * v_end
+    # it slides straight down (+y): to the integration's accuracy on the direction (the
+    # explicit stepper carries the direction's round-off up to about its tolerance)
+    assert tr.vy[-1] == pytest.approx(v_end, rel=1e-8) and abs(tr.vx[-1]) < 1e-9 * v_end
     for bad, words in [
         ({"times": [0.0, 1.0], "profile_angle_deg": [0.0, 95.0]}, ["profile_angle_deg", "[0, 90)"]),
         ({"times": [0.0, 1.0], "profile_angle": [0.0, 2.0]}, ["profile_angle", "2.0"]),

@@ -23,6 +23,7 @@ import math
 
 import numpy as np
 
+from slidespin import _aot
 from slidespin._jit import is_none_type, jit, overload
 from slidespin.contact._kernel_ellipse import (
     STATUS_OK,
@@ -41,6 +42,7 @@ __all__ = [
     "footprint_argument",
     "kernel_constants",
     "no_footprint",
+    "world_kernels",
 ]
 
 # parameter vector layout
@@ -170,6 +172,18 @@ def no_footprint():
     return np.empty((0, 4)), np.empty((0, 4)), np.zeros(NGEO)
 
 
+def world_kernels():
+    """(ellipse, footprint) ``wrench_world`` for one twist, called from Python (the statics,
+    :class:`TwistWrench`): the ahead-of-time compiled entries when the install built them
+    (:mod:`slidespin._aot`; the same code, the same numbers; scalar arguments must then be
+    Python floats, ints and bools, arrays C-contiguous float64), else the JIT's (which
+    compiles the kernel on its first call)."""
+    aot = _aot.core()
+    if aot is None:
+        return wrench_world, fp_wrench_world
+    return aot.wrench_world_ellipse, aot.wrench_world_footprint
+
+
 #: the elliptic kernel's error target (units of the load and load × ℓ)
 TOL = 1e-13
 
@@ -189,7 +203,9 @@ class TwistWrench:
         Radius of gyration √(I/m) in units of ℓ.
     """
 
-    __slots__ = ("_args", "circles", "edges", "footprint", "geo", "k", "par", "tol")
+    __slots__ = (
+        "_args", "_fp_world", "_world", "circles", "edges", "footprint", "geo", "k", "par", "tol"
+    )  # fmt: skip
 
     def __init__(self, body, friction, tol: float = TOL) -> None:
         par, fe, fc, geo = body.engine_params(friction, tol)
@@ -199,19 +215,25 @@ class TwistWrench:
         self.footprint = bool(par[P_SHAPE] == SHAPE_FOOTPRINT)
         p = par
         self._args: tuple
+        # the ahead-of-time compiled entries when the install built them (slidespin._aot):
+        # the statics call this once per twist, and would otherwise compile the kernel
+        ellipse_world, footprint_world = world_kernels()
         if self.footprint:
             self._args = (
-                fe,
-                fc,
-                geo,
-                p[P_T00],
-                p[P_T01],
-                p[P_T10],
-                p[P_T11],
-                p[P_BODY] != 0.0,
+                np.ascontiguousarray(fe, dtype=np.float64),
+                np.ascontiguousarray(fc, dtype=np.float64),
+                np.ascontiguousarray(geo, dtype=np.float64),
+                float(p[P_T00]),
+                float(p[P_T01]),
+                float(p[P_T10]),
+                float(p[P_T11]),
+                bool(p[P_BODY] != 0.0),
             )
+            self._fp_world = footprint_world
         else:
-            self._args = (*elliptic_args(p),)
+            bn, law, *rest, body_frame = elliptic_args(p)
+            self._args = (float(bn), int(law), *(float(x) for x in rest), bool(body_frame))
+            self._world = ellipse_world
 
     def __call__(
         self, phi: float, vx: float, vy: float, omega: float
@@ -222,9 +244,9 @@ class TwistWrench:
         Raises RuntimeError if the elliptic quadrature misses its target (never seen for
         valid inputs; the footprint kernel is exact)."""
         if self.footprint:
-            fx, fy, m = fp_wrench_world(*self._args, phi, vx, vy, omega)
+            fx, fy, m = self._fp_world(*self._args, phi, vx, vy, omega)
             return fx, fy, m
-        fx, fy, m, st = wrench_world(*self._args, phi, vx, vy, omega, self.tol)
+        fx, fy, m, st = self._world(*self._args, phi, vx, vy, omega, self.tol)
         if st != STATUS_OK:  # pragma: no cover - guard
             raise RuntimeError("the wrench quadrature missed its error target")
         return fx, fy, m

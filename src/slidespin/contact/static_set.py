@@ -51,10 +51,9 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.contact import _engine
-from slidespin.contact._engine import TwistWrench
-from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_world
+from slidespin.contact._engine import TwistWrench, world_kernels
+from slidespin.contact._kernel_ellipse import STATUS_OK
 from slidespin.contact._kernel_footprint import GEO_LOAD, NGEO
-from slidespin.contact._kernel_footprint import wrench_world as fp_wrench_world
 from slidespin.contact.body import Body, check_body_friction
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
@@ -103,7 +102,7 @@ class StaticSupport:
         """(h(d), ∇h(d)) for a direction d = (d_Fx, d_Fy, d_M) (natural units)."""
         vx, vy = self.S @ np.asarray(d[:2], dtype=float)
         om = float(d[2])
-        f1, f2, m, st = wrench_world(
+        f1, f2, m, st = world_kernels()[0](
             self.bn,
             self.law,
             self.xg,
@@ -251,16 +250,18 @@ class FootprintSupport:
     def _image_wrench(self, vx, vy, om):
         """Isotropic unit-friction wrench (F, M about G) of the image twist (vx, vy, ω)."""
         fx = fy = mm = 0.0
+        ellipse_world, footprint_world = world_kernels()
         if self.edges.shape[0]:
-            fx, fy, mm = fp_wrench_world(
+            fx, fy, mm = footprint_world(
                 self.edges, _NO_CIRCLES, self.edge_geo, 1.0, 0.0, 0.0, 1.0, False, 0.0, vx, vy, om
             )
         for bn, law, xg, yg, psi, semi, gx, gy, load in self.circ:
             # velocity of the twist at the disk's pressure centroid, lengths per semi-axis
             wx, wy = vx - om * gy, vy + om * gx
-            f1, f2, m, st = wrench_world(
-                bn, law, xg, yg, 1.0, 0.0, 0.0, 1.0, False, psi, wx / semi, wy / semi, om, _TOL
-            )
+            f1, f2, m, st = ellipse_world(
+                float(bn), int(law), float(xg), float(yg), 1.0, 0.0, 0.0, 1.0, False,
+                float(psi), wx / semi, wy / semi, om, _TOL,
+            )  # fmt: skip
             if st != STATUS_OK:  # pragma: no cover - guard
                 raise RuntimeError("statics: the wrench quadrature missed its error target")
             f1 *= load

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from slidespin import _aot
 from slidespin import _validate as v
 from slidespin.contact import _engine
 from slidespin.contact._kernel_blade import blade_wrench_array
@@ -390,19 +391,17 @@ def footprint_wrench(
         )
     else:
         geo = kernel_geometry(footprint, pressure, arrays)
-        fx, fy, mm = fp_wrench_array(
-            arrays.edges,
-            arrays.circles,
-            geo,
-            t[0, 0],
-            t[0, 1],
-            t[1, 0],
-            t[1, 1],
-            body_frame,
-            pha,
-            vxa,
-            vya,
-            oma,
+        # the ahead-of-time compiled loop when the install built it (slidespin._aot)
+        aot = _aot.core()
+        run = fp_wrench_array if aot is None else aot.wrench_array_footprint
+        c64 = np.ascontiguousarray
+        fx, fy, mm = run(
+            c64(arrays.edges, dtype=np.float64),
+            c64(arrays.circles, dtype=np.float64),
+            c64(geo, dtype=np.float64),
+            *(float(x) for x in t.ravel()),
+            bool(body_frame),
+            *(c64(x, dtype=np.float64) for x in (pha, vxa, vya, oma)),
         )
     fx = fx * load
     fy = fy * load

@@ -34,9 +34,80 @@ import numpy as np
 from slidespin._validate import _short
 from slidespin.contact._engine import TwistWrench
 from slidespin.contact.static_set import static_support
-from slidespin.contact.statics import WRENCH_MAX, _load_factor_nat, _onset_from_par
+from slidespin.contact.statics import WRENCH_MAX, _load_factor_nat, _norm, _onset_from_par
 
 _TOL = 1e-13
+#: ln s beyond which s² overflows (a trial stage the step control must reject)
+_LN_S_MAX = 350.0
+#: the minimisation of the load factor stops where the gradient is below this (sup norm),
+#: scipy's BFGS ``gtol`` in :func:`slidespin.contact.statics._load_factor_nat`
+_GTOL = 1e-13
+
+
+def _load_factor(sup, b, d0=None):
+    """(λ*, d*) as :func:`slidespin.contact.statics._load_factor_nat` (the same function
+    min over d·b > 0 of h(d)/(d·b), on the same slice d = b̂ + p e1 + q e2, to the same
+    gradient bound), by Newton's method with a difference Hessian from the warm start d0
+    (else from d = b̂, the statics' start), without the set-up of
+    ``scipy.optimize.minimize`` (0.4 ms a call, where a warm start often needs one support
+    evaluation). Where Newton's method does not reach the bound in a few iterations, the
+    scipy minimisation runs instead, from where Newton's method got to."""
+    nb = _norm(b)
+    if not 0.0 < nb < math.inf:
+        return _load_factor_nat(sup, b, d0)
+    b0, b1, b2 = float(b[0]) / nb, float(b[1]) / nb, float(b[2]) / nb
+    # e1 = b̂ × (1, 0, 0) or b̂ × (0, 1, 0), e2 = b̂ × e1 (the statics' frame)
+    if abs(b0) < 0.9:
+        e1 = (0.0, b2, -b1)
+    else:
+        e1 = (-b2, 0.0, b0)
+    n1 = math.sqrt(e1[0] ** 2 + e1[1] ** 2 + e1[2] ** 2)
+    e1 = (e1[0] / n1, e1[1] / n1, e1[2] / n1)
+    e2 = (b1 * e1[2] - b2 * e1[1], b2 * e1[0] - b0 * e1[2], b0 * e1[1] - b1 * e1[0])
+    p = q = 0.0  # the statics' cold start: d = b̂
+    if d0 is not None:
+        dot = float(d0[0]) * b0 + float(d0[1]) * b1 + float(d0[2]) * b2
+        if dot > 1e-3:
+            p = (float(d0[0]) * e1[0] + float(d0[1]) * e1[1] + float(d0[2]) * e1[2]) / dot
+            q = (float(d0[0]) * e2[0] + float(d0[1]) * e2[1] + float(d0[2]) * e2[2]) / dot
+
+    def direction(p, q):
+        return np.array(
+            [b0 + p * e1[0] + q * e2[0], b1 + p * e1[1] + q * e2[1], b2 + p * e1[2] + q * e2[2]]
+        )
+
+    def fun(p, q):
+        h, grad = sup(direction(p, q))
+        g0 = float(grad[0]) * e1[0] + float(grad[1]) * e1[1] + float(grad[2]) * e1[2]
+        g1 = float(grad[0]) * e2[0] + float(grad[1]) * e2[1] + float(grad[2]) * e2[2]
+        return float(h), g0, g1
+
+    h, g0, g1 = fun(p, q)
+    for _ in range(12):
+        if max(abs(g0), abs(g1)) <= _GTOL:
+            d = direction(p, q)
+            return h / nb, d / math.sqrt(float(d @ d))
+        eps = 1e-7 * max(1.0, abs(p), abs(q))
+        _, a0, a1 = fun(p + eps, q)
+        _, c0, c1 = fun(p, q + eps)
+        h00 = (a0 - g0) / eps
+        h11 = (c1 - g1) / eps
+        h01 = 0.5 * ((a1 - g1) + (c0 - g0)) / eps
+        det = h00 * h11 - h01 * h01
+        if not (det > 0.0 and h00 > 0.0):
+            break
+        dp = -(h11 * g0 - h01 * g1) / det
+        dq = -(h00 * g1 - h01 * g0) / det
+        for _k in range(20):  # backtracking: the ratio must not rise
+            h_new, n0, n1_ = fun(p + dp, q + dq)
+            if h_new <= h:
+                break
+            dp *= 0.5
+            dq *= 0.5
+        else:
+            break
+        p, q, h, g0, g1 = p + dp, q + dq, h_new, n0, n1_
+    return _load_factor_nat(sup, b, direction(p, q))
 
 
 class _Problem:
@@ -62,6 +133,8 @@ class _Problem:
         self.failure = ""
         self._support = {}
         self._d_last = None
+        self._mass_centre = body.mass_centre  # (a property that builds the footprint's)
+        self._normal = (math.nan, math.nan, 0.0, None)  # (t, φ, γ, d) of the last gauge
 
     def nf_at(self, t):
         """cos α at the natural time t (the constant cos α for a fixed tilt)."""
@@ -79,7 +152,7 @@ class _Problem:
             bx, by = sa * dx, sa * dy
         bm = 0.0
         if self.load is not None:
-            qx, qy, mz = self.load.wrench(t * self.t_unit, phi, self.body.mass_centre)
+            qx, qy, mz = self.load.wrench(t * self.t_unit, phi, self._mass_centre)
             mg = self.body.mass * self.g
             bx += qx / mg
             by += qy / mg
@@ -101,6 +174,11 @@ class _Problem:
 
     def rhs(self, tau, y):
         self.n_rhs += 1
+        if not y[3] < _LN_S_MAX:
+            # a wild trial stage of a loose tolerance (rtol up to 1e-3), with s² beyond the
+            # floats: not finite, so that the step control rejects the step (math.exp would
+            # raise OverflowError, and s² u with u = 0 would warn)
+            return np.full(10, np.nan)
         u1, u2, u3 = y[0], y[1], y[2]
         inv = 1.0 / math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
         u1 *= inv
@@ -162,12 +240,24 @@ class _Problem:
 
     def gauge(self, t, phi, w=None):
         """γ = 1/λ*: the body at rest holds iff γ ≤ 1."""
-        if w is None:
+        return self.gauge_normal(t, phi, w)[0]
+
+    def gauge_normal(self, t, phi, w=None):
+        """(γ, d*): the gauge and the outward normal of C where the ray through the load
+        leaves it (None for a zero load). The last one is kept: asked again at the same
+        (t, φ), it is not computed again."""
+        t_last, phi_last, g_last, d_last = self._normal
+        own = w is None
+        if own:
+            if t == t_last and phi == phi_last:
+                return g_last, d_last
             w = self.w_nat(t, phi)
         if not w.any():
-            return 0.0
-        lam, self._d_last = _load_factor_nat(self.support(phi), w, self._d_last)
-        return 1.0 / lam
+            return 0.0, None
+        lam, self._d_last = _load_factor(self.support(phi), w, self._d_last)
+        if own:
+            self._normal = (t, phi, 1.0 / lam, self._d_last)
+        return 1.0 / lam, self._d_last
 
     def onset(self, t, phi):
         """Onset (u, λ, residual) at a time where :meth:`gauge` has found γ > 1.

@@ -64,7 +64,8 @@ class LoadedTrajectory:
         a tilt varying in time the work of gravity depends on the path: it is then the
         integrated load work when gravity is the only applied load, NaN otherwise.
     n_rhs : int
-        Right-hand-side evaluations.
+        Work done: right-hand-side evaluations of the Python path plus the wrench-kernel
+        calls of the compiled engine (one per right-hand side, a few for a slaved one).
     """
 
     t: np.ndarray
