@@ -4,7 +4,8 @@ The tests mirror the package's layers (``contact/``, ``motion/``, ``analysis/``,
 ``viz/``, ``cli/``, ``paper/``; ``api/`` checks the whole public surface, ``docs/`` the site
 and the gallery). The slow independent references they compare against live apart in
 ``references/`` (written from MODEL.md, importing nothing of slidespin's kernels) and are put
-on the import path here, as ``reference`` and ``footprint_reference``.
+on the import path here, as ``reference`` and ``footprint_reference`` (and every test folder
+after them, for the few helpers shared across folders).
 """
 
 from __future__ import annotations
@@ -19,6 +20,12 @@ import pytest
 import slidespin as ss
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "references"))
+# a few test modules share helpers with a module of another layer's folder (e.g. the sweep
+# plot's tests use the sweep tests' fake engine): every folder is importable, so that any
+# one test file also runs alone (test basenames are unique across tests/)
+for _folder in sorted(Path(__file__).resolve().parent.iterdir()):
+    if _folder.is_dir() and not _folder.name.startswith((".", "_")):
+        sys.path.append(str(_folder))
 
 LAWS = ("uniform", "linear", "boussinesq", "hertz")
 

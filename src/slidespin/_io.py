@@ -149,7 +149,9 @@ def render_figure(fig, path: str) -> bytes:
 
     buf = io.BytesIO()
     fmt = os.path.splitext(path)[1].lower().lstrip(".")
-    fig.savefig(buf, format=fmt, dpi=150)
+    # PNG at zlib level 1: a third of the demo's save time, for a file about a third larger
+    extra = {"pil_kwargs": {"compress_level": 1}} if fmt == "png" else {}
+    fig.savefig(buf, format=fmt, dpi=150, **extra)
     return buf.getvalue()
 
 

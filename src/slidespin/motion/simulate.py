@@ -43,14 +43,14 @@ from slidespin.contact.incline import Incline
 from slidespin.motion import _integrator
 from slidespin.motion._report import _html_table
 from slidespin.motion._stops import ENDING_TOL
-from slidespin.motion.loaded import simulate_loaded
-from slidespin.motion.loaded_trajectory import LoadedTrajectory
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES, status_message
 from slidespin.motion.state import State
 
 if TYPE_CHECKING:
     import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
+
+    from slidespin.motion.loaded_trajectory import LoadedTrajectory
 
 __all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "status_name"]
 
@@ -538,7 +538,10 @@ def simulate(
                 "simulate(body, friction, state, load=load, t_end=2.0)"
             )
     if load is not None or incline is not None or t_end is not None:
-        # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11)
+        # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11),
+        # imported when first needed (a free run's first demo need not load it: ~0.1 s)
+        from slidespin.motion.loaded import simulate_loaded
+
         return simulate_loaded(
             body,
             friction,
