@@ -41,6 +41,13 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.contact.friction import FrictionTensor
     from slidespin.contact.incline import Incline
     from slidespin.contact.limit_surface import LimitSurface, limit_surface
+    from slidespin.contact.motion_cone import (
+        MotionCone,
+        StablePushing,
+        motion_cone,
+        stable_pushing,
+    )
+    from slidespin.contact.outline import Outline, body_outline
     from slidespin.contact.pressure import (
         BoussinesqPressure,
         HertzPressure,
@@ -56,6 +63,10 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.motion.loaded_trajectory import LoadedTrajectory
     from slidespin.motion.loads import Load
     from slidespin.motion.outcomes import ENDINGS, STATUSES, ending_message, status_message
+    from slidespin.motion.pushed import simulate_pushed
+    from slidespin.motion.pushed_trajectory import PushedTrajectory
+    from slidespin.motion.pushers import LinePusher, PointPusher
+    from slidespin.motion.quasi_static import QuasiStaticPush, push_quasi_static
     from slidespin.motion.simulate import Trajectory, simulate
     from slidespin.motion.state import State
     from slidespin.studies.case import Case, load_case
@@ -92,6 +103,12 @@ _HOMES = {
     "Incline": "slidespin.contact.incline",
     "LimitSurface": "slidespin.contact.limit_surface",
     "limit_surface": "slidespin.contact.limit_surface",
+    "MotionCone": "slidespin.contact.motion_cone",
+    "StablePushing": "slidespin.contact.motion_cone",
+    "motion_cone": "slidespin.contact.motion_cone",
+    "stable_pushing": "slidespin.contact.motion_cone",
+    "Outline": "slidespin.contact.outline",
+    "body_outline": "slidespin.contact.outline",
     "BoussinesqPressure": "slidespin.contact.pressure",
     "HertzPressure": "slidespin.contact.pressure",
     "LinearPressure": "slidespin.contact.pressure",
@@ -122,6 +139,12 @@ _HOMES = {
     "STATUSES": "slidespin.motion.outcomes",
     "ending_message": "slidespin.motion.outcomes",
     "status_message": "slidespin.motion.outcomes",
+    "simulate_pushed": "slidespin.motion.pushed",
+    "PushedTrajectory": "slidespin.motion.pushed_trajectory",
+    "LinePusher": "slidespin.motion.pushers",
+    "PointPusher": "slidespin.motion.pushers",
+    "QuasiStaticPush": "slidespin.motion.quasi_static",
+    "push_quasi_static": "slidespin.motion.quasi_static",
     "Trajectory": "slidespin.motion.simulate",
     "simulate": "slidespin.motion.simulate",
     "State": "slidespin.motion.state",
@@ -166,6 +189,12 @@ __all__ = [
     "critical_tilt",
     "limit_surface",
     "LimitSurface",
+    "body_outline",
+    "Outline",
+    "motion_cone",
+    "MotionCone",
+    "stable_pushing",
+    "StablePushing",
     # motion: state, loads, simulation to the stop, batches, statuses and endings
     "State",
     "Load",
@@ -181,6 +210,13 @@ __all__ = [
     "ENDINGS",
     "status_message",
     "ending_message",
+    # motion: pushers (MODEL §13)
+    "PointPusher",
+    "LinePusher",
+    "simulate_pushed",
+    "PushedTrajectory",
+    "push_quasi_static",
+    "QuasiStaticPush",
     # analysis: terminal analysis (paper eq. 14–16, Table 2) and fitting
     "terminal_ratio",
     "terminal_states",

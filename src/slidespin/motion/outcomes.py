@@ -49,6 +49,14 @@ names are kept apart from the unloaded ones (:data:`LOADED_STATUSES`, :data:`LOA
                           ends there with the body at rest.
 ========================  =====================================================================
 
+Pushed runs (a pusher with a prescribed motion; MODEL §13, :mod:`slidespin.motion.pushed`,
+:mod:`slidespin.motion.quasi_static`) use the loaded statuses, plus ``indeterminate``: no
+contact mode is consistent at a switch (a Painlevé-type case of the dynamics, or no
+quasi-static balance): the run ends there, values as reached. The contact modes of a point
+pusher (:data:`PUSH_MODES`): ``separated``, ``sticking``, ``sliding_left`` and ``sliding_right``
+(the finger slides towards +t = ẑ × n over the body, n the inward normal: to its left looking
+into the body; the tangential force is then +μp λn along t, and −μp λn for ``sliding_right``).
+
 Loaded endings: ``stopped_stuck`` (moved, and is at rest and held at the end),
 ``at_rest_throughout`` (static friction held it over the whole run), ``moving_at_t_end``
 (still moving at the end of the run: ``t_end``, or where an unconverged status ended it),
@@ -73,6 +81,8 @@ __all__ = [
     "LOADED_CONVERGED",
     "LOADED_FLAGGED",
     "LOADED_UNCONVERGED",
+    "PUSH_MODES",
+    "PUSHED_STATUSES",
     "status_message",
     "ending_message",
 ]
@@ -137,6 +147,8 @@ LOADED_STATUS_MESSAGES = {
     "step_too_small": "the integrator could not meet its tolerance; values as reached",
     "no_onset": "the load left the static-friction set but no slip direction was found "
     "(a solver failure); the run ends there with the body at rest",
+    "indeterminate": "no contact mode of the pusher is consistent (a Painleve-type case, or "
+    "no quasi-static balance); the run ends there, values as reached",
 }
 
 #: one-line explanation of each loaded ending
@@ -148,6 +160,12 @@ LOADED_ENDING_MESSAGES = {
     "steady_sliding": "sliding at t_end under a constant load at a speed that no longer "
     "changes (by less than 1e-6 of itself over the run)",
 }
+
+#: contact modes of a point pusher, indexed by the integer mode codes of the pushed results
+PUSH_MODES = ("separated", "sticking", "sliding_left", "sliding_right")
+
+#: status names of a pushed run (``PushedTrajectory.status``, ``QuasiStaticPush.status``)
+PUSHED_STATUSES = ("ok", "max_steps", "max_phases", "step_too_small", "no_onset", "indeterminate")
 
 #: the loaded run reached its end: converged
 LOADED_CONVERGED = frozenset({"ok"})

@@ -51,6 +51,8 @@ if TYPE_CHECKING:
     import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
 
     from slidespin.motion.loaded_trajectory import LoadedTrajectory
+    from slidespin.motion.pushed_trajectory import PushedTrajectory
+    from slidespin.motion.pushers import LinePusher, PointPusher
 
 __all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "status_name"]
 
@@ -368,6 +370,7 @@ def simulate(
     incline: None = ...,
     t_end: None = ...,
     scan_step: float | None = ...,
+    pusher: None = ...,
 ) -> Trajectory: ...
 
 
@@ -385,6 +388,7 @@ def simulate(
     incline: Incline | None = ...,
     t_end: float | None = ...,
     scan_step: float | None = ...,
+    pusher: None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -402,6 +406,7 @@ def simulate(
     incline: Incline,
     t_end: float | None = ...,
     scan_step: float | None = ...,
+    pusher: None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -419,6 +424,7 @@ def simulate(
     incline: Incline | None = ...,
     t_end: float,
     scan_step: float | None = ...,
+    pusher: None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -436,7 +442,26 @@ def simulate(
     incline: Incline | None = ...,
     t_end: float | None = ...,
     scan_step: float | None = ...,
-) -> Trajectory | LoadedTrajectory: ...
+    pusher: PointPusher | LinePusher,
+) -> PushedTrajectory: ...
+
+
+@overload
+def simulate(
+    body: Body,
+    friction: FrictionTensor,
+    initial_state: State,
+    g: float = ...,
+    rtol: float = ...,
+    *,
+    max_steps: int = ...,
+    max_step: float | None = ...,
+    load: Load | None = ...,
+    incline: Incline | None = ...,
+    t_end: float | None = ...,
+    scan_step: float | None = ...,
+    pusher: PointPusher | LinePusher | None = ...,
+) -> Trajectory | LoadedTrajectory | PushedTrajectory: ...
 
 
 def simulate(
@@ -452,7 +477,8 @@ def simulate(
     incline: Incline | None = None,
     t_end: float | None = None,
     scan_step: float | None = None,
-) -> Trajectory | LoadedTrajectory:
+    pusher: PointPusher | LinePusher | None = None,
+) -> Trajectory | LoadedTrajectory | PushedTrajectory:
     """Integrate the motion of ``body`` from ``initial_state`` until it stops.
 
     Parameters
@@ -498,15 +524,21 @@ def simulate(
         :data:`slidespin.motion.loaded.SCAN_STEP_MAX` = 1 ms (for runs up to 200 s); an excursion
         of a callable load beyond static friction lasting longer than the step is always
         found. Piecewise-linear loads are also checked at every sample time.
+    pusher : PointPusher or LinePusher, optional
+        A pusher with a prescribed motion (MODEL §13): the contact decides the force. Needs
+        ``t_end``; runs :func:`slidespin.motion.pushed.simulate_pushed` (with ``load`` and
+        ``incline`` if given; ``max_step`` and ``scan_step`` do not apply and are refused).
 
     Returns
     -------
-    Trajectory, or LoadedTrajectory
+    Trajectory, LoadedTrajectory or PushedTrajectory
         A :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory` (with stick and slip
         phases and the energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
         :func:`slidespin.motion.loaded.simulate_loaded` (every patch that runs without a
         load, the ``Blade`` included). Otherwise a :class:`Trajectory`, whose last row is
-        the stop and holds the terminal values (ϑ*, β*) as limits along the motion.
+        the stop and holds the terminal values (ϑ*, β*) as limits along the motion. A
+        :class:`~slidespin.motion.pushed_trajectory.PushedTrajectory` (the pusher's force,
+        the contact point and mode over time, the energy balance) when ``pusher`` is given.
 
     Notes
     -----
@@ -537,6 +569,9 @@ def simulate(
                 "0.001]); pass load=, incline=, t_end= by keyword, e.g. "
                 "simulate(body, friction, state, load=load, t_end=2.0)"
             )
+    if pusher is not None:
+        return _pushed(body, friction, initial_state, g, rtol, max_steps, max_step, load,
+                       incline, t_end, scan_step, pusher)  # fmt: skip
     if load is not None or incline is not None or t_end is not None:
         # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11),
         # imported when first needed (a free run's first demo need not load it: ~0.1 s)
@@ -700,3 +735,27 @@ def _terminal_values(
             return ending, 0.0, float(theta_star)
     # mixed, or not converged: the direction as reached
     return ending, float(beta_nat), float(theta_star)
+
+
+def _pushed(body, friction, state, g, rtol, max_steps, max_step, load, incline, t_end, scan_step,
+            pusher):  # fmt: skip
+    """``simulate(..., pusher=...)``: the pushed dynamics (MODEL §13), after the checks that
+    belong to ``simulate``'s own options."""
+    # imported when first needed, like the loaded engine
+    from slidespin.motion.pushed import simulate_pushed
+
+    if t_end is None:
+        raise ValueError(
+            "t_end = None is invalid with a pusher (a pushed body need not stop); valid "
+            "values: a time bound in (0, 1e9] s, e.g. the end of the pusher's path"
+        )
+    for name, val in (("max_step", max_step), ("scan_step", scan_step)):
+        if val is not None:
+            raise ValueError(
+                f"{name} = {v._short(val)} is invalid with a pusher (it applies to free and "
+                "loaded runs only); valid values: None"
+            )
+    return simulate_pushed(
+        body, friction, state, pusher, t_end, g=g, rtol=rtol, max_steps=max_steps, load=load,
+        incline=incline,
+    )  # fmt: skip
