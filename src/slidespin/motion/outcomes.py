@@ -10,9 +10,10 @@ Statuses (is the reported stop a property of the motion, independent of solver s
                           independent of ``rtol`` and ``max_step`` to the documented accuracy.
 ``marginal``              The direction of motion approaches a fixed point of the sphere flow
                           at which an eigenvalue vanishes (a Table 2 boundary or its analogue):
-                          the approach is algebraic, not exponential. The reported ending, β*
-                          and ϑ* are the analytic limit (the fixed point), t_stop and the
-                          position are converged.
+                          the approach is algebraic, not exponential (or, measured, slower
+                          than a halving of the distance while ln s falls by 720). The
+                          reported ending, β* and ϑ* are the analytic limit (the fixed
+                          point), t_stop and the position are converged.
 ``saddle``                The motion passes so close to an unstable (saddle) fixed point that
                           round-off, not the physics, chooses where it goes next; this happens
                           at an energy far below any physical scale. The reported ending, β*
