@@ -67,8 +67,9 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.motion.pushed_trajectory import PushedTrajectory
     from slidespin.motion.pushers import LinePusher, PointPusher
     from slidespin.motion.quasi_static import QuasiStaticPush, push_quasi_static
-    from slidespin.motion.simulate import Trajectory, simulate
+    from slidespin.motion.simulate import simulate
     from slidespin.motion.state import State
+    from slidespin.motion.trajectory import Trajectory
     from slidespin.studies.case import Case, load_case
     from slidespin.studies.sweep import SweepResult, sweep
     from slidespin.studies.sweep_read import read_sweep
@@ -145,7 +146,7 @@ _HOMES = {
     "PointPusher": "slidespin.motion.pushers",
     "QuasiStaticPush": "slidespin.motion.quasi_static",
     "push_quasi_static": "slidespin.motion.quasi_static",
-    "Trajectory": "slidespin.motion.simulate",
+    "Trajectory": "slidespin.motion.trajectory",
     "simulate": "slidespin.motion.simulate",
     "State": "slidespin.motion.state",
     "Case": "slidespin.studies.case",

@@ -1,5 +1,5 @@
 """Notebook summaries of results: the short HTML table behind every ``_repr_html_`` of a
-result (:class:`~slidespin.motion.simulate.Trajectory`,
+result (:class:`~slidespin.motion.trajectory.Trajectory`,
 :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`,
 :class:`~slidespin.motion.batch.StopResults`); no arrays, only the summary values.
 """

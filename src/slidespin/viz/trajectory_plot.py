@@ -6,7 +6,7 @@ matplotlib is imported lazily, only by the functions that draw. The figures are 
 fixed margins (no layout engine), and through pyplot only when pyplot is already imported (an
 interactive session or a notebook, where ``plt.show()`` shows them); otherwise they are bare
 figures on an Agg canvas, for ``savefig``. Every function takes data objects (a
-:class:`~slidespin.motion.simulate.Trajectory` or a
+:class:`~slidespin.motion.trajectory.Trajectory` or a
 :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`), draws on the axes it is given
 or creates a figure, and returns the axes or the figure; nothing here computes physics.
 """
