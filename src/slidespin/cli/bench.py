@@ -92,7 +92,7 @@ def configure(parser) -> None:
     parser.add_argument(
         "--quick",
         action="store_true",
-        help="smaller samples and a 10 s naive time box (under a minute)",
+        help="smaller samples and a 10 s naive time box (about 2 min on 2 shared cores)",
     )
     parser.add_argument(
         "--naive-seconds",
