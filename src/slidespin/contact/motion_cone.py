@@ -282,6 +282,9 @@ class MotionCone:
     residuals : ndarray (2,)
         |Ŵ(û) + ŵ| per edge (unit vectors): how exactly the friction wrench of each edge
         twist opposes its pusher wrench.
+
+    The cone also reads as its two edge rows: ``np.asarray(cone)`` is :attr:`edges`,
+    ``cone[0]`` and ``cone[1]`` the edges, and ``upper, lower = cone`` unpacks them.
     """
 
     edges: NDArray[np.float64]
@@ -293,6 +296,20 @@ class MotionCone:
     residuals: NDArray[np.float64]
     body: Body
     friction: FrictionTensor
+
+    # the cone reads as its two edge rows: np.asarray(cone) is ``edges`` (2, 3), cone[0] and
+    # cone[1] are the edges, and ``upper, lower = cone`` unpacks them
+    def __array__(self, dtype=None, copy=None) -> NDArray[np.float64]:
+        return np.array(self.edges, dtype=dtype)
+
+    def __len__(self) -> int:
+        return 2
+
+    def __getitem__(self, index):
+        return self.edges[index]
+
+    def __iter__(self):
+        return iter(self.edges)
 
     @property
     def rotation_centres(self) -> NDArray[np.float64]:
