@@ -23,7 +23,7 @@ has t = t₁√(aπ/g) (MODEL §7, erratum 2).
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, overload
+from typing import TYPE_CHECKING, Any, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -110,6 +110,7 @@ def simulate(
     t_end: None = ...,
     scan_step: float | None = ...,
     pusher: None = ...,
+    outline: None = ...,
 ) -> Trajectory: ...
 
 
@@ -128,6 +129,7 @@ def simulate(
     t_end: float | None = ...,
     scan_step: float | None = ...,
     pusher: None = ...,
+    outline: None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -146,6 +148,7 @@ def simulate(
     t_end: float | None = ...,
     scan_step: float | None = ...,
     pusher: None = ...,
+    outline: None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -164,6 +167,7 @@ def simulate(
     t_end: float,
     scan_step: float | None = ...,
     pusher: None = ...,
+    outline: None = ...,
 ) -> LoadedTrajectory: ...
 
 
@@ -182,6 +186,7 @@ def simulate(
     t_end: float | None = ...,
     scan_step: float | None = ...,
     pusher: PointPusher | LinePusher,
+    outline: Any = ...,
 ) -> PushedTrajectory: ...
 
 
@@ -200,6 +205,7 @@ def simulate(
     t_end: float | None = ...,
     scan_step: float | None = ...,
     pusher: PointPusher | LinePusher | None = ...,
+    outline: Any = ...,
 ) -> Trajectory | LoadedTrajectory | PushedTrajectory: ...
 
 
@@ -217,6 +223,7 @@ def simulate(
     t_end: float | None = None,
     scan_step: float | None = None,
     pusher: PointPusher | LinePusher | None = None,
+    outline: Any = None,
 ) -> Trajectory | LoadedTrajectory | PushedTrajectory:
     """Integrate the motion of ``body`` from ``initial_state`` until it stops.
 
@@ -267,6 +274,11 @@ def simulate(
         A pusher with a prescribed motion (MODEL §13): the contact decides the force. Needs
         ``t_end``; runs :func:`slidespin.motion.pushed.simulate_pushed` (with ``load`` and
         ``incline`` if given; ``max_step`` and ``scan_step`` do not apply and are refused).
+    outline : array_like (n, 2), Ellipse or None, optional
+        With a pusher: the outline the pusher touches, in the body frame [m] (a polygon's
+        vertices, or an ellipse), when the body is wider than its contact patch; default the
+        footprint's convex hull (:func:`slidespin.contact.outline.body_outline`). Refused
+        without a pusher.
 
     Returns
     -------
@@ -310,7 +322,12 @@ def simulate(
             )
     if pusher is not None:
         return _pushed(body, friction, initial_state, g, rtol, max_steps, max_step, load,
-                       incline, t_end, scan_step, pusher)  # fmt: skip
+                       incline, t_end, scan_step, pusher, outline)  # fmt: skip
+    if outline is not None:
+        raise ValueError(
+            f"outline = {v._short(outline)} is invalid without a pusher (it is the outline a "
+            "pusher touches); valid values: None"
+        )
     if load is not None or incline is not None or t_end is not None:
         # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11),
         # imported when first needed (a free run's first demo need not load it: ~0.1 s)
@@ -477,7 +494,7 @@ def _terminal_values(
 
 
 def _pushed(body, friction, state, g, rtol, max_steps, max_step, load, incline, t_end, scan_step,
-            pusher):  # fmt: skip
+            pusher, outline):  # fmt: skip
     """``simulate(..., pusher=...)``: the pushed dynamics (MODEL §13), after the checks that
     belong to ``simulate``'s own options."""
     # imported when first needed, like the loaded engine
@@ -496,5 +513,5 @@ def _pushed(body, friction, state, g, rtol, max_steps, max_step, load, incline, 
             )
     return simulate_pushed(
         body, friction, state, pusher, t_end, g=g, rtol=rtol, max_steps=max_steps, load=load,
-        incline=incline,
+        incline=incline, outline=outline,
     )  # fmt: skip
