@@ -26,6 +26,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin import paper
     from slidespin.analysis.fit import FitWarning, IdentifiabilityWarning, compare_frames, fit
     from slidespin.analysis.fit_data import read_runs
+    from slidespin.analysis.fit_push import PushFitResult, fit_pushes
     from slidespin.analysis.fit_result import FitResult
     from slidespin.analysis.intervals import (
         InertiaIntervals,
@@ -35,6 +36,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
         paper_inertia_intervals,
     )
     from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
+    from slidespin.analysis.push_data import PushRun, read_push, read_pushes
     from slidespin.analysis.terminal import TerminalState, terminal_ratio, terminal_states
     from slidespin.contact.body import Body
     from slidespin.contact.ellipse import Ellipse
@@ -87,6 +89,11 @@ _HOMES = {
     "compare_frames": "slidespin.analysis.fit",
     "fit": "slidespin.analysis.fit",
     "read_runs": "slidespin.analysis.fit_data",
+    "PushFitResult": "slidespin.analysis.fit_push",
+    "fit_pushes": "slidespin.analysis.fit_push",
+    "PushRun": "slidespin.analysis.push_data",
+    "read_push": "slidespin.analysis.push_data",
+    "read_pushes": "slidespin.analysis.push_data",
     "FitResult": "slidespin.analysis.fit_result",
     "InertiaIntervals": "slidespin.analysis.intervals",
     "circle_terminal_ratio": "slidespin.analysis.intervals",
@@ -235,6 +242,12 @@ __all__ = [
     "compare_frames",
     "FitWarning",
     "IdentifiabilityWarning",
+    # analysis: pushing data and their fit (MODEL §12-13)
+    "read_push",
+    "read_pushes",
+    "PushRun",
+    "fit_pushes",
+    "PushFitResult",
     # studies: case files and sweeps
     "Case",
     "load_case",

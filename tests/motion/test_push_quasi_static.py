@@ -195,7 +195,9 @@ def test_bad_inputs_name_the_parameter(box, kwargs, word):
     assert "\n" not in str(err.value)
 
 
-def test_line_pusher_refused_clearly(box):
+def test_line_pusher_dispatched(box):
+    # a line pusher goes to slidespin.motion.quasi_static_line (tested in
+    # test_push_line_quasi_static.py), with the same result type
     line = LinePusher(0.2, [(0.0, -0.3, 0.0, math.pi / 2), (1.0, 0.0, 0.0, math.pi / 2)])
-    with pytest.raises(ValueError, match="pusher"):
-        push_quasi_static(box, ISO, line, [0.0, 1.0])
+    r = push_quasi_static(box, ISO, line, [0.0, 0.5])
+    assert r.status == "ok" and r.mode[-1] == "face_sticking" and r.modes[0] == "separated"

@@ -280,7 +280,7 @@ FINGER = PointPusher.constant_velocity((-0.1, 0.0), (0.5, 0.0), 1.0)
         ({"t_end": math.nan}, "t_end"),
         ({"t_end": -1.0}, "t_end"),
         ({"pusher": "finger"}, "pusher"),
-        ({"pusher": LinePusher(0.1, [(0.0, -0.1, 0.0, math.pi / 2)])}, "pusher"),
+        ({"pusher": LinePusher(0.1, [(0.0, 0.0, 0.0, math.pi / 2)])}, "pusher = .*inside"),
         ({"pusher": PointPusher([(0.0, 0.0, 0.0)])}, "inside"),
         ({"state": (0.0, 0.0)}, "state"),
         ({"rtol": 0.0}, "rtol"),

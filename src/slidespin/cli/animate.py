@@ -2,7 +2,8 @@
 
 Reads a case file (:func:`slidespin.studies.case.load_case`), simulates it with the same settings as
 ``slidespin simulate`` (to the stop, or through stick and slip up to ``t_end`` for a case with
-``[load]``, ``[incline]`` or ``[solver] t_end``) and writes the GIF of
+``[load]``, ``[incline]`` or ``[solver] t_end``, or pushed along its path for a case with
+``[pusher]``, the pusher drawn in every frame) and writes the GIF of
 :func:`slidespin.viz.animate.animate`.
 The output path, its format (``.gif``), ``--fps`` and ``--frames`` are checked before the case
 is read or anything is computed. Plugin of :mod:`slidespin.cli.main` (``configure(parser)``,
@@ -78,7 +79,14 @@ def run(args) -> int:
     _check_int("--frames", args.frames, 2, MAX_FRAMES)
 
     case = load_case(args.case)
-    if getattr(case, "loaded", False):
+    pushed = getattr(case, "pusher", None) is not None
+    if pushed:
+        # [pusher]: the pushed dynamics, as `slidespin simulate` runs it
+        from slidespin.cli._pushed import exit_status, simulate_case
+
+        traj = simulate_case(case)
+        status = exit_status(traj.status)
+    elif getattr(case, "loaded", False):
         # [load], [incline] or t_end: the stick-slip engine, as `slidespin simulate` runs it
         traj = simulate(
             case.body,
@@ -107,7 +115,10 @@ def run(args) -> int:
         os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
     animate(traj, out, fps=args.fps, frames=args.frames, title=case.name or None)
     print(f"case        : {case.name or args.case}")
-    print(f"status      : {traj.status}  (ending {traj.ending}, t_stop {traj.t_stop:.6g} s)")
+    if pushed:
+        print(f"status      : {traj.status}  (pushed to t = {float(traj.t[-1]):.6g} s)")
+    else:
+        print(f"status      : {traj.status}  (ending {traj.ending}, t_stop {traj.t_stop:.6g} s)")
     print(
         f"animation   : {out}  ({args.frames} frames at {args.fps} fps, "
         f"{os.path.getsize(out) / 1024:.0f} KiB)"

@@ -53,6 +53,7 @@ CHANNELS = ("x", "y", "phi")
 _COASTING = "the fit models a body coasting on a level plane; fitting under loads is not supported"
 #: what a case file may give that ``slidespin fit`` cannot honour (refused, never ignored)
 UNUSED = (
+    ("pusher", None, _COASTING + "; slidespin simulate runs a pushed case"),
     ("load", None, _COASTING),
     ("incline", None, _COASTING),
     ("solver", ("t_end",), _COASTING + " (each run ends at its last measured time)"),
@@ -166,7 +167,7 @@ def load_fit_case(path):
 
     Returns the :class:`~slidespin.studies.case.Case` (at rest at the origin without ``[initial]``)
     and whether the file had an ``[initial]`` table. What the fit cannot honour
-    (:data:`UNUSED`: loads, a tilt, ``t_end``, ``max_steps``) is refused, naming the file and
+    (:data:`UNUSED`: a pusher, loads, a tilt, ``t_end``, ``max_steps``) is refused, naming the file and
     the key.
     """
     case, data = _read_fit_case(path)

@@ -28,6 +28,11 @@ _NO_MOTION = "the limit surface is a property of the contact; it integrates no m
 #: what a case file may give that ``slidespin limit-surface`` cannot honour (refused)
 UNUSED = (
     (
+        "pusher",
+        None,
+        "the limit surface is the friction's alone; slidespin simulate runs a pushed case",
+    ),
+    (
         "load",
         None,
         "the limit surface is the friction's alone; slidespin simulate runs a loaded case",

@@ -9,8 +9,9 @@ which file; outputs are written whole or not at all. Unexpected internal errors 
 message asking for a report and exit with status 3; ``--debug`` shows the traceback.
 
 Exit status: 0 success; 1 the command ran but a result did not converge (a case whose status
-is ``max_steps``, ``step_too_small`` or ``non_finite``, or a loaded run whose status is
-``max_steps``, ``max_phases``, ``step_too_small`` or ``no_onset``; see
+is ``max_steps``, ``step_too_small`` or ``non_finite``, a loaded run whose status is
+``max_steps``, ``max_phases``, ``step_too_small`` or ``no_onset``, or a pushed run (a case
+with ``[pusher]``) whose status is not ``ok``; see
 :mod:`slidespin.motion.outcomes`); 2 bad input or a failed write; 3 internal error.
 
 Files written without an explicit path go to ``./slidespin-out/`` (:data:`DEFAULT_OUT_DIR`),
@@ -165,6 +166,11 @@ def _run_case(case, args) -> int:
     if args.csv:
         check_output_path(args.csv, "--csv")
     distinct_outputs((args.plot, "--plot"), (args.csv, "--csv"))
+    if getattr(case, "pusher", None) is not None:
+        # a [pusher]: the pushed dynamics (MODEL §13)
+        from slidespin.cli._pushed import run_pushed_case
+
+        return run_pushed_case(case, args)
     if case.loaded:
         return _run_loaded_case(case, args)
     # the same recorded points whatever the outputs asked for (CSV rows never depend on --plot)

@@ -16,8 +16,8 @@ ellipses), any footprint, pressure law and friction tensor, and
 :func:`slidespin.limit_surface` put the same edges: the number the field lacks.
 
 Symbols and code names: c → ``contact`` (body frame C ξ η, like footprint vertices), n →
-``normal``, μp → ``mu``, û± → :attr:`MotionCone.edges` as unit (vx, vy, ω ℓ) with ℓ =
-:attr:`slidespin.Body.length_unit`, w± → :attr:`MotionCone.wrenches`.
+``normal``, μp → ``mu``, û± → ``MotionCone.edges`` as unit (vx, vy, ω ℓ) with ℓ =
+:attr:`slidespin.Body.length_unit`, w± → ``MotionCone.wrenches``.
 """
 
 from __future__ import annotations
@@ -268,7 +268,7 @@ class MotionCone:
     Attributes
     ----------
     edges : ndarray (2, 3)
-        The edge twists û± at G as unit rows (vx, vy, ω ℓ), ℓ = :attr:`length`, in the order
+        The edge twists û± at G as unit rows (vx, vy, ω ℓ), ℓ = ``length``, in the order
         (n + μ t edge, n − μ t edge).
     wrenches : ndarray (2, 3)
         The pusher wrenches w± = (fx, fy, M) [1, 1, m] of the unit-normal-load forces
@@ -283,7 +283,7 @@ class MotionCone:
         |Ŵ(û) + ŵ| per edge (unit vectors): how exactly the friction wrench of each edge
         twist opposes its pusher wrench.
 
-    The cone also reads as its two edge rows: ``np.asarray(cone)`` is :attr:`edges`,
+    The cone also reads as its two edge rows: ``np.asarray(cone)`` is ``edges``,
     ``cone[0]`` and ``cone[1]`` the edges, and ``upper, lower = cone`` unpacks them.
     """
 
@@ -547,7 +547,7 @@ class StablePushing:
     def compare_fits(self, surface=None, n: int = 400) -> FitComparison:
         """The corners the ellipsoid and quartic fits of :func:`slidespin.limit_surface`
         predict (as :meth:`MotionCone.compare_fits`), rows in the order of
-        :attr:`generators`, with their angles [rad] from the exact corners."""
+        ``generators``, with their angles [rad] from the exact corners."""
         ell, quart = _fit_twists(self.generators, self.body, self.friction, surface, n, self.length)
         return FitComparison(ell, quart, _angle(ell, self.corners), _angle(quart, self.corners))
 

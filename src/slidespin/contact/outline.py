@@ -177,11 +177,11 @@ class Outline:
 
     Build it with :func:`body_outline`. Two kinds:
 
-    * ``kind == "ellipse"``: :attr:`centre` (relative to G), :attr:`axes` (a, b) [m] and
-      :attr:`angle` [rad] of the a-axis from the body axis ξ (a circle: a = b);
-    * ``kind == "hull"``: the convex hull of the discs :attr:`discs` (k, 3) rows
+    * ``kind == "ellipse"``: ``centre`` (relative to G), ``axes`` (a, b) [m] and
+      ``angle`` [rad] of the a-axis from the body axis ξ (a circle: a = b);
+    * ``kind == "hull"``: the convex hull of the discs ``discs`` (k, 3) rows
       (cx, cy, r) [m], r ≥ 0, counter-clockwise; a polygon has r = 0 for all rows (its
-      vertices, :attr:`vertices`). :attr:`edge_angles` [rad]: the outward normal angle of the
+      vertices, :attr:`vertices`). ``edge_angles`` [rad]: the outward normal angle of the
       straight segment from disc k to disc k + 1 (a polygon's edges).
 
     Attributes
@@ -226,7 +226,7 @@ class Outline:
 
     @property
     def edge_normals(self) -> NDArray[np.float64]:
-        """Inward unit normals (k, 2) of :attr:`edges`."""
+        """Inward unit normals (k, 2) of ``edges``."""
         return -np.column_stack((np.cos(self.edge_angles), np.sin(self.edge_angles)))
 
     def normal_cone(self, index: int) -> tuple[NDArray[np.float64], NDArray[np.float64]]:

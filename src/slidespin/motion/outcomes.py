@@ -57,6 +57,11 @@ quasi-static balance): the run ends there, values as reached. The contact modes 
 pusher (:data:`PUSH_MODES`): ``separated``, ``sticking``, ``sliding_left`` and ``sliding_right``
 (the finger slides towards +t = ẑ × n over the body, n the inward normal: to its left looking
 into the body; the tangential force is then +μp λn along t, and −μp λn for ``sliding_right``).
+A line pusher (:mod:`slidespin.motion.pushed_line`) adds ``face_sticking``,
+``face_sliding_left`` and ``face_sliding_right`` (a body edge flush with its face, carrying a
+line load whose resultant lies on the shared segment), ``vertex_*`` (a body vertex on its face)
+and ``end_*`` (its end on a body edge), each ``*_sticking``, ``*_sliding_left`` or
+``*_sliding_right`` in the same sense.
 
 Loaded endings: ``stopped_stuck`` (moved, and is at rest and held at the end),
 ``at_rest_throughout`` (static friction held it over the whole run), ``moving_at_t_end``
@@ -84,6 +89,7 @@ __all__ = [
     "LOADED_UNCONVERGED",
     "PUSH_MODES",
     "PUSHED_STATUSES",
+    "PUSHED_STATUS_MESSAGES",
     "status_message",
     "ending_message",
 ]
@@ -148,8 +154,6 @@ LOADED_STATUS_MESSAGES = {
     "step_too_small": "the integrator could not meet its tolerance; values as reached",
     "no_onset": "the load left the static-friction set but no slip direction was found "
     "(a solver failure); the run ends there with the body at rest",
-    "indeterminate": "no contact mode of the pusher is consistent (a Painleve-type case, or "
-    "no quasi-static balance); the run ends there, values as reached",
 }
 
 #: one-line explanation of each loaded ending
@@ -162,11 +166,37 @@ LOADED_ENDING_MESSAGES = {
     "changes (by less than 1e-6 of itself over the run)",
 }
 
-#: contact modes of a point pusher, indexed by the integer mode codes of the pushed results
-PUSH_MODES = ("separated", "sticking", "sliding_left", "sliding_right")
+#: contact modes of a pusher, indexed by the integer mode codes of the pushed results: a point
+#: pusher's (0–3), then a line pusher's (4–12): its face flush with an edge of the body
+#: (``face_*``), a body vertex on its face (``vertex_*``), its end on a body edge (``end_*``)
+PUSH_MODES = (
+    "separated",
+    "sticking",
+    "sliding_left",
+    "sliding_right",
+    "face_sticking",
+    "face_sliding_left",
+    "face_sliding_right",
+    "vertex_sticking",
+    "vertex_sliding_left",
+    "vertex_sliding_right",
+    "end_sticking",
+    "end_sliding_left",
+    "end_sliding_right",
+)
 
 #: status names of a pushed run (``PushedTrajectory.status``, ``QuasiStaticPush.status``)
 PUSHED_STATUSES = ("ok", "max_steps", "max_phases", "step_too_small", "no_onset", "indeterminate")
+
+#: one-line explanation of each pushed status (the loaded ones, and ``indeterminate``)
+PUSHED_STATUS_MESSAGES = {
+    **LOADED_STATUS_MESSAGES,
+    "max_phases": "more mode switches and path knots than max_phases; values as reached",
+    "no_onset": "a separated body at rest under a load beyond static friction (its slow start "
+    "is not integrated in a pushed run); the run ends there",
+    "indeterminate": "no contact mode of the pusher is consistent (a Painleve-type case, or "
+    "no quasi-static balance); the run ends there, values as reached",
+}
 
 #: the loaded run reached its end: converged
 LOADED_CONVERGED = frozenset({"ok"})
@@ -185,22 +215,29 @@ def _lookup(kind: str, name: str, messages: dict[str, str], names: tuple[str, ..
         ) from None
 
 
-def status_message(status: str, *, loaded: bool = False) -> str:
+def status_message(status: str, *, loaded: bool = False, pushed: bool = False) -> str:
     """One-line explanation of a status name.
 
     Parameters
     ----------
     status : str
-        A name of :data:`STATUSES`, or of :data:`LOADED_STATUSES` with ``loaded=True``.
+        A name of :data:`STATUSES`, of :data:`LOADED_STATUSES` with ``loaded=True``, or of
+        :data:`PUSHED_STATUSES` with ``pushed=True``.
     loaded : bool, default False
         Explain the status of a loaded run
         (:class:`slidespin.motion.loaded_trajectory.LoadedTrajectory`).
+    pushed : bool, default False
+        Explain the status of a pushed run
+        (:class:`slidespin.motion.pushed_trajectory.PushedTrajectory`,
+        :class:`slidespin.motion.quasi_static.QuasiStaticPush`).
 
     Raises
     ------
     ValueError
         If ``status`` is not in the vocabulary chosen by ``loaded``.
     """
+    if pushed:
+        return _lookup("status", status, PUSHED_STATUS_MESSAGES, PUSHED_STATUSES)
     if loaded:
         return _lookup("status", status, LOADED_STATUS_MESSAGES, LOADED_STATUSES)
     return _lookup("status", status, STATUS_MESSAGES, STATUSES)

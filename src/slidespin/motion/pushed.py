@@ -41,9 +41,13 @@ dissipation (∫ μp λn |u·t| dt) + impact losses, each integrated with the mo
 
 The outline is :func:`slidespin.contact.outline.body_outline`'s (the footprint's convex hull,
 an ellipse or a circle, or ``outline=``), relative to G. Not handled (a ``ValueError`` before
-any work): hulls mixing arcs and straight segments (pads with disks), and a line pusher. A
+any work): hulls mixing arcs and straight segments (pads with disks). A
 finger touching a polygon exactly at a corner takes the normal of the edge its position
 projects on (a corner has no normal); a finger sliding off a corner separates there.
+
+A :class:`~slidespin.motion.pushers.LinePusher` is handed to
+:func:`slidespin.motion.pushed_line.simulate_line` (face, vertex and end contacts); the outline,
+path and stepping helpers shared by both engines are in :mod:`slidespin.motion._pushed_geometry`.
 
 Integration: :class:`scipy.integrate.DOP853` stepped phase by phase (restarted at every
 switch and path knot, landing on the knots exactly), in the time t while in contact and in
@@ -58,16 +62,16 @@ import math
 import numpy as np
 
 from slidespin import _validate as v
-from slidespin.contact.body import Body, check_body_friction
+from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
-from slidespin.contact.outline import body_outline
-from slidespin.contact.static_set import check_anisotropy
 from slidespin.motion._loaded_problem import _Problem
+from slidespin.motion._pushed_geometry import _Finger, _integrate, _Outline, _rot, check_inputs
 from slidespin.motion._stick_slip import GAUGE_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import PUSH_MODES
-from slidespin.motion.pushed_trajectory import PushedTrajectory
+from slidespin.motion.pushed_line import simulate_line
+from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble
 from slidespin.motion.pushers import LinePusher, PointPusher
 from slidespin.motion.state import State
 
@@ -80,164 +84,6 @@ _GAP_TOL = 1e-13  # [ℓ] a separated finger re-contacts where the gap falls bel
 _CONE_TOL = 1e-12  # relative slack of the friction cone (sticking with μp = 0 and λt = 0)
 _VEL_TOL = 1e-11  # relative velocity [of the speed scale] below which u·n, u·t count as 0
 _STOP_DROP = 1e-13  # a separated body stops when its speed falls below this of its scale
-
-
-def _rot(phi):
-    return math.cos(phi), math.sin(phi)
-
-
-# ------------------------------------------------------------------------------------------
-# the outline (body frame, relative to G, natural units)
-
-
-class _Outline:
-    """Convex outline: a CCW polygon (pieces = edges, s = arc length from the edge's start)
-    or an ellipse (one periodic piece, s = the parametric angle)."""
-
-    def __init__(self, body: Body, a: float, outline=None):
-        ol = body_outline(body, outline)
-        self.poly = ol.kind == "hull"
-        if not self.poly:
-            self.c0 = (float(ol.centre[0]) / a, float(ol.centre[1]) / a)
-            self.A, self.B = ol.axes[0] / a, ol.axes[1] / a
-            self.cb, self.sb = _rot(float(ol.angle))
-            return
-        if not ol.is_polygon:
-            raise ValueError(
-                f"body = {v._short(body)} is invalid for a pushed run: its outline has round "
-                "parts on a hull with straight ones (pads with disks), which the pushing engine "
-                "does not handle yet; valid: a polygonal outline, an ellipse or a circle (give "
-                "outline=)"
-            )
-        hull = np.asarray(ol.vertices, dtype=float) / a
-        self.V = hull
-        e = np.roll(hull, -1, axis=0) - hull
-        self.L = np.hypot(e[:, 0], e[:, 1])
-        self.E = e / self.L[:, None]
-        self.N = np.column_stack((-self.E[:, 1], self.E[:, 0]))  # inward (CCW)
-
-    def gap(self, q0, q1):
-        """An implicit signed gap of the body point (q0, q1): > 0 outside, 0 on the outline."""
-        if self.poly:
-            d = -(self.N[:, 0] * (q0 - self.V[:, 0]) + self.N[:, 1] * (q1 - self.V[:, 1]))
-            return float(d.max())
-        x, y = self._local(q0, q1)
-        x, y = x / self.A, y / self.B
-        return (math.sqrt(x * x + y * y) - 1.0) * min(self.A, self.B)
-
-    def _local(self, q0, q1):
-        dx, dy = q0 - self.c0[0], q1 - self.c0[1]
-        return self.cb * dx + self.sb * dy, -self.sb * dx + self.cb * dy
-
-    def locate(self, q0, q1):
-        """(piece, s) of the outline point nearest to the body point (q0, q1) on the outline."""
-        if self.poly:
-            d = -(self.N[:, 0] * (q0 - self.V[:, 0]) + self.N[:, 1] * (q1 - self.V[:, 1]))
-            i = int(np.argmax(d))
-            s = (q0 - self.V[i, 0]) * self.E[i, 0] + (q1 - self.V[i, 1]) * self.E[i, 1]
-            return i, min(max(s, 0.0), float(self.L[i]))
-        x, y = self._local(q0, q1)
-        return 0, math.atan2(y / self.B, x / self.A)
-
-    def geom(self, piece, s):
-        """Body frame c(s), c'(s), c''(s) and the inward unit normal n(s)."""
-        if self.poly:
-            vx, vy = self.V[piece]
-            ex, ey = self.E[piece]
-            return (vx + s * ex, vy + s * ey), (ex, ey), (0.0, 0.0), tuple(self.N[piece])
-        cs, sn = math.cos(s), math.sin(s)
-        a, b, cb, sb = self.A, self.B, self.cb, self.sb
-        h = math.hypot(b * cs, a * sn)
-
-        def turn(x, y):
-            return cb * x - sb * y, sb * x + cb * y
-
-        c = turn(a * cs, b * sn)
-        return (
-            (self.c0[0] + c[0], self.c0[1] + c[1]),
-            turn(-a * sn, b * cs),
-            turn(-a * cs, -b * sn),
-            turn(-b * cs / h, -a * sn / h),
-        )
-
-
-# ------------------------------------------------------------------------------------------
-# the finger (natural units)
-
-
-class _Finger:
-    """The finger's path as linear segments between the knots where its velocity jumps."""
-
-    def __init__(self, pusher: PointPusher, a: float, tu: float):
-        self.mu = float(pusher.mu)
-        knots = np.unique(np.concatenate(([0.0], np.asarray(pusher.knots, dtype=float))))
-        knots = knots[knots >= 0.0]
-        self.t = knots / tu  # segment starts
-        self.p = np.asarray(pusher.position(knots), dtype=float).reshape(-1, 2) / a
-        self.v = np.asarray(pusher.velocity(knots), dtype=float).reshape(-1, 2) * tu / a
-
-    def segment(self, t):
-        """(index, start, end) of the segment holding the natural time t (right-continuous)."""
-        k = int(np.searchsorted(self.t, t, side="right")) - 1
-        k = max(k, 0)
-        end = float(self.t[k + 1]) if k + 1 < self.t.size else math.inf
-        return k, float(self.t[k]), end
-
-    def pos(self, k, t):
-        dt = t - self.t[k]
-        return self.p[k, 0] + dt * self.v[k, 0], self.p[k, 1] + dt * self.v[k, 1]
-
-
-# ------------------------------------------------------------------------------------------
-# stepping with events
-
-
-def _integrate(fun, t0, y0, t1, events, rtol, atol, budget, rec):
-    """DOP853 from t0 to t1 with terminal events g(t, y) that fire where g falls below 0.
-
-    Returns (reason, t, y, index, steps): reason ``end``, ``event`` (index), ``max_steps``
-    or ``failed``. Every accepted step is passed to ``rec(t, y)``."""
-    from scipy.integrate import DOP853  # lazy: scipy's import cost
-    from scipy.optimize import brentq
-
-    solver = DOP853(fun, t0, y0, t1, rtol=rtol, atol=atol)
-    g_old = [e(t0, y0) for e in events]
-    steps = 0
-    while True:
-        if steps >= budget:
-            return "max_steps", solver.t, solver.y, -1, steps
-        t_old = solver.t
-        solver.step()
-        steps += 1
-        if solver.status == "failed":
-            return "failed", solver.t, solver.y, -1, steps
-        t_new, y_new = solver.t, solver.y
-        g_new = [e(t_new, y_new) for e in events]
-        hits = [i for i, gn in enumerate(g_new) if gn < 0.0]
-        if hits:
-            sol = solver.dense_output()
-            best, t_hit = -1, t_new
-            for i in hits:
-                if g_old[i] < 0.0:
-                    root = t_old  # already beyond at the start: a switch at once
-                else:
-                    f = events[i]
-                    root = brentq(
-                        lambda tt: f(tt, sol(tt)), t_old, t_new, xtol=1e-300, rtol=8.9e-16
-                    )
-                    # the root's far side, so that the switch sees g < 0 (or = 0)
-                    if f(root, sol(root)) > 0.0 and root < t_new:
-                        root = np.nextafter(root, t_new)
-                if root <= t_hit:
-                    best, t_hit = i, root
-            if best >= 0:
-                y_hit = sol(t_hit) if t_hit < t_new else y_new
-                rec(t_hit, y_hit)
-                return "event", t_hit, y_hit, best, steps
-        rec(t_new, y_new)
-        if solver.status == "finished":
-            return "end", t_new, y_new, -1, steps
-        g_old = g_new
 
 
 # ------------------------------------------------------------------------------------------
@@ -730,7 +576,7 @@ def simulate_pushed(
     body: Body,
     friction: FrictionTensor,
     state: State,
-    pusher: PointPusher,
+    pusher: PointPusher | LinePusher,
     t_end: float,
     *,
     g: float = 9.81,
@@ -741,7 +587,7 @@ def simulate_pushed(
     incline: Incline | None = None,
     outline: object = None,
 ) -> PushedTrajectory:
-    """Integrate a body pushed by a finger over [0, t_end] (MODEL §13, with §11's loads).
+    """Integrate a body pushed by a finger or a line pusher over [0, t_end] (MODEL §13, §11).
 
     Parameters
     ----------
@@ -753,8 +599,10 @@ def simulate_pushed(
         outline (within 1e-9 of the body's length unit ℓ: the contact starts there, with a
         plastic impact if it moves into the body) or lies outside it (separated until it
         arrives); a finger inside the body is refused.
-    pusher : PointPusher
-        The finger: its path and μp (:class:`slidespin.motion.pushers.PointPusher`).
+    pusher : PointPusher or LinePusher
+        The finger (:class:`slidespin.motion.pushers.PointPusher`) or a flat pusher
+        (:class:`~slidespin.motion.pushers.LinePusher`, polygonal outlines only; its modes in
+        :mod:`slidespin.motion.pushed_line`): its path and μp.
     t_end : float
         End of the run [s], finite and > 0.
     g : float, default 9.81
@@ -785,32 +633,24 @@ def simulate_pushed(
     MODEL §13: M ν̇ = W(ν) + J_cᵀ λ (+ loads, §11) with the contact modes separated,
     sticking, sliding left and right, plastic impacts, and exact switches (module notes).
     """
-    check_body_friction(body, friction)
-    if load is not None or incline is not None:
-        check_anisotropy(body, friction, "static friction under a load or on an incline")
-    if not isinstance(state, State):
-        raise ValueError(f"state = {v._short(state)} is invalid; valid values: a slidespin.State")
+    t_end, g, rtol = check_inputs(
+        body, friction, state, pusher, t_end, g, rtol, max_steps, max_phases, load, incline
+    )
     if isinstance(pusher, LinePusher):
-        raise ValueError(
-            f"pusher = {v._short(pusher)} is invalid: the dynamics of a line pusher is not "
-            "implemented yet; valid values: a PointPusher"
+        return simulate_line(
+            body,
+            friction,
+            state,
+            pusher,
+            t_end,
+            g=g,
+            rtol=rtol,
+            max_steps=int(max_steps),
+            max_phases=int(max_phases),
+            load=load,
+            incline=incline,
+            outline=outline,
         )
-    if not isinstance(pusher, PointPusher):
-        raise ValueError(f"pusher = {v._short(pusher)} is invalid; valid values: a PointPusher")
-    if load is not None and not isinstance(load, Load):
-        raise ValueError(
-            f"load = {v._short(load)} is invalid; valid values: a slidespin.Load or None"
-        )
-    if incline is not None and not isinstance(incline, Incline):
-        raise ValueError(
-            f"incline = {v._short(incline)} is invalid; valid values: a slidespin.Incline or None"
-        )
-    t_end = v.positive("t_end", t_end, "s")
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    for name, val in (("max_steps", max_steps), ("max_phases", max_phases)):
-        if isinstance(val, bool) or not isinstance(val, (int, np.integer)) or val < 1:
-            raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 1")
     prob = _Problem(body, friction, load, incline, g)
     prob.b(0.0, state.phi)  # the load's range, before any work
     a, tu, vu = prob.a, prob.t_unit, prob.v_unit
@@ -831,58 +671,6 @@ def simulate_pushed(
             f"{_TOUCH:g} of the body's length unit) or outside it"
         )
     status, t_stop = eng.run(t_end / tu, int(max_phases))
-    messages = {
-        "max_steps": f"the budget of max_steps = {max_steps} integrator steps ran out",
-        "max_phases": f"more than max_phases = {max_phases} phases",
-        "step_too_small": "the integrator could not meet its tolerance",
-        "no_onset": "a separated body at rest under a load beyond static friction (its slow "
-        "start is not integrated by the pushing engine)",
-        "indeterminate": "no contact mode is consistent here (a Painleve-type paradox)",
-    }
-    message = "" if status == "ok" else f"{messages[status]} at t = {t_stop * tu:.12g} s"
-    arr = np.array(eng.rows, dtype=float)
-    scale = body.mass * g * a
-    k = prob.k
-    ke = 0.5 * (arr[:, 4] ** 2 + arr[:, 5] ** 2 + (k * arr[:, 6]) ** 2) * scale
-    wp, wf, ws, wl, loss = (arr[:, j] * scale for j in (12, 13, 14, 15, 16))
-    err = abs((ke[-1] - ke[0]) - wf[-1] + ws[-1] + loss[-1] - wp[-1] - wl[-1])
-    codes = arr[:, 11].astype(int)
-    cpt = arr[:, 9:11] * a
-    cpt[codes == _SEP] = math.nan
-    t_si = arr[:, 0] * tu
-    if status == "ok":
-        t_si[-1] = t_end
-    return PushedTrajectory(
-        t=t_si,
-        x=arr[:, 1] * a,
-        y=arr[:, 2] * a,
-        phi=arr[:, 3].copy(),
-        vx=arr[:, 4] * vu,
-        vy=arr[:, 5] * vu,
-        omega=arr[:, 6] / tu,
-        pusher_position=arr[:, 17:19] * a,
-        pusher_force=arr[:, 7:9] * body.mass * g,
-        contact_point=cpt,
-        mode=tuple(PUSH_MODES[c] for c in codes),
-        mode_code=codes,
-        switches=tuple((float(t * tu), m0, m1) for t, m0, m1 in eng.switches),
-        impacts=tuple(
-            (float(t * tu), lx * body.mass * vu, ly * body.mass * vu, e * scale)
-            for t, lx, ly, e in eng.impacts
-        ),
-        kinetic_energy=ke,
-        pusher_work=wp,
-        friction_work=-wf,
-        contact_slip_work=ws,
-        load_work=wl,
-        impact_loss=loss,
-        energy_error=float(err),
-        status=status,
-        message=message,
-        n_rhs=prob.n_rhs,
-        body=body,
-        friction=friction,
-        initial_state=state,
-        pusher=pusher,
-        g=g,
+    return _assemble(
+        eng, status, t_stop, t_end, max_steps, max_phases, prob, body, friction, state, pusher, g
     )

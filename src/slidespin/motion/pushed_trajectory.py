@@ -1,7 +1,8 @@
 """The result of a pushed run (MODEL §13): :class:`PushedTrajectory`, the motion of a body pushed
-by a finger, with the pusher's force, the contact point and mode over time, the switches between
-modes, the plastic impacts and the energy balance (computed by
-:func:`slidespin.motion.pushed.simulate_pushed`).
+by a finger or a line pusher, with the pusher's force, the contact point and mode over time, the
+switches between modes, the plastic impacts and the energy balance (computed by
+:func:`slidespin.motion.pushed.simulate_pushed`, a line pusher's by
+:mod:`slidespin.motion.pushed_line`; ``_assemble`` turns either engine's rows into it).
 
 Energy: pusher work + load work = ΔKE + plane friction dissipation + contact slip dissipation
 + impact losses; ``energy_error`` is the residual (an integration-accuracy check).
@@ -18,11 +19,10 @@ import numpy as np
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.motion._report import _html_table
+from slidespin.motion.outcomes import PUSH_MODES
 from slidespin.motion.state import State
 
 __all__ = ["PushedTrajectory"]
-
-#: the contact modes, indexed by the codes of :attr:`PushedTrajectory.mode_code`
 
 
 @dataclass(frozen=True)
@@ -37,16 +37,23 @@ class PushedTrajectory:
     t, x, y, phi, vx, vy, omega : ndarray
         Time [s], position of G [m], body angle [rad], velocity of G [m/s], spin [rad/s].
     pusher_position : ndarray, shape (n, 2)
-        The finger p(t) [m], plane frame.
+        The finger p(t) [m], plane frame (a line pusher's centre).
     pusher_force : ndarray, shape (n, 2)
         The force λ the finger applies to the body [N], plane frame (0 while separated;
         impulses are in ``impacts``).
     contact_point : ndarray, shape (n, 2)
-        The contact point c [m], plane frame (the finger's position); NaN while separated.
+        The contact point c [m], plane frame (the finger's position; for a line pusher in
+        face contact, the point of the line load's resultant); NaN while separated.
     mode : tuple of str
         Contact mode per row: ``separated``, ``sticking``, ``sliding_left`` (the finger slides
         towards +t = ẑ × n relative to the body, n the inward normal: to its left looking
-        into the body) or ``sliding_right``.
+        into the body) or ``sliding_right``. A line pusher's
+        (:mod:`slidespin.motion.pushed_line`): ``face_sticking``, ``face_sliding_left``,
+        ``face_sliding_right`` (a body edge flush with the pusher's face, a line load whose
+        resultant lies on the shared segment), ``vertex_sticking``, ``vertex_sliding_left``,
+        ``vertex_sliding_right`` (a body vertex on the face, n the face's normal),
+        ``end_sticking``, ``end_sliding_left``, ``end_sliding_right`` (the pusher's end on a
+        body edge, n the edge's normal); left and right in the same sense.
     mode_code : ndarray of int
         The same as indices into :data:`slidespin.motion.outcomes.PUSH_MODES`.
     switches : tuple of (float, str, str)
@@ -172,3 +179,75 @@ class PushedTrajectory:
     def _repr_html_(self) -> str:
         """A short summary table for notebooks (no arrays)."""
         return _html_table("PushedTrajectory", self.summary())
+
+
+_MESSAGES = {
+    "max_steps": "the budget of max_steps = {max_steps} integrator steps ran out",
+    "max_phases": "more than max_phases = {max_phases} phases",
+    "step_too_small": "the integrator could not meet its tolerance",
+    "no_onset": "a separated body at rest under a load beyond static friction (its slow "
+    "start is not integrated by the pushing engine)",
+    "indeterminate": "no contact mode is consistent here (a Painleve-type paradox)",
+}
+
+
+def _assemble(
+    eng, status, t_stop, t_end, max_steps, max_phases, prob, body, friction, state, pusher, g
+) -> PushedTrajectory:
+    """The :class:`PushedTrajectory` of a pushing engine's rows (natural units → SI).
+
+    Each row of ``eng.rows`` is (t, x, y, φ, vx, vy, ω, λx, λy, cx, cy, mode, pusher work,
+    friction work, slip work, load work, impact loss, px, py); ``eng.switches`` holds
+    (t, from, to) and ``eng.impacts`` (t, Λx, Λy, loss), all in natural units."""
+    a, tu, vu = prob.a, prob.t_unit, prob.v_unit
+    if status == "ok":
+        message = ""
+    else:
+        what = _MESSAGES[status].format(max_steps=max_steps, max_phases=max_phases)
+        message = f"{what} at t = {t_stop * tu:.12g} s"
+    arr = np.array(eng.rows, dtype=float)
+    scale = body.mass * g * a
+    k = prob.k
+    ke = 0.5 * (arr[:, 4] ** 2 + arr[:, 5] ** 2 + (k * arr[:, 6]) ** 2) * scale
+    wp, wf, ws, wl, loss = (arr[:, j] * scale for j in (12, 13, 14, 15, 16))
+    err = abs((ke[-1] - ke[0]) - wf[-1] + ws[-1] + loss[-1] - wp[-1] - wl[-1])
+    codes = arr[:, 11].astype(int)
+    cpt = arr[:, 9:11] * a
+    cpt[codes == 0] = math.nan  # separated
+    t_si = arr[:, 0] * tu
+    if status == "ok":
+        t_si[-1] = t_end
+    return PushedTrajectory(
+        t=t_si,
+        x=arr[:, 1] * a,
+        y=arr[:, 2] * a,
+        phi=arr[:, 3].copy(),
+        vx=arr[:, 4] * vu,
+        vy=arr[:, 5] * vu,
+        omega=arr[:, 6] / tu,
+        pusher_position=arr[:, 17:19] * a,
+        pusher_force=arr[:, 7:9] * body.mass * g,
+        contact_point=cpt,
+        mode=tuple(PUSH_MODES[c] for c in codes),
+        mode_code=codes,
+        switches=tuple((float(t * tu), m0, m1) for t, m0, m1 in eng.switches),
+        impacts=tuple(
+            (float(t * tu), lx * body.mass * vu, ly * body.mass * vu, e * scale)
+            for t, lx, ly, e in eng.impacts
+        ),
+        kinetic_energy=ke,
+        pusher_work=wp,
+        friction_work=-wf,
+        contact_slip_work=ws,
+        load_work=wl,
+        impact_loss=loss,
+        energy_error=float(err),
+        status=status,
+        message=message,
+        n_rhs=prob.n_rhs,
+        body=body,
+        friction=friction,
+        initial_state=state,
+        pusher=pusher,
+        g=g,
+    )

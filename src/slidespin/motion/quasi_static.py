@@ -49,6 +49,8 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import Outline, body_outline
 from slidespin.motion.outcomes import PUSH_MODES
+from slidespin.motion.pushers import LinePusher
+from slidespin.motion.quasi_static_line import push_line_quasi_static
 
 __all__ = ["QuasiStaticPush", "push_quasi_static"]
 
@@ -79,12 +81,22 @@ class QuasiStaticPush:
     vx, vy, omega : ndarray
         The quasi-static twist at G [m/s, m/s, rad/s] (right-continuous at switches).
     mode : ndarray of str
-        ``"separated"``, ``"sticking"``, ``"sliding_left"`` or ``"sliding_right"`` (module
-        notes), right-continuous: at a switch time the mode that follows.
+        A finger: ``"separated"``, ``"sticking"``, ``"sliding_left"`` or ``"sliding_right"``
+        (module notes). A line pusher (:mod:`slidespin.motion.quasi_static_line`):
+        ``"separated"``; ``"face_sticking"`` (face flat on a body edge, the body moves with
+        the pusher), ``"face_sliding_left"``, ``"face_sliding_right"`` (face flat, the body
+        slides along it); ``"vertex_sticking"``, ``"vertex_sliding_left"``,
+        ``"vertex_sliding_right"`` (a body vertex, or an ellipse's nearest point, on the
+        pusher's face); ``"end_sticking"``, ``"end_sliding_left"``, ``"end_sliding_right"``
+        (an end of the pusher on a body edge). Rotation about an end of a shared face segment
+        is a ``vertex_*`` mode when that end is a body corner, an ``end_*`` mode when it is
+        the pusher's end. Right-continuous: at a switch time the mode that follows.
     mode_code : ndarray of int
-        The same as indices into :data:`slidespin.motion.outcomes.PUSH_MODES`.
+        The same as indices into ``modes``.
     contact_x, contact_y : ndarray
-        Contact point in the plane frame [m] (the finger's position; NaN when separated).
+        Contact point in the plane frame [m] (the finger's position; in a line pusher's face
+        contact, the point of the shared segment where the line load's resultant acts; NaN
+        when separated).
     force_x, force_y : ndarray
         Force of the pusher on the body in the plane frame [N] (0 when separated).
     switch_times : ndarray
@@ -97,6 +109,10 @@ class QuasiStaticPush:
         :data:`slidespin.motion.outcomes.PUSHED_STATUSES`).
     message : str
         One line on how the run ended.
+    modes : tuple of str
+        The vocabulary ``mode_code`` indexes: :data:`slidespin.motion.outcomes.PUSH_MODES`
+        for a finger, :data:`slidespin.motion.quasi_static_line.LINE_PUSH_MODES` for a line
+        pusher.
     """
 
     t: NDArray[np.float64]
@@ -116,6 +132,7 @@ class QuasiStaticPush:
     switch_modes: tuple[str, ...]
     status: str
     message: str
+    modes: tuple[str, ...] = PUSH_MODES
 
 
 class _NoMode(RuntimeError):
@@ -483,12 +500,8 @@ def _check_inputs(body, friction, pusher, times, start):
         hasattr(pusher, "knots") and hasattr(pusher, "mu")
     ):
         raise ValueError(
-            f"pusher = {v._short(pusher)} is invalid; valid values: a slidespin.PointPusher"
-        )
-    if hasattr(pusher, "length"):
-        raise ValueError(
-            f"pusher = {v._short(pusher)} is invalid: line pushers are not supported by "
-            "push_quasi_static yet; valid values: a slidespin.PointPusher"
+            f"pusher = {v._short(pusher)} is invalid; valid values: a slidespin.PointPusher "
+            "or LinePusher"
         )
     t = v.real_array("times", times)
     if t.ndim != 1 or t.size < 1:
@@ -532,9 +545,11 @@ def push_quasi_static(
         the finger touches.
     friction : FrictionTensor
         Plane friction (isotropic or anisotropic, plane- or body-fixed).
-    pusher : PointPusher
+    pusher : PointPusher or LinePusher
         The finger: a piecewise-linear path (``position``, ``velocity``, ``knots``) and its
-        Coulomb coefficient ``mu`` against the body.
+        Coulomb coefficient ``mu`` against the body; or a flat pusher (a segment with its
+        pose), handled by :func:`slidespin.motion.quasi_static_line.push_line_quasi_static`
+        (face, vertex and end contacts, MODEL §13) with the same parameters.
     times : array_like
         Strictly increasing output times [s]; the motion starts at ``times[0]``.
     start : (x, y, phi), optional
@@ -564,6 +579,11 @@ def push_quasi_static(
     about c either way), every sliding solve a bracketed root of the cone-edge condition over
     the direction of the contact point's velocity.
     """
+    if isinstance(pusher, LinePusher):
+        fields = push_line_quasi_static(
+            body, friction, pusher, times, start, outline=outline, g=g, rtol=rtol
+        )
+        return QuasiStaticPush(**fields)
     t_out, q = _check_inputs(body, friction, pusher, times, start)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.bounded("rtol", rtol, 1e-13, 1e-3)

@@ -1,7 +1,9 @@
 """Cases described in TOML files (``slidespin simulate CASE.toml``).
 
 A case file has the tables ``[patch]``, ``[pressure]``, ``[friction]``, ``[body]``,
-``[initial]`` and optionally ``[solver]`` (see ``examples/*.toml``). The patch is an ellipse
+``[initial]`` and optionally ``[solver]``, ``[load]``, ``[incline]`` and ``[pusher]`` (a finger
+or a flat pusher moved along a path, MODEL §13: :mod:`slidespin.studies.pusher_table`; see
+``examples/*.toml``). The patch is an ellipse
 or a circle (the paper's), or a footprint (MODEL §10): ``shape = "polygon"`` (``vertices =
 [[xi, eta], ...]``), ``"rectangle"`` (``length``, ``width``), ``"annulus"`` (``inner_radius``,
 ``outer_radius``), ``"disk"`` (``radius``), each optionally placed by ``centre = [xi, eta]``
@@ -44,6 +46,7 @@ from slidespin.contact.incline import Incline
 from slidespin.contact.pressure import pressure_law_from_name
 from slidespin.contact.shapes import Annulus, Circle, Disk, Pads, Polygon, Rectangle
 from slidespin.motion.loads import Load
+from slidespin.motion.pushers import LinePusher, PointPusher
 from slidespin.motion.state import State
 from slidespin.studies.load_tables import (
     INCLINE_KEYS,
@@ -51,6 +54,7 @@ from slidespin.studies.load_tables import (
     incline_from_table,
     load_from_table,
 )
+from slidespin.studies.pusher_table import PUSHER_KEYS, pusher_from_table, pusher_t_end
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -143,13 +147,21 @@ _TABLES = {
     "solver": {"g", "rtol", "max_steps", "t_end"},
     "load": set(LOAD_KEYS),
     "incline": set(INCLINE_KEYS),
+    "pusher": set(PUSHER_KEYS),
 }
 _TOP = {"name", "description"}
 
 
 @dataclass(frozen=True, slots=True)
 class Case:
-    """A complete simulation case: body, friction, initial state and solver settings."""
+    """A complete simulation case: body, friction, initial state and solver settings.
+
+    ``load``, ``incline`` and ``t_end`` are the ``[load]``, ``[incline]`` and ``[solver] t_end``
+    of the file (MODEL §11); ``pusher`` and ``outline`` its ``[pusher]`` (MODEL §13: a
+    :class:`~slidespin.motion.pushers.PointPusher` or
+    :class:`~slidespin.motion.pushers.LinePusher`, and the outline it touches, None for the
+    patch's). A pushed case always has ``t_end``: the file's, or the path's last time.
+    """
 
     body: Body
     friction: FrictionTensor
@@ -161,11 +173,22 @@ class Case:
     load: Load | None = None
     incline: Incline | None = None
     t_end: float | None = None
+    pusher: PointPusher | LinePusher | None = None
+    outline: object = None
 
     @property
     def loaded(self) -> bool:
-        """True if the case has applied loads, a tilt or a time bound (MODEL §11)."""
+        """True if the case runs the stick-slip engine (MODEL §11): applied loads, a tilt or a
+        time bound, and no pusher (a pushed case is :attr:`pushed`)."""
+        if self.pusher is not None:
+            return False
         return self.load is not None or self.incline is not None or self.t_end is not None
+
+    @property
+    def pushed(self) -> bool:
+        """True if the case has a ``[pusher]`` (MODEL §13): ``slidespin simulate`` runs
+        :func:`slidespin.simulate` with ``pusher=`` and ``t_end=`` (loads and a tilt too)."""
+        return self.pusher is not None
 
 
 def _angle(table: dict, where: str, key: str, default: float = 0.0) -> float:
@@ -315,7 +338,18 @@ def case_from_dict(data: dict) -> Case:
     t_end = None
     if "t_end" in so:
         t_end = v.in_range("[solver] t_end", so["t_end"], 0.0, 1e9, lo_open=True)
-    return Case(body, friction, state, g, rtol, max_steps, name, load, incline, t_end)
+    pusher = outline = None
+    if "pusher" in data:
+        pusher, outline = pusher_from_table(data["pusher"], body, _footprint_outline)
+        t_end = pusher_t_end(pusher, t_end)
+    return Case(
+        body, friction, state, g, rtol, max_steps, name, load, incline, t_end, pusher, outline
+    )
+
+
+def _footprint_outline(table: dict, where: str):
+    """A ``[pusher] outline`` given as an inline footprint table (no pads)."""
+    return _footprint(table, where, nested=True)
 
 
 def _initial_state(ini: dict) -> State:

@@ -12,7 +12,14 @@ evenly in time from the first recorded instant to the last one (the stop, for a
 angle are interpolated between the integrator's steps by cubic Hermite polynomials on the
 recorded velocities (ẋ = vx, ẏ = vy, φ̇ = ω), the velocities linearly. Any object with arrays
 ``t, x, y, phi, vx, vy, omega`` and a ``body`` works (:class:`~slidespin.Trajectory`,
-:class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`).
+:class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory`,
+:class:`~slidespin.motion.pushed_trajectory.PushedTrajectory`; a pushed run's steps across a
+change of contact mode, whose end row already holds the velocity after the switch, are
+interpolated linearly).
+
+A pushed run (:class:`~slidespin.motion.pushed_trajectory.PushedTrajectory`, MODEL §13) also
+shows its pusher in every frame: a finger as a dot, a line pusher as a segment, with the
+pusher's path dashed.
 
 Geometry (MODEL §1-2): a point r = (ξ, η) of the body frame is drawn at
 G + R(φ)(r − r_G) with r_G = ``body.mass_centre``; the ICR, where the velocity of the body
@@ -83,8 +90,18 @@ def _arrays(trajectory) -> dict:
     return cols
 
 
-def _hermite(t: np.ndarray, y: np.ndarray, dy: np.ndarray, tq: np.ndarray) -> np.ndarray:
-    """Cubic Hermite interpolation of y (slopes dy) at tq; zero-length steps give y[i]."""
+def _hermite(
+    t: np.ndarray,
+    y: np.ndarray,
+    dy: np.ndarray,
+    tq: np.ndarray,
+    linear: np.ndarray | None = None,
+) -> np.ndarray:
+    """Cubic Hermite interpolation of y (slopes dy) at tq; zero-length steps give y[i].
+
+    ``linear`` (one bool per step) marks the steps interpolated linearly instead: a pushed
+    run's step whose end row already holds the velocity after a mode switch or an impact
+    (the slope there is not the step's)."""
     if t.size == 1:
         return np.full(tq.shape, y[0])
     i = np.clip(np.searchsorted(t, tq, side="right") - 1, 0, t.size - 2)
@@ -96,7 +113,21 @@ def _hermite(t: np.ndarray, y: np.ndarray, dy: np.ndarray, tq: np.ndarray) -> np
     h10 = s * (1 - s) ** 2
     h01 = s * s * (3 - 2 * s)
     h11 = s * s * (s - 1)
-    return h00 * y[i] + h10 * h * dy[i] + h01 * y[i + 1] + h11 * h * dy[i + 1]
+    out = h00 * y[i] + h10 * h * dy[i] + h01 * y[i + 1] + h11 * h * dy[i + 1]
+    if linear is not None:
+        lin = linear[i]
+        out = np.where(lin, (1.0 - s) * y[i] + s * y[i + 1], out)
+    return out
+
+
+def _switch_steps(trajectory, n: int) -> np.ndarray | None:
+    """The steps of a pushed run (rows with a ``mode``) whose two rows differ in mode: there
+    the end row holds the velocity after the switch, so the step is interpolated linearly."""
+    mode = getattr(trajectory, "mode", None)
+    if mode is None or isinstance(mode, str) or len(mode) != n or n < 2:
+        return None
+    m = np.asarray(mode)
+    return m[1:] != m[:-1]
 
 
 def _linear(t: np.ndarray, y: np.ndarray, tq: np.ndarray) -> np.ndarray:
@@ -127,11 +158,12 @@ def frame_states(trajectory, frames: int = 60) -> FrameStates:
     c = _arrays(trajectory)
     t = c["t"]
     tq = np.linspace(t[0], t[-1], frames)
+    lin = _switch_steps(trajectory, t.size)
     return FrameStates(
         t=tq,
-        x=_hermite(t, c["x"], c["vx"], tq),
-        y=_hermite(t, c["y"], c["vy"], tq),
-        phi=_hermite(t, c["phi"], c["omega"], tq),
+        x=_hermite(t, c["x"], c["vx"], tq, lin),
+        y=_hermite(t, c["y"], c["vy"], tq, lin),
+        phi=_hermite(t, c["phi"], c["omega"], tq, lin),
         vx=_linear(t, c["vx"], tq),
         vy=_linear(t, c["vy"], tq),
         omega=_linear(t, c["omega"], tq),
@@ -153,6 +185,17 @@ def _to_world(pts: np.ndarray, centre: np.ndarray, x: float, y: float, phi: floa
     p = pts - centre
     c, s = math.cos(phi), math.sin(phi)
     return np.column_stack((x + c * p[:, 0] - s * p[:, 1], y + s * p[:, 0] + c * p[:, 1]))
+
+
+def _pusher_frames(trajectory, t: np.ndarray) -> np.ndarray | None:
+    """The pusher of a pushed run at the frame times: (frames, 1, 2) for a finger, (frames, 2,
+    2) for a line pusher's two ends [m]; None for a run without a pusher."""
+    pusher = getattr(trajectory, "pusher", None)
+    if pusher is None:
+        return None
+    if hasattr(pusher, "ends"):
+        return np.asarray(pusher.ends(t), dtype=float).reshape(t.size, 2, 2)
+    return np.asarray(pusher.position(t), dtype=float).reshape(t.size, 1, 2)
 
 
 def animate(
@@ -235,9 +278,14 @@ def animate(
     centre = np.asarray(body.mass_centre, dtype=float)
     outlines = _outlines(body.patch)
     ext = _extent(outlines, centre)
-    # view: every frame's outline plus a margin
-    xs = np.concatenate([st.x - ext, st.x + ext])
-    ys = np.concatenate([st.y - ext, st.y + ext])
+    pusher = _pusher_frames(trajectory, st.t)
+    # view: every frame's outline (and the pusher of a pushed run) plus a margin
+    xs = np.concatenate(
+        [st.x - ext, st.x + ext] + ([pusher[..., 0].ravel()] if pusher is not None else [])
+    )
+    ys = np.concatenate(
+        [st.y - ext, st.y + ext] + ([pusher[..., 1].ravel()] if pusher is not None else [])
+    )
     x0, x1, y0, y1 = xs.min(), xs.max(), ys.min(), ys.max()
     span = max(x1 - x0, y1 - y0)
     margin = 0.08 * span
@@ -275,6 +323,15 @@ def animate(
         label="velocity of G",
     )
     text = ax.text(0.02, 0.97, "", transform=ax.transAxes, va="top", fontsize=8)
+    push_line = None
+    pushed_at = pusher if pusher is not None else np.zeros((0, 1, 2))
+    if pusher is not None:  # a finger (a dot) or a line pusher (a segment), and its path
+        ax.plot(
+            pusher[:, :, 0].mean(axis=1), pusher[:, :, 1].mean(axis=1), color="C3", lw=0.8,
+            ls="--", zorder=1,
+        )  # fmt: skip
+        style = "o-" if pusher.shape[1] == 1 else "-"
+        push_line = ax.plot([], [], style, color="C3", lw=3.0, ms=6, zorder=6, label="pusher")[0]
     ax.legend(loc="lower right", fontsize=7, frameon=False)
     fig.tight_layout()
     xi_tip = centre + np.array([ext, 0.0])
@@ -298,6 +355,9 @@ def animate(
         else:
             icr.set_data([], [])
         text.set_text(f"t = {st.t[k]:.4f} s   v = {speed[k]:.3g} m/s   ω = {om:.3g} rad/s")
+        if push_line is not None:
+            push_line.set_data(pushed_at[k, :, 0], pushed_at[k, :, 1])
+            return lines + [radius_line, g_dot, icr, arrow, text, push_line]
         return lines + [radius_line, g_dot, icr, arrow, text]
 
     anim = FuncAnimation(fig, draw, frames=frames, blit=False, repeat=False)
