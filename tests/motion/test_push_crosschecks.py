@@ -1040,11 +1040,6 @@ def test_simulate_takes_an_outline():
     assert qs.switch_times[0] == pytest.approx(0.25, abs=1e-12)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="the last sliding row before the finger leaves a disk's rim (the body comes to rest "
-    "exactly at the tangency, ν → 0) reports λn = −2.6e-4 N: a pulling finger",
-)
 def test_normal_force_never_pulls_at_the_rim_exit():
     """Every contact row has λn ≥ 0 (MODEL §13), also the row at which the finger, sliding
     along a disk's rim, reaches the tangency of its path and leaves (anisotropic tensor)."""

@@ -296,3 +296,25 @@ def test_bad_inputs_raise_one_line_errors(kwargs, match):
     with pytest.raises(ValueError, match=match) as info:
         simulate_pushed(BOX, ISO, state, pusher, t_end, **args)
     assert "\n" not in str(info.value)
+
+
+def test_separation_rows_report_no_pull():
+    """At a contact → separated switch λn crosses 0 (MODEL §13): that row reports λ = 0 (the
+    cone then holds λt = 0), and no contact row pulls; mirrored path and tensor of the
+    cross-check (the finger leaves the rim where the disk comes to rest)."""
+    aniso = ss.FrictionTensor(0.2, 0.45, angle=-0.3)
+    path = [(0.0, -0.14, -0.02), (1.0, -0.04, -0.02), (2.0, 0.01, -0.1)]
+    finger = PointPusher(path, mu=0.3)
+    tr = ss.simulate(DISK, aniso, ss.State(), pusher=finger, t_end=2.5)
+    c = np.array([m != "separated" for m in tr.mode])
+    r = tr.contact_point[c] - np.column_stack((tr.x, tr.y))[c]
+    n = -r / np.hypot(*r.T)[:, None]
+    ln = np.sum(tr.pusher_force[c] * n, axis=1)
+    assert np.min(ln) >= -1e-9 * DISK.mass * G
+    knots = {t for t, _, _ in path}  # a finger turning away at a knot leaves with λ ≠ 0
+    exits = [t for t, a, b in tr.switches if b == "separated" and a != "separated"]
+    exits = [t for t in exits if t not in knots]
+    assert exits
+    for t_sw in exits:
+        k = np.nonzero((tr.t == t_sw) & c)[0]
+        np.testing.assert_array_equal(tr.pusher_force[k], 0.0)

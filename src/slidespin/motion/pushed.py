@@ -551,6 +551,8 @@ class _Engine:
                         new = _SEP
                     else:
                         new = self.decide(t, exclude=(mode,))
+                    if idx == 0 and self.rows[-1][0] == t:  # λn = 0 at the root (§13): the
+                        self.rows[-1][7:9] = [0.0, 0.0]  # cone leaves λt = 0, not root noise
                     if not self.switch(t, new):
                         return "indeterminate", t
                     continue
