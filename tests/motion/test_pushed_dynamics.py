@@ -318,3 +318,23 @@ def test_separation_rows_report_no_pull():
     for t_sw in exits:
         k = np.nonzero((tr.t == t_sw) & c)[0]
         np.testing.assert_array_equal(tr.pusher_force[k], 0.0)
+
+
+def test_corner_hit_sticks_at_the_corner_and_tends_to_quasi_static():
+    """A finger hitting the box's corner (−0.1, −0.05) along the diagonal, inside the union of
+    the two edges' friction cones (MODEL §13): it sticks at the corner, and as the speed falls
+    the final angle approaches push_quasi_static's (an independent engine), with the energy
+    balance closed at each speed."""
+    length = 0.2 * math.sqrt(2.0)
+    gaps = []
+    for speed in (0.03, 0.01):
+        t_end = length / speed
+        finger = PointPusher([(0.0, -0.2, -0.15), (t_end, 0.0, 0.05)], mu=0.3)
+        tr = simulate_pushed(BOX, ISO, ss.State(), finger, t_end)
+        qs = ss.push_quasi_static(BOX, ISO, finger, [0.0, t_end])
+        assert tr.status == qs.status == "ok"
+        assert [s[1:] for s in tr.switches] == [("separated", "sticking")]
+        assert tr.relative_energy_error < 1e-9
+        gaps.append(abs(tr.phi[-1] - qs.phi[-1]))
+    assert gaps[0] < 2e-3 and gaps[1] < 2e-4  # 1.2e-3, 1.4e-4: ~ V² (was −0.2758 vs −0.5144)
+    assert gaps[1] < gaps[0] / 5.0

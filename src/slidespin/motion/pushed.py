@@ -41,9 +41,9 @@ dissipation (∫ μp λn |u·t| dt) + impact losses, each integrated with the mo
 
 The outline is :func:`slidespin.contact.outline.body_outline`'s (the footprint's convex hull,
 an ellipse or a circle, or ``outline=``), relative to G. Not handled (a ``ValueError`` before
-any work): hulls mixing arcs and straight segments (pads with disks). A
-finger touching a polygon exactly at a corner takes the normal of the edge its position
-projects on (a corner has no normal); a finger sliding off a corner separates there.
+any work): hulls mixing arcs and straight segments (pads with disks). At a polygon's
+corner the finger sticks while λ lies in the union of the two edges' friction cones, else
+slides onto an edge or leaves (:mod:`slidespin.motion._pushed_vertex`).
 
 A :class:`~slidespin.motion.pushers.LinePusher` is handed to
 :func:`slidespin.motion.pushed_line.simulate_line` (face, vertex and end contacts); the outline,
@@ -65,6 +65,7 @@ from slidespin import _validate as v
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
+from slidespin.motion import _pushed_vertex as corner
 from slidespin.motion._loaded_problem import _Problem
 from slidespin.motion._pushed_geometry import _Finger, _integrate, _Outline, _rot, check_inputs
 from slidespin.motion._stick_slip import GAUGE_TOL
@@ -106,6 +107,7 @@ class _Engine:
         self.W = np.zeros(4)
         self.loss = 0.0
         self.seg = 0
+        self.vert = None  # the vertex of a corner contact (_pushed_vertex)
         vmax = float(np.max(np.hypot(finger.v[:, 0], finger.v[:, 1]))) if finger.v.size else 0.0
         self.vscale = max(vmax, 1e-300)
 
@@ -234,8 +236,11 @@ class _Engine:
             lam, p, _ = self._full_stick(t, y)
             self.record(t, _STICK, lam, p)
 
+        events = [ev_n, ev_p, ev_m]
+        if self.vert is not None:  # at a corner: the union of the edges' cones
+            events = [lambda t, y, i=i: corner.stick_room(self, t, y)[i] for i in range(3)]
         y0 = np.array([self.X[2], self.X[5], *self.W])
-        return self._phase(fun, t0, y0, t1, [ev_n, ev_p, ev_m], rec, self._full_stick)
+        return self._phase(fun, t0, y0, t1, events, rec, self._full_stick)
 
     def run_slide(self, t0, t1):
         def fun(t, y):
@@ -348,7 +353,9 @@ class _Engine:
         )
         lam = -np.linalg.solve(kmat, np.array(u))
         ln, lt = lam @ n, lam @ tt
-        if abs(lt) > self.mu * ln + _CONE_TOL * (abs(ln) + abs(lt)):
+        if self.vert is not None:
+            lam = corner.impulse(self, lam, np.array(u), kmat)
+        elif abs(lt) > self.mu * ln + _CONE_TOL * (abs(ln) + abs(lt)):
             sig = self.mu * math.copysign(1.0, lt)
             nn = np.array(n) + sig * np.array(tt)
             un = u[0] * n[0] + u[1] * n[1]
@@ -367,6 +374,8 @@ class _Engine:
 
     def decide(self, t, exclude=()):
         """The consistent contact mode at t (u·n = 0), not one of ``exclude``."""
+        if self.vert is not None:
+            return corner.decide(self, t, exclude)
         u, n, tt, r = self.contact_velocity()
         ut = u[0] * tt[0] + u[1] * tt[1]
         x = self.X
@@ -406,6 +415,9 @@ class _Engine:
         c, sn = _rot(x[2])
         dx, dy = px - x[0], py - x[1]
         self.piece, self.s = self.ol.locate(c * dx + sn * dy, -sn * dx + c * dy)
+        self.vert = corner.corner_at(self.ol, self.piece, self.s)
+        if self.vert is not None:
+            self.piece, self.s = self.vert, 0.0
         r = self.kin(x[2], self.piece, self.s)[0]
         x[0], x[1] = px - r[0], py - r[1]
 
@@ -417,6 +429,8 @@ class _Engine:
             return _SEP  # both at rest: nothing pushes
         u, n, _, _ = self.contact_velocity()
         un = u[0] * n[0] + u[1] * n[1]
+        if self.vert is not None:
+            un = corner.normal_velocity(self, u)
         if un > self.vtol():
             return _SEP
         if un < -self.vtol() and impacts:
@@ -547,7 +561,9 @@ class _Engine:
                 run = self.run_stick if mode == _STICK else self.run_slide
                 reason, t, _, idx = run(t, t1)
                 if reason == "event":
-                    if idx == 0 or idx >= 2 and mode != _STICK:  # λn < 0, or off a corner
+                    if idx >= 2 and mode != _STICK:  # the finger reaches a corner
+                        new = corner.off_edge(self, t, idx)
+                    elif idx == 0:  # λn < 0
                         new = _SEP
                     else:
                         new = self.decide(t, exclude=(mode,))
