@@ -43,6 +43,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
 from slidespin.contact import shapes as _fp
+from slidespin.contact.body import Body
 from slidespin.contact.ellipse import Ellipse
 
 __all__ = ["Outline", "body_outline", "from_plane", "tangent", "to_plane"]
@@ -560,8 +561,6 @@ def body_outline(body, outline: object = None) -> Outline:
     -------
     Outline
     """
-    from slidespin.contact.body import Body
-
     if not isinstance(body, Body):
         raise ValueError(f"body = {v._short(body)} is invalid; valid values: a slidespin.Body")
     g = np.array(body.mass_centre, dtype=float)
