@@ -42,6 +42,22 @@ PADS = ss.Body(
     mass=1.0,
 )
 ELLIPSE = ss.Body(ss.Ellipse(0.1, 0.06), ss.UniformPressure(), mass=1.0)
+#: three round feet: a hull of three arcs and three tangent edges, smooth everywhere
+FEET = ss.Body(
+    ss.Pads(
+        ss.Disk(0.02, centre=(0.1, 0.0)),
+        ss.Disk(0.02, centre=(-0.05, 0.0866)),
+        ss.Disk(0.02, centre=(-0.05, -0.0866)),
+    ),
+    ss.UniformPressure(),
+    mass=1.0,
+)
+#: a plate and a round foot: a hull with two sharp corners, two tangent edges and an arc
+MIXED = ss.Body(
+    ss.Pads(ss.Rectangle(0.1, 0.06, centre=(-0.05, 0.0)), ss.Disk(0.03, centre=(0.07, 0.0))),
+    ss.UniformPressure(),
+    mass=1.0,
+)
 #: linear pressure: G at (0.015, 0) off the ellipse's centre (symmetric about the ξ axis)
 LINEAR = ss.Body(
     ss.Ellipse(0.1, 0.08), ss.LinearPressure(0.015, 0.0), mass=1.0, moment_of_inertia=0.004
@@ -52,6 +68,8 @@ BODIES = {
     "L": LSHAPE,
     "pads": PADS,
     "ellipse": ELLIPSE,
+    "feet": FEET,
+    "mixed": MIXED,
     "linear": LINEAR,
     "linear-xy": ss.Body(
         ss.Ellipse(0.1, 0.08), ss.LinearPressure(0.01, -0.012), mass=1.5, moment_of_inertia=0.005
@@ -289,6 +307,8 @@ MIRRORS = [  # (body, mirror line angle through G)
     ("box", 0.0),
     ("disk", 0.0),
     ("pads", 0.0),
+    ("feet", 0.0),
+    ("mixed", 0.0),
     ("ellipse", 0.0),
     ("linear", 0.0),
     ("L", math.pi / 4),
@@ -1005,11 +1025,6 @@ def test_corner_hit_dynamics_tends_to_quasi_static():
     assert tr.phi[-1] == pytest.approx(qs.phi[-1], abs=1e-3)
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="simulate(..., pusher=) refuses Pads of disks (a hull of arcs and segments), "
-    "which push_quasi_static handles",
-)
 def test_pads_of_disks_are_pushed_dynamically():
     feet = ss.Body(
         ss.Pads(

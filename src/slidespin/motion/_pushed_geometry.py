@@ -3,12 +3,15 @@ paths, the event-locating stepper and the shared phases, used by :mod:`slidespin
 (a finger) and :mod:`slidespin.motion.pushed_line` (a flat pusher).
 
 ========================  ======================================================================
-``_Outline``              the convex outline relative to G in natural units (a CCW polygon,
-                          pieces = edges, or an ellipse, one periodic piece), with its signed
-                          gap, the nearest outline point and the geometry c(s), c', c'', n(s)
+``_Outline``              the convex outline relative to G in natural units (a CCW hull,
+                          pieces = edges and arcs, or an ellipse, one periodic piece), with
+                          its signed gap, the nearest outline point and the geometry c(s),
+                          c', c'', n(s)
 ``_Finger``               a point pusher's path as linear segments between its velocity knots
-``_integrate``            DOP853 from t0 to t1 with terminal events located by Brent's method
-                          on the dense output (to ~1e-15 of the time scale)
+``_integrate``            DOP853 (or Radau IIA) from t0 to t1 with terminal events located by
+                          Brent's method on the dense output (to ~1e-15 of the time scale)
+``_integrate_contact``    a contact phase: DOP853, going on in Radau IIA when it turns stiff
+                          (a slow pusher), and back where Radau struggles
 ``check_inputs``          the checks common to both engines' entries (one-line ``ValueError``)
 ``_Line``                 a line pusher's path: (p, θ, ṗ, θ̇) on segments of constant rates
 ``_gap``, ``_identify``   the separating-axis gap between a line pusher and a polygonal
@@ -53,36 +56,75 @@ def _rot(phi):
 
 
 class _Outline:
-    """Convex outline: a CCW polygon (pieces = edges, s = arc length from the edge's start)
-    or an ellipse (one periodic piece, s = the parametric angle)."""
+    """Convex outline (body frame, relative to G, natural units), as pieces along which a
+    contact point moves: a hull's straight edges (pieces 0..k−1, edge i from disc i to disc
+    i + 1, s = arc length from its start) and, on a hull of discs (pads with disks), the arcs
+    of the discs of radius > 0 (piece k + i on disc i, s = arc length from the end of edge
+    i − 1); or an ellipse (one periodic piece, s = the parametric angle). All pieces run
+    counter-clockwise. Where an edge meets an arc the outline is smooth (a contact slides on
+    from one piece to the next); a disc of radius 0 is a corner (a polygon's vertex)."""
 
     def __init__(self, body: Body, a: float, outline=None):
         ol = body_outline(body, outline)
-        self.poly = ol.kind == "hull"
+        self.poly = ol.kind == "hull"  # pieces with ends (a hull)
+        self.round = False  # a hull with arcs (pads with disks)
         if not self.poly:
             self.c0 = (float(ol.centre[0]) / a, float(ol.centre[1]) / a)
             self.A, self.B = ol.axes[0] / a, ol.axes[1] / a
             self.cb, self.sb = _rot(float(ol.angle))
             return
-        if not ol.is_polygon:
-            raise ValueError(
-                f"body = {v._short(body)} is invalid for a pushed run: its outline has round "
-                "parts on a hull with straight ones (pads with disks), which the pushing engine "
-                "does not handle yet; valid: a polygonal outline, an ellipse or a circle (give "
-                "outline=)"
-            )
-        hull = np.asarray(ol.vertices, dtype=float) / a
-        self.V = hull
-        e = np.roll(hull, -1, axis=0) - hull
+        edges = np.asarray(ol.edges, dtype=float) / a
+        self.V = edges[:, 0, :].copy()  # the edges' starts (a polygon's vertices)
+        e = edges[:, 1, :] - edges[:, 0, :]
         self.L = np.hypot(e[:, 0], e[:, 1])
-        self.E = e / self.L[:, None]
-        self.N = np.column_stack((-self.E[:, 1], self.E[:, 0]))  # inward (CCW)
+        self.E = e / np.maximum(self.L, 1e-300)[:, None]
+        self.N = -np.column_stack((np.cos(ol.edge_angles), np.sin(ol.edge_angles)))  # inward
+        self.R = np.asarray(ol.discs[:, 2], dtype=float) / a
+        self.C = np.asarray(ol.discs[:, :2], dtype=float) / a
+        self.round = bool(np.any(self.R > 0.0))
+        # arc i runs from edge i − 1's outward normal angle to edge i's, counter-clockwise
+        th1 = np.asarray(ol.edge_angles, dtype=float)
+        th0 = np.roll(th1, 1)
+        self.th0 = th0
+        self.AL = self.R * np.mod(th1 - th0, 2.0 * math.pi)
+
+    @property
+    def k(self) -> int:
+        return len(self.L)
+
+    def length(self, piece):
+        """The length of a hull's piece (an edge or an arc)."""
+        k = len(self.L)
+        return float(self.L[piece]) if piece < k else float(self.AL[piece - k])
+
+    def is_corner(self, i):
+        """True where hull disc i is a sharp corner (radius 0)."""
+        return not self.round or self.R[i] == 0.0
+
+    def beyond(self, piece, end):
+        """The piece a contact sliding off ``piece`` at its ``end`` (0: its start, 1: its end)
+        slides on to, with its s there, or None at a corner (a vertex of the outline)."""
+        k = len(self.L)
+        if piece < k:  # edge i: from disc i to disc i + 1
+            i = (piece + 1) % k if end else piece
+            if self.is_corner(i):
+                return None
+            return (k + i, 0.0) if end else (k + i, float(self.AL[i]))
+        i = piece - k  # arc i: from edge i − 1 to edge i
+        return (i, 0.0) if end else ((i - 1) % k, float(self.L[(i - 1) % k]))
 
     def gap(self, q0, q1):
         """An implicit signed gap of the body point (q0, q1): > 0 outside, 0 on the outline."""
         if self.poly:
             d = -(self.N[:, 0] * (q0 - self.V[:, 0]) + self.N[:, 1] * (q1 - self.V[:, 1]))
-            return float(d.max())
+            if not self.round:
+                return float(d.max())
+            # a hull of discs: the signed distance (the nearest piece's point and normal)
+            piece, s = self.locate(q0, q1)
+            c, _, _, n = self.geom(piece, s)
+            dx, dy = q0 - c[0], q1 - c[1]
+            dist = math.hypot(dx, dy)
+            return -dist if dx * n[0] + dy * n[1] > 0.0 else dist
         x, y = self._local(q0, q1)
         x, y = x / self.A, y / self.B
         return (math.sqrt(x * x + y * y) - 1.0) * min(self.A, self.B)
@@ -94,6 +136,8 @@ class _Outline:
     def locate(self, q0, q1):
         """(piece, s) of the outline point nearest to the body point (q0, q1) on the outline."""
         if self.poly:
+            if self.round:
+                return self._nearest(q0, q1)
             d = -(self.N[:, 0] * (q0 - self.V[:, 0]) + self.N[:, 1] * (q1 - self.V[:, 1]))
             i = int(np.argmax(d))
             s = (q0 - self.V[i, 0]) * self.E[i, 0] + (q1 - self.V[i, 1]) * self.E[i, 1]
@@ -101,9 +145,52 @@ class _Outline:
         x, y = self._local(q0, q1)
         return 0, math.atan2(y / self.B, x / self.A)
 
+    def _nearest(self, q0, q1):
+        """The nearest point over all pieces of a hull of discs (edges, then arcs)."""
+        k = len(self.L)
+        best, out = math.inf, (0, 0.0)
+        for i in range(k):
+            s = (q0 - self.V[i, 0]) * self.E[i, 0] + (q1 - self.V[i, 1]) * self.E[i, 1]
+            s = min(max(s, 0.0), float(self.L[i]))
+            dd = math.hypot(
+                q0 - self.V[i, 0] - s * self.E[i, 0], q1 - self.V[i, 1] - s * self.E[i, 1]
+            )
+            if dd < best:
+                best, out = dd, (i, s)
+        for i in range(k):
+            if self.R[i] == 0.0:
+                continue
+            dx, dy = q0 - self.C[i, 0], q1 - self.C[i, 1]
+            rel = (math.atan2(dy, dx) - self.th0[i]) % (2.0 * math.pi)
+            span = self.AL[i] / self.R[i]
+            if rel > span:  # beyond the arc: its nearer end
+                rel = span if rel - span < 2.0 * math.pi - rel else 0.0
+            s = min(rel * self.R[i], float(self.AL[i]))
+            th = self.th0[i] + s / self.R[i]
+            cx, cy = (
+                self.C[i, 0] + self.R[i] * math.cos(th),
+                self.C[i, 1] + self.R[i] * math.sin(th),
+            )
+            dd = math.hypot(q0 - cx, q1 - cy)
+            if dd < best:
+                best, out = dd, (k + i, s)
+        return out
+
     def geom(self, piece, s):
         """Body frame c(s), c'(s), c''(s) and the inward unit normal n(s)."""
         if self.poly:
+            k = len(self.L)
+            if piece >= k:  # an arc of disc i (s = arc length)
+                i = piece - k
+                r = float(self.R[i])
+                th = self.th0[i] + s / r
+                cs, sn = math.cos(th), math.sin(th)
+                return (
+                    (self.C[i, 0] + r * cs, self.C[i, 1] + r * sn),
+                    (-sn, cs),
+                    (-cs / r, -sn / r),
+                    (-cs, -sn),
+                )
             vx, vy = self.V[piece]
             ex, ey = self.E[piece]
             return (vx + s * ex, vy + s * ey), (ex, ey), (0.0, 0.0), tuple(self.N[piece])
@@ -154,22 +241,24 @@ class _Finger:
 # stepping with events
 
 
-def _integrate(fun, t0, y0, t1, events, rtol, atol, budget, rec):
-    """DOP853 from t0 to t1 with terminal events g(t, y) that fire where g falls below 0.
+def _integrate(fun, t0, y0, t1, events, rtol, atol, budget, rec, stiff=False):
+    """DOP853 (or Radau IIA if ``stiff``) from t0 to t1 with terminal events g(t, y) that
+    fire where g falls below 0.
 
     Returns (reason, t, y, index, steps): reason ``end``, ``event`` (index), ``max_steps``
     or ``failed``. Every accepted step is passed to ``rec(t, y)``."""
-    from scipy.integrate import DOP853  # lazy: scipy's import cost
+    from scipy.integrate import DOP853, Radau  # lazy: scipy's import cost
     from scipy.optimize import brentq
 
-    solver = DOP853(fun, t0, y0, t1, rtol=rtol, atol=atol)
+    solver = (Radau if stiff else DOP853)(fun, t0, y0, t1, rtol=rtol, atol=atol)
     g_old = [e(t0, y0) for e in events]
-    steps = 0
+    steps, h_max, small = 0, 0.0, 0
     while True:
         if steps >= budget:
             return "max_steps", solver.t, solver.y, -1, steps
         t_old = solver.t
-        solver.step()
+        with np.errstate(over="ignore"):  # Radau's difference Jacobian: zero work columns
+            solver.step()
         steps += 1
         if solver.status == "failed":
             return "failed", solver.t, solver.y, -1, steps
@@ -199,7 +288,39 @@ def _integrate(fun, t0, y0, t1, events, rtol, atol, budget, rec):
         rec(t_new, y_new)
         if solver.status == "finished":
             return "end", t_new, y_new, -1, steps
+        h_max = max(h_max, t_new - t_old)
+        small = small + 1 if t_new - t_old < _STRUGGLE * h_max else 0
+        if stiff and small > _STRUGGLE_STEPS:  # Radau near a non-smooth point
+            return "struggling", t_new, y_new, -1, steps
         g_old = g_new
+
+
+_STIFF_AFTER = 200  # DOP853 steps in one contact phase before it goes on in Radau IIA
+_STRUGGLE = 1e-3  # Radau steps this much below its largest, ...
+_STRUGGLE_STEPS = 50  # ... this many in a row, hand the phase back to DOP853
+
+
+def _integrate_contact(fun, t0, y0, t1, events, rtol, atol, budget, rec):
+    """A contact phase: DOP853, then Radau IIA once DOP853 has taken ``_STIFF_AFTER`` steps.
+
+    A slow pusher makes the contact phases stiff: the body relaxes to the pusher's motion in
+    a time ~ V/(μ g) against a path time ~ ℓ/V, so an explicit method takes ~ μ g ℓ/V² steps
+    (the implicit one a number that does not grow as V falls). Where Radau's Newton iteration
+    fails (a body coming to rest on the plane, where the friction wrench jumps) or its steps
+    stay below ``_STRUGGLE`` times its largest for ``_STRUGGLE_STEPS`` steps (its Newton
+    iteration straddling such a point), the phase goes on in DOP853 for ``_STIFF_AFTER``
+    steps, then in Radau again, and so on. Same returns
+    as :func:`_integrate`, steps summed."""
+    total, stiff = 0, False
+    while True:
+        cap = budget - total if stiff else min(_STIFF_AFTER, budget - total)
+        reason, t, y, idx, n = _integrate(fun, t0, y0, t1, events, rtol, atol, cap, rec, stiff)
+        total += n
+        more = ("failed", "struggling") if stiff else ("max_steps",)
+        if total >= budget or reason not in more:
+            break
+        t0, y0, stiff = t, y, not stiff
+    return reason, t, y, idx, total
 
 
 # ------------------------------------------------------------------------------------------

@@ -25,12 +25,13 @@ _SEP, _STICK, _LEFT, _RIGHT = 0, 1, 2, 3
 
 
 def corner_at(ol, piece, s):
-    """The vertex index the outline point (piece, s) sits at, or None."""
-    if not ol.poly:
+    """The vertex index the outline point (piece, s) sits at, or None (on an arc, or where an
+    edge meets an arc smoothly)."""
+    if not ol.poly or piece >= len(ol.L):
         return None
-    if s <= _AT:
+    if s <= _AT and ol.is_corner(piece):
         return piece
-    if s >= float(ol.L[piece]) - _AT:
+    if s >= float(ol.L[piece]) - _AT and ol.is_corner((piece + 1) % len(ol.L)):
         return (piece + 1) % len(ol.L)
     return None
 
@@ -116,7 +117,13 @@ def decide(eng, t, exclude=()):
 
 
 def off_edge(eng, t, idx):
-    """The mode after a sliding finger reaches an end of its edge (event 2: s = 0, 3: s = L)."""
+    """The mode after a sliding finger reaches an end of its piece (event 2: s = 0, 3: s = L):
+    where the outline is smooth there (an edge meeting a disc's arc) it slides on along the
+    next piece in the same mode; at a corner the corner decides."""
+    on = eng.ol.beyond(eng.piece, idx == 3)
+    if on is not None:
+        eng.piece, eng.s = on
+        return eng.mode
     eng.vert = eng.piece if idx == 2 else (eng.piece + 1) % len(eng.ol.L)
     eng.piece, eng.s = eng.vert, 0.0
     return decide(eng, t)

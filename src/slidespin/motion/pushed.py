@@ -40,10 +40,12 @@ dissipation (∫ μp λn |u·t| dt) + impact losses, each integrated with the mo
 ``energy_error`` is the residual (an accuracy check).
 
 The outline is :func:`slidespin.contact.outline.body_outline`'s (the footprint's convex hull,
-an ellipse or a circle, or ``outline=``), relative to G. Not handled (a ``ValueError`` before
-any work): hulls mixing arcs and straight segments (pads with disks). At a polygon's
-corner the finger sticks while λ lies in the union of the two edges' friction cones, else
-slides onto an edge or leaves (:mod:`slidespin.motion._pushed_vertex`).
+an ellipse or a circle, or ``outline=``), relative to G. A hull of pads with disks is a
+sequence of straight edges and circular arcs meeting smoothly: a sliding finger passes from one
+to the next without a switch (an event at the junction restarts the step, where the curvature
+jumps). At a sharp corner (a polygon's vertex) the finger sticks while λ lies in the union of
+the two edges' friction cones, else slides onto an edge or leaves
+(:mod:`slidespin.motion._pushed_vertex`).
 
 A :class:`~slidespin.motion.pushers.LinePusher` is handed to
 :func:`slidespin.motion.pushed_line.simulate_line` (face, vertex and end contacts); the outline,
@@ -67,7 +69,14 @@ from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.motion import _pushed_vertex as corner
 from slidespin.motion._loaded_problem import _Problem
-from slidespin.motion._pushed_geometry import _Finger, _integrate, _Outline, _rot, check_inputs
+from slidespin.motion._pushed_geometry import (
+    _Finger,
+    _integrate,
+    _integrate_contact,
+    _Outline,
+    _rot,
+    check_inputs,
+)
 from slidespin.motion._stick_slip import GAUGE_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import PUSH_MODES
@@ -256,7 +265,7 @@ class _Engine:
 
         events = [ev_n, ev_slip]
         if self.ol.poly:
-            length = float(self.ol.L[self.piece])
+            length = self.ol.length(self.piece)
             events += [lambda t, y: y[2], lambda t, y: length - y[2]]
 
         def rec(t, y):
@@ -319,7 +328,7 @@ class _Engine:
         return reason, t, idx
 
     def _phase(self, fun, t0, y0, t1, events, rec, full):
-        reason, t, y, idx, steps = _integrate(
+        reason, t, y, idx, steps = _integrate_contact(
             fun, t0, y0, t1, events, self.rtol, self.atol, self.steps_left, rec
         )
         self.steps_left -= steps
@@ -610,8 +619,8 @@ def simulate_pushed(
     Parameters
     ----------
     body, friction : Body, FrictionTensor
-        The body and its friction tensor (any patch whose outline is handled: ellipses,
-        disks, rings, polygons, rectangles, pads of polygons).
+        The body and its friction tensor (every patch with an area: ellipses, disks, rings,
+        polygons, rectangles, pads; a blade with ``outline=``).
     state : State
         Initial position, angle and velocities (SI). The finger at t = 0 either touches the
         outline (within 1e-9 of the body's length unit ℓ: the contact starts there, with a

@@ -54,7 +54,7 @@ from slidespin.motion._pushed_geometry import (
     _cross,
     _gap,
     _identify,
-    _integrate,
+    _integrate_contact,
     _Line,
     _Outline,
     _point_impulse,
@@ -510,7 +510,7 @@ class _Engine:
             self.record(t, self.mode, lam, cpt)
 
         y0 = self.y_now(t0)
-        reason, t, y, idx, steps = _integrate(
+        reason, t, y, idx, steps = _integrate_contact(
             fun, t0, y0, t1, [g for _, g in events], self.rtol, self.atol, self.steps_left, rec
         )
         self.steps_left -= steps
@@ -675,11 +675,12 @@ def simulate_line(
     prob.b(0.0, state.phi)
     a, tu, vu = prob.a, prob.t_unit, prob.v_unit
     ol = _Outline(body, a, outline)
-    if not ol.poly:
+    if not ol.poly or ol.round:
         name, val = ("outline", outline) if outline is not None else ("body", body)
         raise ValueError(
-            f"{name} = {v._short(val)} is invalid for a line pusher: a round outline (ellipse "
-            "or disk) is not supported yet; valid: a polygonal outline"
+            f"{name} = {v._short(val)} is invalid for a line pusher: a round outline (ellipse, "
+            "disk, or pads with disks on their hull) is not supported yet; valid: a polygonal "
+            "outline (give outline=)"
         )
     line = _Line(pusher, a, tu)
     eng = _Engine(prob, ol, line, rtol, int(max_steps))
