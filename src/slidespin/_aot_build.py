@@ -42,6 +42,8 @@ from slidespin.motion._integrator import integrate_fp
 from slidespin.motion._loaded_core import run_loaded
 from slidespin.motion._parallel import _integrate_many, _stop_direction
 
+_jit.numba_module()  # every deferred jit function becomes numba's (the names above too)
+
 #: the extension module's name (in ``slidespin.motion``) and its manifest's file name
 MODULE = "_aot_core"
 MANIFEST = MODULE + ".json"

@@ -1026,20 +1026,15 @@ def test_corner_hit_dynamics_tends_to_quasi_static():
 
 
 def test_pads_of_disks_are_pushed_dynamically():
-    feet = ss.Body(
-        ss.Pads(
-            ss.Disk(0.02, centre=(0.1, 0.0)),
-            ss.Disk(0.02, centre=(-0.05, 0.0866)),
-            ss.Disk(0.02, centre=(-0.05, -0.0866)),
-        ),
-        ss.UniformPressure(),
-        mass=1.0,
-    )
+    """Pads of disks (a hull of arcs and tangent edges; was refused by the dynamics): the
+    finger's push from the left ends in contact, as quasi-statically, with the energy balance
+    closed (more in tests/motion/test_pushed_round_hull.py)."""
     finger = ss.PointPusher([(0.0, -0.2, 0.02), (1.0, 0.0, 0.02)], mu=0.3)
-    qs = ss.push_quasi_static(feet, ISO, finger, [0.0, 1.0])
+    qs = ss.push_quasi_static(FEET, ISO, finger, [0.0, 1.0])
     assert qs.status == "ok" and qs.mode[-1] != "separated"
-    tr = ss.simulate(feet, ISO, ss.State(), pusher=finger, t_end=1.0)
+    tr = ss.simulate(FEET, ISO, ss.State(), pusher=finger, t_end=1.0)
     assert tr.status == "ok"
+    assert tr.mode[-1] != "separated"
     assert tr.relative_energy_error < 1e-9
 
 

@@ -69,13 +69,16 @@ def _pair(name: str, value: object) -> NDArray[np.float64]:
     return np.array(out)
 
 
-def _mu(value: object) -> float:
+def pusher_mu(value: object) -> float:
+    """A pusher's Coulomb coefficient μp at the pusher–body contact, checked: a finite real
+    number ≥ 0, not a bool (one-line ``ValueError`` naming ``mu``). Shared with the pushers
+    of :mod:`slidespin.motion.pushers`."""
     if isinstance(value, np.generic):
         value = value.item()
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ValueError(
-            f"mu = {v._short(value)} is invalid; valid range: a finite number >= 0 (the "
-            "pusher-body Coulomb coefficient)"
+            f"mu = {v._short(value)} ({type(value).__name__}) is invalid; valid range: a "
+            "finite number >= 0 (the pusher-body Coulomb coefficient)"
         )
     x = v._as_float("mu", value)
     if not (math.isfinite(x) and x >= 0.0):
@@ -407,7 +410,7 @@ def motion_cone(
     check_body_friction(body, friction)
     c = _pair("contact", contact)
     n = _pair("normal", normal)
-    mu = _mu(mu)
+    mu = pusher_mu(mu)
     size = math.hypot(*n)
     if not size > 0.0:
         raise ValueError(
@@ -595,7 +598,7 @@ def stable_pushing(body: Body, friction: FrictionTensor, face, mu: float = 0.0) 
     if len(ends) != 2:
         raise ValueError(f"face = {v._short(face)} is invalid; valid values: two points (a, b) [m]")
     a, b = _pair("face[0]", ends[0]), _pair("face[1]", ends[1])
-    mu = _mu(mu)
+    mu = pusher_mu(mu)
     d = b - a
     if not math.hypot(*d) > 0.0:
         raise ValueError(

@@ -33,7 +33,6 @@ right length.
 
 from __future__ import annotations
 
-import math
 import numbers
 from dataclasses import dataclass, field
 
@@ -41,6 +40,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
+from slidespin.contact.motion_cone import pusher_mu
 
 __all__ = ["LinePusher", "MAX_WAYPOINTS", "PointPusher"]
 
@@ -50,24 +50,6 @@ MAX_WAYPOINTS = 1_000_000
 
 # ------------------------------------------------------------------------------------------
 # validation
-
-
-def _mu(value: object) -> float:
-    """The pusher's Coulomb coefficient μp: a finite real number ≥ 0 (not a bool)."""
-    if isinstance(value, np.generic):
-        value = value.item()
-    if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        raise ValueError(
-            f"mu = {v._short(value)} ({type(value).__name__}) is invalid; valid range: a "
-            "finite number >= 0 (the pusher-body Coulomb coefficient)"
-        )
-    x = v._as_float("mu", value)
-    if not (math.isfinite(x) and x >= 0.0):
-        raise ValueError(
-            f"mu = {x!r} is invalid; valid range: a finite number >= 0 (the pusher-body "
-            "Coulomb coefficient)"
-        )
-    return x
 
 
 def _no_bools(name: str, value: object) -> None:
@@ -337,7 +319,7 @@ class PointPusher:
         arr = _rows("path", self.path, ("t", "x", "y"), ("s", "m", "m"))
         rates = _rates("path", arr, (("speed", v.SPEED, "m/s"),))
         object.__setattr__(self, "path", arr)
-        object.__setattr__(self, "mu", _mu(self.mu))
+        object.__setattr__(self, "mu", pusher_mu(self.mu))
         object.__setattr__(self, "_rates", rates)
 
     @classmethod
@@ -470,7 +452,7 @@ class LinePusher:
         rates = _rates("path", arr, (("speed", v.SPEED, "m/s"), ("turn rate", v.SPIN, "rad/s")))
         object.__setattr__(self, "length", length)
         object.__setattr__(self, "path", arr)
-        object.__setattr__(self, "mu", _mu(self.mu))
+        object.__setattr__(self, "mu", pusher_mu(self.mu))
         object.__setattr__(self, "_rates", rates)
 
     @classmethod

@@ -110,9 +110,8 @@ class QuasiStaticPush:
     message : str
         One line on how the run ended.
     modes : tuple of str
-        The vocabulary ``mode_code`` indexes: :data:`slidespin.motion.outcomes.PUSH_MODES`
-        for a finger, :data:`slidespin.motion.quasi_static_line.LINE_PUSH_MODES` for a line
-        pusher.
+        The vocabulary ``mode_code`` indexes: :data:`slidespin.motion.outcomes.PUSH_MODES`,
+        for a finger and a line pusher alike (one set of codes, as in a dynamic run).
     """
 
     t: NDArray[np.float64]

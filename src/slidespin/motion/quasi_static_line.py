@@ -59,10 +59,13 @@ from slidespin.contact._engine import TwistWrench
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
+from slidespin.motion.outcomes import PUSH_MODES
 
 __all__ = ["LINE_PUSH_MODES", "push_line_quasi_static"]
 
 #: mode names of a line pusher, indexed by ``QuasiStaticPush.mode_code`` (module notes)
+#: the line pusher's modes (a subset of :data:`slidespin.motion.outcomes.PUSH_MODES`, whose
+#: indices are the result's ``mode_code``, as for a finger)
 LINE_PUSH_MODES = (
     "separated",
     "face_sticking",
@@ -678,7 +681,7 @@ def _assemble(prob, t_out, pieces, status, message) -> dict:
         "vy": cols["vy"],
         "omega": cols["omega"],
         "mode": np.array([LINE_PUSH_MODES[c] for c in code]),
-        "mode_code": code,
+        "mode_code": np.array([PUSH_MODES.index(LINE_PUSH_MODES[c]) for c in code], dtype=np.int64),
         "contact_x": cols["cx"],
         "contact_y": cols["cy"],
         "force_x": cols["fx"],
@@ -687,5 +690,5 @@ def _assemble(prob, t_out, pieces, status, message) -> dict:
         "switch_modes": tuple(sw_m),
         "status": status,
         "message": message,
-        "modes": LINE_PUSH_MODES,
+        "modes": PUSH_MODES,
     }
