@@ -17,8 +17,9 @@ import numpy as np
 import pytest
 
 import slidespin as ss
+from slidespin.analysis._push_problem import _simplify
 from slidespin.analysis.fit import IdentifiabilityWarning
-from slidespin.analysis.fit_push import PushFitResult, _simplify, fit_pushes, pushed_at
+from slidespin.analysis.fit_push import PushFitResult, fit_pushes, pushed_at
 from slidespin.analysis.push_data import read_pushes
 
 HERE = os.path.dirname(os.path.abspath(__file__))
