@@ -40,6 +40,28 @@ def test_wider_outline_is_drawn(pushed):
     assert "contact outline" in labels
 
 
+def test_hull_of_pads_is_drawn_and_the_box_has_none(pushed):
+    """The outline a finger touches is drawn dashed where it is not the footprint's own: the
+    hull of pads (the tangent edges between round feet), not a box's own outline."""
+    feet = ss.Body(
+        ss.Pads(
+            ss.Disk(0.02, centre=(0.1, 0.0)),
+            ss.Disk(0.02, centre=(-0.05, 0.0866)),
+            ss.Disk(0.02, centre=(-0.05, -0.0866)),
+        ),
+        ss.UniformPressure(),
+        mass=1.0,
+    )
+    finger = ss.PointPusher([(0.0, -0.14, 0.0), (1.84, 0.0, 0.12)], mu=0.1)
+    tr = ss.simulate(feet, ss.FrictionTensor.isotropic(0.3), ss.State(), pusher=finger, t_end=1.84)
+    labels = [t.get_text() for t in plot_pushed_trajectory(tr, n_poses=3).legends[0].get_texts()]
+    assert "contact outline" in labels
+    labels = [
+        t.get_text() for t in plot_pushed_trajectory(pushed, n_poses=3).legends[0].get_texts()
+    ]
+    assert "contact outline" not in labels
+
+
 @pytest.mark.parametrize("n", [1, 41, 2.5, True])
 def test_bad_n_poses(pushed, n):
     with pytest.raises(ValueError, match="n_poses"):

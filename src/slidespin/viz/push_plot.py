@@ -189,9 +189,8 @@ def plot_pushed_trajectory(
     hull = body_outline(body, outline)
     hull_pts = hull.boundary(181)
     foot = outline_world(body, 0.0, 0.0, 0.0) + np.asarray(body.mass_centre)  # G-relative
-    foot_area = sum(
-        _area(c) for c in np.split(foot, np.flatnonzero(np.isnan(foot[:, 0]))) if len(c) > 2
-    )
+    pieces = np.split(foot, np.flatnonzero(np.isnan(foot[:, 0])))  # NaN rows separate pads
+    foot_area = sum(_area(c[~np.isnan(c[:, 0])]) for c in pieces if np.sum(~np.isnan(c[:, 0])) > 2)
     show_hull = outline is not None or abs(_area(hull_pts) - foot_area) > 1e-6 * _area(hull_pts)
     path_t = np.unique(np.concatenate((pusher.path[:, 0], tf)))
     path_t = path_t[
