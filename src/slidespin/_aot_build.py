@@ -191,14 +191,16 @@ def build(output_dir: str | Path, target_cpu: str = "host") -> Path:
     output_dir = Path(output_dir)
     output_dir.mkdir(parents=True, exist_ok=True)
     _jit._compiling["enabled"] = False  # the build says what it compiles itself
+    # the sources as they are compiled (hashed first: an edit during the build must leave
+    # the core stale, not recorded as built from the edited file)
+    sources = source_hashes(Path(__file__).resolve().parent)
     t0 = time.perf_counter()
     _compiler(output_dir, target_cpu).compile()
-    package_dir = Path(__file__).resolve().parent
     manifest = {
         "numba": numba.__version__,
         "target_cpu": target_cpu,
         "seconds": round(time.perf_counter() - t0, 1),
-        "sources": source_hashes(package_dir),
+        "sources": sources,
     }
     path = output_dir / MANIFEST
     path.write_text(json.dumps(manifest, indent=1) + "\n")
