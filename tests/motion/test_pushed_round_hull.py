@@ -190,3 +190,31 @@ def test_line_pusher_refuses_a_round_hull_in_one_line():
     with pytest.raises(ValueError, match="body = .*round outline") as err:
         ss.simulate(FEET, ISO, ss.State(), pusher=pusher, t_end=1.0)
     assert "\n" not in str(err.value)
+
+
+PLATE_AND_FOOT = ss.Body(
+    ss.Pads(ss.Rectangle(0.1, 0.1, centre=(-0.05, 0.0)), ss.Disk(0.03, centre=(0.1, 0.0))),
+    ss.UniformPressure(),
+    mass=1.0,
+)
+
+
+@pytest.mark.parametrize("phi", [0.0, math.pi / 2])
+def test_finger_on_an_edge_line_beyond_a_corner_is_outside(phi):
+    """A finger on the extension of a straight hull edge beyond a sharp corner is outside the
+    body (found by fuzzing: the body jumped 0.2 m to it, status ok): nothing moves."""
+    finger = ss.PointPusher([(0.0, -0.3, 0.0), (1.0, -0.3, 0.05)], mu=0.3)
+    start = ss.State(phi=phi)
+    tr = ss.simulate(PLATE_AND_FOOT, ISO, start, pusher=finger, t_end=2.0)
+    assert tr.status == "ok"
+    assert [m for m, _, _ in tr.phases()] == ["separated"]
+    assert np.all(tr.x == 0.0) and np.all(tr.y == 0.0) and np.all(tr.phi == phi)
+
+
+def test_finger_starting_on_an_edge_line_is_accepted():
+    """A finger starting on the line of the plate's bottom edge, outside the body, is not
+    refused as inside; it passes under the tangent edge to the foot without touching."""
+    finger = ss.PointPusher([(0.0, -0.3, -0.05), (2.0, 0.3, -0.05)], mu=0.3)
+    tr = ss.simulate(PLATE_AND_FOOT, ISO, ss.State(), pusher=finger, t_end=2.0)
+    assert tr.status == "ok"
+    assert [m for m, _, _ in tr.phases()] == ["separated"]

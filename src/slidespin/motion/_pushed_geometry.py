@@ -87,6 +87,12 @@ class _Outline:
         th0 = np.roll(th1, 1)
         self.th0 = th0
         self.AL = self.R * np.mod(th1 - th0, 2.0 * math.pi)
+        # the chord polygon through the edges' ends: the hull is it and the discs together
+        pts = edges.reshape(-1, 2)
+        keep = np.hypot(*(pts - np.roll(pts, 1, axis=0)).T) > 1e-12
+        self.P = pts[keep]
+        d = np.roll(self.P, -1, axis=0) - self.P
+        self.PN = np.column_stack((-d[:, 1], d[:, 0]))  # inward (CCW), unnormalised
 
     @property
     def k(self) -> int:
@@ -119,12 +125,17 @@ class _Outline:
             d = -(self.N[:, 0] * (q0 - self.V[:, 0]) + self.N[:, 1] * (q1 - self.V[:, 1]))
             if not self.round:
                 return float(d.max())
-            # a hull of discs: the signed distance (the nearest piece's point and normal)
+            # a hull of discs: the signed distance to the nearest piece, negative inside (in
+            # the chord polygon or in a disc: their union is the hull)
             piece, s = self.locate(q0, q1)
-            c, _, _, n = self.geom(piece, s)
-            dx, dy = q0 - c[0], q1 - c[1]
-            dist = math.hypot(dx, dy)
-            return -dist if dx * n[0] + dy * n[1] > 0.0 else dist
+            c = self.geom(piece, s)[0]
+            dist = math.hypot(q0 - c[0], q1 - c[1])
+            inside = bool(
+                np.all(
+                    self.PN[:, 0] * (q0 - self.P[:, 0]) + self.PN[:, 1] * (q1 - self.P[:, 1]) >= 0.0
+                )
+            ) or bool(np.any(np.hypot(q0 - self.C[:, 0], q1 - self.C[:, 1]) <= self.R))
+            return -dist if inside else dist
         x, y = self._local(q0, q1)
         x, y = x / self.A, y / self.B
         return (math.sqrt(x * x + y * y) - 1.0) * min(self.A, self.B)
