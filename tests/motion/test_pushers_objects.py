@@ -9,6 +9,7 @@ import pickle
 import numpy as np
 import pytest
 
+import slidespin as ss
 from slidespin.motion.pushers import LinePusher, PointPusher
 
 PATH = [(0.0, 0.0, 0.0), (1.0, 0.2, 0.0), (3.0, 0.2, 0.4), (4.0, 0.2, 0.4)]
@@ -169,3 +170,20 @@ def test_other_refusals(call, needle):
     with pytest.raises(ValueError) as err:
         call()
     assert needle in str(err.value) and "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("mu", [1e300, 1.0000001e9, float("inf")])
+def test_mu_beyond_the_largest_is_refused_everywhere(mu):
+    """μp above 1e9 is refused in one line naming mu (found by fuzzing: 1e300 passed the check
+    and the motion cone failed on a NaN it called vx)."""
+    box = ss.Body(ss.Rectangle(0.2, 0.1), ss.UniformPressure(), mass=1.0)
+    calls = [
+        lambda: ss.PointPusher([(0.0, 0.0, 0.0), (1.0, 1.0, 0.0)], mu=mu),
+        lambda: ss.LinePusher(0.1, [(0.0, 0.0, 0.0, 0.0), (1.0, 1.0, 0.0, 0.0)], mu=mu),
+        lambda: ss.motion_cone(box, ss.FrictionTensor(0.3, 0.3), (-0.1, 0.0), (1.0, 0.0), mu),
+    ]
+    for call in calls:
+        with pytest.raises(ValueError, match=r"^mu = .*valid range: \[0, 1e\+09\]") as err:
+            call()
+        assert "\n" not in str(err.value)
+    assert ss.PointPusher([(0.0, 0.0, 0.0), (1.0, 1.0, 0.0)], mu=1e9).mu == 1e9

@@ -72,7 +72,7 @@ def test_outline_forms(outline):
         ({"mu": 0.3, "path": [[0, 0, 0]]}, ["[pusher]", "'kind'", "point"]),
         ({**FINGER, "kind": "finger"}, ["[pusher] kind", "'finger'", "point, line"]),
         ({"kind": "point"}, ["[pusher]", "'path'", "[[t, x, y]"]),
-        ({**FINGER, "mu": -0.1}, ["[pusher] mu", "-0.1", ">= 0"]),
+        ({**FINGER, "mu": -0.1}, ["[pusher] mu", "-0.1", "valid range: [0, 1e+09]"]),
         ({**FINGER, "mu": True}, ["[pusher] mu", "True"]),
         ({**FINGER, "path": [[0, 1]]}, ["[pusher] path", "(1, 2)", "(n, 3)"]),
         ({**FINGER, "path": [[0, 0, 0], [0, 1, 0]]}, ["[pusher] path[1, 0]", "increasing"]),

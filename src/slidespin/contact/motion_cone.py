@@ -69,22 +69,27 @@ def _pair(name: str, value: object) -> NDArray[np.float64]:
     return np.array(out)
 
 
+#: the largest pusher–body coefficient μp accepted (beyond it the cone's edge directions lose
+#: every digit: 1 + μp² overflows near 1e154)
+MU_MAX = 1e9
+
+
 def pusher_mu(value: object) -> float:
-    """A pusher's Coulomb coefficient μp at the pusher–body contact, checked: a finite real
-    number ≥ 0, not a bool (one-line ``ValueError`` naming ``mu``). Shared with the pushers
+    """A pusher's Coulomb coefficient μp at the pusher–body contact, checked: a real number in
+    [0, ``MU_MAX``], not a bool (one-line ``ValueError`` naming ``mu``). Shared with the pushers
     of :mod:`slidespin.motion.pushers`."""
     if isinstance(value, np.generic):
         value = value.item()
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise ValueError(
             f"mu = {v._short(value)} ({type(value).__name__}) is invalid; valid range: a "
-            "finite number >= 0 (the pusher-body Coulomb coefficient)"
+            "number in [0, 1e+09] (the pusher-body Coulomb coefficient)"
         )
     x = v._as_float("mu", value)
-    if not (math.isfinite(x) and x >= 0.0):
+    if not (math.isfinite(x) and 0.0 <= x <= MU_MAX):
         raise ValueError(
-            f"mu = {x!r} is invalid; valid range: a finite number >= 0 (the pusher-body "
-            "Coulomb coefficient)"
+            f"mu = {x!r} is invalid; valid range: [0, {MU_MAX:g}] (the pusher-body Coulomb "
+            "coefficient; 1e9 is a cone within 1e-9 rad of a half plane: no slip)"
         )
     return x
 
