@@ -81,7 +81,7 @@ from slidespin.motion._stick_slip import GAUGE_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import PUSH_MODES
 from slidespin.motion.pushed_line import simulate_line
-from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble
+from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble, reduced_angle
 from slidespin.motion.pushers import LinePusher, PointPusher
 from slidespin.motion.state import State
 
@@ -115,6 +115,7 @@ class _Engine:
         self.impacts: list = []
         self.W = np.zeros(4)
         self.loss = 0.0
+        self.turns = 0.0  # 2π times the whole turns taken off the start angle
         self.seg = 0
         self.vert = None  # the vertex of a corner contact (_pushed_vertex)
         vmax = float(np.max(np.hypot(finger.v[:, 0], finger.v[:, 1]))) if finger.v.size else 0.0
@@ -684,11 +685,12 @@ def simulate_pushed(
     geometry = _Outline(body, a, outline)
     finger = _Finger(pusher, a, tu)
     eng = _Engine(prob, geometry, finger, rtol, int(max_steps))
+    phi0, eng.turns = reduced_angle(state.phi)
     eng.X = np.array(
-        [state.x / a, state.y / a, state.phi, state.vx / vu, state.vy / vu, state.omega * tu]
+        [state.x / a, state.y / a, phi0, state.vx / vu, state.vy / vu, state.omega * tu]
     )
     px, py = finger.pos(finger.segment(0.0)[0], 0.0)
-    c, sn = _rot(state.phi)
+    c, sn = _rot(phi0)
     dx, dy = px - eng.X[0], py - eng.X[1]
     gap0 = geometry.gap(c * dx + sn * dy, -sn * dx + c * dy)
     if gap0 < -_TOUCH:

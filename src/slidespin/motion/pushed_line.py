@@ -65,7 +65,7 @@ from slidespin.motion._pushed_geometry import (
     _zx,
 )
 from slidespin.motion.outcomes import PUSH_MODES
-from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble
+from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble, reduced_angle
 
 __all__ = ["simulate_line"]
 
@@ -102,6 +102,7 @@ class _Engine:
         self.impacts: list = []
         self.W = np.zeros(4)
         self.loss = 0.0
+        self.turns = 0.0  # 2π times the whole turns taken off the start angle
         self.seg = 0
         self.mode = _SEP
         self.kind, self.j, self.side, self.endsign = "face", 0, 1.0, 1.0
@@ -684,8 +685,9 @@ def simulate_line(
         )
     line = _Line(pusher, a, tu)
     eng = _Engine(prob, ol, line, rtol, int(max_steps))
+    phi0, eng.turns = reduced_angle(state.phi)
     eng.X = np.array(
-        [state.x / a, state.y / a, state.phi, state.vx / vu, state.vy / vu, state.omega * tu]
+        [state.x / a, state.y / a, phi0, state.vx / vu, state.vy / vu, state.omega * tu]
     )
     gap0 = _gap(ol, line, line.segment(0.0)[0], 0.0, *eng.X[:3])[0]
     if gap0 < -_TOUCH:

@@ -191,6 +191,14 @@ _MESSAGES = {
 }
 
 
+def reduced_angle(phi: float) -> tuple[float, float]:
+    """(φ − 2πk, 2πk), k the nearest number of turns: the engines run on the reduced start
+    angle (a body at φ = 1e12 rad would otherwise turn on the last digits of its angle) and
+    the result adds the turns back."""
+    turns = 2.0 * math.pi * round(phi / (2.0 * math.pi))
+    return phi - turns, turns
+
+
 def _assemble(
     eng, status, t_stop, t_end, max_steps, max_phases, prob, body, friction, state, pusher, g
 ) -> PushedTrajectory:
@@ -221,7 +229,7 @@ def _assemble(
         t=t_si,
         x=arr[:, 1] * a,
         y=arr[:, 2] * a,
-        phi=arr[:, 3].copy(),
+        phi=arr[:, 3] + getattr(eng, "turns", 0.0),
         vx=arr[:, 4] * vu,
         vy=arr[:, 5] * vu,
         omega=arr[:, 6] / tu,

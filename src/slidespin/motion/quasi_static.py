@@ -37,6 +37,7 @@ finding on the dense output), so the poses are accurate to about the tolerance.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass
 
@@ -49,6 +50,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import Outline, body_outline
 from slidespin.motion.outcomes import PUSH_MODES
+from slidespin.motion.pushed_trajectory import reduced_angle
 from slidespin.motion.pushers import LinePusher
 from slidespin.motion.quasi_static_line import push_line_quasi_static
 
@@ -584,6 +586,7 @@ def push_quasi_static(
         )
         return QuasiStaticPush(**fields)
     t_out, q = _check_inputs(body, friction, pusher, times, start)
+    q[2], turns = reduced_angle(float(q[2]))  # the turns are added back to the result
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.bounded("rtol", rtol, 1e-13, 1e-3)
     v.bounded("pusher.mu", pusher.mu, 0.0, math.inf)
@@ -636,7 +639,8 @@ def push_quasi_static(
             pieces.append((t0, t1, mode, feature, seg, q.copy()))
     except _NoMode as exc:
         status, message = "indeterminate", str(exc)
-    return _assemble(prob, t_out, pieces, status, message)
+    out = _assemble(prob, t_out, pieces, status, message)
+    return dataclasses.replace(out, phi=out.phi + turns) if turns else out
 
 
 def _assemble(prob, t_out, pieces, status, message) -> QuasiStaticPush:

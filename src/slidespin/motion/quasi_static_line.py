@@ -60,6 +60,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
 from slidespin.motion.outcomes import PUSH_MODES
+from slidespin.motion.pushed_trajectory import reduced_angle
 
 __all__ = ["LINE_PUSH_MODES", "push_line_quasi_static"]
 
@@ -580,6 +581,7 @@ def push_line_quasi_static(
     the shared segment in face contact.
     """
     t_out, q, g, rtol = _check(body, friction, pusher, times, start, g, rtol)
+    q[2], turns = reduced_angle(float(q[2]))  # the turns are added back to the result
     t0, t1 = float(t_out[0]), float(t_out[-1])
     out = body_outline(body, outline)
     if out.kind == "hull" and not out.is_polygon:
@@ -634,7 +636,9 @@ def push_line_quasi_static(
             pieces.append((t0, t1, ("sep", 0, None), seg0, q.copy()))
     except _NoMode as exc:
         status, message = "indeterminate", str(exc)
-    return _assemble(prob, t_out, pieces, status, message)
+    fields = _assemble(prob, t_out, pieces, status, message)
+    fields["phi"] = fields["phi"] + turns
+    return fields
 
 
 def _code(mode) -> int:
