@@ -23,6 +23,7 @@ import numpy as np
 import push_reference as pref
 import pytest
 import quasi_static_reference as qref
+from round_feet import FEET, MIXED
 
 import slidespin as ss
 
@@ -42,22 +43,6 @@ PADS = ss.Body(
     mass=1.0,
 )
 ELLIPSE = ss.Body(ss.Ellipse(0.1, 0.06), ss.UniformPressure(), mass=1.0)
-#: three round feet: a hull of three arcs and three tangent edges, smooth everywhere
-FEET = ss.Body(
-    ss.Pads(
-        ss.Disk(0.02, centre=(0.1, 0.0)),
-        ss.Disk(0.02, centre=(-0.05, 0.0866)),
-        ss.Disk(0.02, centre=(-0.05, -0.0866)),
-    ),
-    ss.UniformPressure(),
-    mass=1.0,
-)
-#: a plate and a round foot: a hull with two sharp corners, two tangent edges and an arc
-MIXED = ss.Body(
-    ss.Pads(ss.Rectangle(0.1, 0.06, centre=(-0.05, 0.0)), ss.Disk(0.03, centre=(0.07, 0.0))),
-    ss.UniformPressure(),
-    mass=1.0,
-)
 #: linear pressure: G at (0.015, 0) off the ellipse's centre (symmetric about the ξ axis)
 LINEAR = ss.Body(
     ss.Ellipse(0.1, 0.08), ss.LinearPressure(0.015, 0.0), mass=1.0, moment_of_inertia=0.004

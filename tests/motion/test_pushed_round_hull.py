@@ -15,27 +15,13 @@ import math
 
 import numpy as np
 import pytest
+from round_feet import FEET, FEET_DISCS, MIXED, MIXED_DISCS
 
 import slidespin as ss
 
 ISO = ss.FrictionTensor(0.3, 0.3)
 ANISO = ss.FrictionTensor(0.2, 0.45, angle=0.3)
 
-#: three round feet (disc centre x, y and radius, patch frame): arcs and tangent edges only
-FEET_DISCS = [(0.1, 0.0, 0.02), (-0.05, 0.0866, 0.02), (-0.05, -0.0866, 0.02)]
-FEET = ss.Body(
-    ss.Pads(*(ss.Disk(r, centre=(x, y)) for x, y, r in FEET_DISCS)),
-    ss.UniformPressure(),
-    mass=1.0,
-)
-#: a plate and a round foot: the plate's corners (radius 0) and the foot's arc on the hull
-PLATE_CORNERS = [(-0.1, -0.03), (0.0, -0.03), (0.0, 0.03), (-0.1, 0.03)]
-MIXED_DISCS = [(x, y, 0.0) for x, y in PLATE_CORNERS] + [(0.07, 0.0, 0.03)]
-MIXED = ss.Body(
-    ss.Pads(ss.Rectangle(0.1, 0.06, centre=(-0.05, 0.0)), ss.Disk(0.03, centre=(0.07, 0.0))),
-    ss.UniformPressure(),
-    mass=1.0,
-)
 #: the mass centres, from the areas (uniform pressure): FEET's is 0 by symmetry
 G_FEET = np.zeros(2)
 _A_PLATE, _A_DISK = 0.1 * 0.06, math.pi * 0.03**2

@@ -6,6 +6,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 import pytest  # noqa: E402
+from round_feet import FEET  # noqa: E402
 
 import slidespin as ss  # noqa: E402
 from slidespin.viz.push_plot import MODE_GID, mode_colour, plot_pushed_trajectory  # noqa: E402
@@ -43,17 +44,8 @@ def test_wider_outline_is_drawn(pushed):
 def test_hull_of_pads_is_drawn_and_the_box_has_none(pushed):
     """The outline a finger touches is drawn dashed where it is not the footprint's own: the
     hull of pads (the tangent edges between round feet), not a box's own outline."""
-    feet = ss.Body(
-        ss.Pads(
-            ss.Disk(0.02, centre=(0.1, 0.0)),
-            ss.Disk(0.02, centre=(-0.05, 0.0866)),
-            ss.Disk(0.02, centre=(-0.05, -0.0866)),
-        ),
-        ss.UniformPressure(),
-        mass=1.0,
-    )
     finger = ss.PointPusher([(0.0, -0.14, 0.0), (1.84, 0.0, 0.12)], mu=0.1)
-    tr = ss.simulate(feet, ss.FrictionTensor.isotropic(0.3), ss.State(), pusher=finger, t_end=1.84)
+    tr = ss.simulate(FEET, ss.FrictionTensor.isotropic(0.3), ss.State(), pusher=finger, t_end=1.84)
     labels = [t.get_text() for t in plot_pushed_trajectory(tr, n_poses=3).legends[0].get_texts()]
     assert "contact outline" in labels
     labels = [

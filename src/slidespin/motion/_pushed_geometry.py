@@ -94,10 +94,6 @@ class _Outline:
         d = np.roll(self.P, -1, axis=0) - self.P
         self.PN = np.column_stack((-d[:, 1], d[:, 0]))  # inward (CCW), unnormalised
 
-    @property
-    def k(self) -> int:
-        return len(self.L)
-
     def length(self, piece):
         """The length of a hull's piece (an edge or an arc)."""
         k = len(self.L)

@@ -81,9 +81,9 @@ from slidespin.motion._stick_slip import GAUGE_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import PUSH_MODES
 from slidespin.motion.pushed_line import simulate_line
-from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble, reduced_angle
+from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble
 from slidespin.motion.pushers import LinePusher, PointPusher
-from slidespin.motion.state import State
+from slidespin.motion.state import State, reduced_angle
 
 __all__ = ["simulate_pushed"]
 

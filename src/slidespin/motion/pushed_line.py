@@ -65,7 +65,8 @@ from slidespin.motion._pushed_geometry import (
     _zx,
 )
 from slidespin.motion.outcomes import PUSH_MODES
-from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble, reduced_angle
+from slidespin.motion.pushed_trajectory import PushedTrajectory, _assemble
+from slidespin.motion.state import reduced_angle
 
 __all__ = ["simulate_line"]
 

@@ -191,14 +191,6 @@ _MESSAGES = {
 }
 
 
-def reduced_angle(phi: float) -> tuple[float, float]:
-    """(φ − 2πk, 2πk), k the nearest number of turns: the engines run on the reduced start
-    angle (a body at φ = 1e12 rad would otherwise turn on the last digits of its angle) and
-    the result adds the turns back."""
-    turns = 2.0 * math.pi * round(phi / (2.0 * math.pi))
-    return phi - turns, turns
-
-
 def _assemble(
     eng, status, t_stop, t_end, max_steps, max_phases, prob, body, friction, state, pusher, g
 ) -> PushedTrajectory:

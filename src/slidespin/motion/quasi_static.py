@@ -50,9 +50,9 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import Outline, body_outline
 from slidespin.motion.outcomes import PUSH_MODES
-from slidespin.motion.pushed_trajectory import reduced_angle
 from slidespin.motion.pushers import LinePusher
 from slidespin.motion.quasi_static_line import push_line_quasi_static
+from slidespin.motion.state import reduced_angle
 
 __all__ = ["QuasiStaticPush", "push_quasi_static"]
 

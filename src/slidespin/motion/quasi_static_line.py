@@ -60,7 +60,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
 from slidespin.motion.outcomes import PUSH_MODES
-from slidespin.motion.pushed_trajectory import reduced_angle
+from slidespin.motion.state import reduced_angle
 
 __all__ = ["LINE_PUSH_MODES", "push_line_quasi_static"]
 

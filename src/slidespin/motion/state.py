@@ -86,3 +86,11 @@ class State:
     def as_array(self) -> np.ndarray:
         """(x, y, phi, vx, vy, omega) as a float array."""
         return np.array([self.x, self.y, self.phi, self.vx, self.vy, self.omega])
+
+
+def reduced_angle(phi: float) -> tuple[float, float]:
+    """(φ − 2πk, 2πk), k the nearest number of turns: the engines run on the reduced start
+    angle (a body at φ = 1e12 rad would otherwise turn on the last digits of its angle) and
+    the result adds the turns back."""
+    turns = 2.0 * math.pi * round(phi / (2.0 * math.pi))
+    return phi - turns, turns
