@@ -20,7 +20,8 @@ pytest.importorskip("sphinx_gallery")
 pytest.importorskip("numpydoc")
 pytest.importorskip("myst_parser")
 
-pytestmark = pytest.mark.docs
+# one worker builds the site: sphinx-gallery writes into docs/ (two builds at once collide)
+pytestmark = [pytest.mark.docs, pytest.mark.xdist_group("docs")]
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
 SRC = Path(__file__).resolve().parents[2] / "src" / "slidespin"
