@@ -294,14 +294,6 @@ def test_switch_times_converge_with_rtol():
 # ---- input errors -------------------------------------------------------------------------
 
 
-def test_round_outline_is_not_supported_yet():
-    disk = ss.Body(ss.Disk(0.05), ss.UniformPressure(), mass=1.0)
-    pusher = LinePusher.constant_velocity((-0.05, 0.0, math.pi / 2), (0.3, 0.0, 0.0), 1.0, 0.1)
-    with pytest.raises(ValueError, match="not supported yet") as info:
-        simulate_pushed(disk, ISO, ss.State(), pusher, 1.0)
-    assert "\n" not in str(info.value) and str(info.value).startswith("body = ")
-
-
 def test_pusher_inside_the_body_is_refused():
     pusher = LinePusher.constant_velocity((0.0, 0.0, math.pi / 2), (0.3, 0.0, 0.0), 1.0, 0.1)
     with pytest.raises(ValueError, match="inside") as info:

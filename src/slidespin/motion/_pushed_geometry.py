@@ -183,6 +183,26 @@ class _Outline:
                 best, out = dd, (k + i, s)
         return out
 
+    def normal_point(self, beta):
+        """An ellipse's point with outward normal angle ``beta`` (body frame), by its support
+        function h(b) = √(A² cos² b + B² sin² b), b = β − γ: c = c0 + R_γ (h u + h' u⊥),
+        with the radius of curvature ρ = h + h'' and ρ' = dρ/dβ (c' = ρ u⊥(β), c'' = ρ' u⊥ −
+        ρ u). Returns (c, ρ, ρ')."""
+        b = beta - math.atan2(self.sb, self.cb)
+        cs, sn = math.cos(b), math.sin(b)
+        dd = self.B * self.B - self.A * self.A
+        h = math.hypot(self.A * cs, self.B * sn)
+        s2, c2 = 2.0 * sn * cs, cs * cs - sn * sn
+        h1 = 0.5 * dd * s2 / h
+        h2 = (dd * c2 - h1 * h1) / h
+        h3 = (-2.0 * dd * s2 - 3.0 * h1 * h2) / h
+        lx, ly = h * cs - h1 * sn, h * sn + h1 * cs
+        c = (
+            self.c0[0] + self.cb * lx - self.sb * ly,
+            self.c0[1] + self.sb * lx + self.cb * ly,
+        )
+        return c, h + h2, h1 + h3
+
     def geom(self, piece, s):
         """Body frame c(s), c'(s), c''(s) and the inward unit normal n(s)."""
         if self.poly:

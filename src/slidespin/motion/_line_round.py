@@ -1,0 +1,273 @@
+"""A line pusher on a round outline (an ellipse or a circle): the contacts of
+:mod:`slidespin.motion.pushed_line` on a smooth, strictly convex curve (MODEL §13).
+
+A flat face touches a smooth curve at one point, so the contact kinds are two:
+
+``vertex``  the curve on the pusher's face (the codes ``vertex_*``): the contact is the
+            outline's point whose outward normal is the face's, −n; it moves along the face
+            (σ, the state y[2]) and along the outline as the body turns relative to the
+            pusher. With β the outline's normal angle (world), β̇ = θ̇ − ω, ρ the radius of
+            curvature there and q = c − G, d = ∂c/∂β = −ρ t (t = ẑ × n):
+
+                Ġ = ṗ + σ̇ e + σ θ̇ ẑ×e − ω ẑ×q − β̇ d,   u = (σ̇ − ρ̃ β̇) e,  ρ̃ = e·d,
+
+            a_G = A0 + ω̇ (d − ẑ×q) + σ̈ e with A0 = 2σ̇θ̇ ẑ×e − σθ̇² e + ω² q − 2ωβ̇ ẑ×d −
+            β̇² c_ββ. *Sticking* is rolling without slip, u = 0: σ̇ = ρ̃ β̇, one degree of
+            freedom; *sliding*, two, the 3×3 solve of the vertex contact.
+``end``     an end of the pusher on the curve, as a finger (:mod:`slidespin.motion.pushed`)
+            at the end's moving point: the outline's parametric angle s (y[2]); sticking
+            holds s fixed.
+
+Switches besides those of every contact (separation, the cone's edge, u·t crossing 0): the
+rolling contact reaching an end of the face (σ = ±h) becomes an end contact; an end contact
+whose face turns into the body (ε e·n crossing 0, ε the end's side) becomes a rolling
+contact at σ = εh. The gap while separated is exact in its zero set: the implicit function
+of the ellipse, (|M (x − c0)| − 1) min(A, B) with M = diag(1/A, 1/B) R_γᵀ, minimised over
+the segment in closed form (a disk's: the distance from its centre less its radius).
+Natural units (ℓ, m, g = 1).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from slidespin.motion._line_engine import _CONE_TOL, _SEP, _Engine, _turn
+from slidespin.motion._pushed_geometry import _integrate_contact, _rot, _zx
+
+__all__ = ["RoundEngine"]
+
+_HYST = 1e-12  # [ℓ or rad] the slack of the switches between a rolling and an end contact
+
+
+class RoundEngine(_Engine):
+    """A line-pushed body with an ellipse (or circle) outline; the contact kinds
+    ``vertex`` (the curve on the face) and ``end`` (an end on the curve)."""
+
+    _rt = (0.0, 0.0, 0.0, 0.0)  # (ρ̃, β̇, e·c_ββ, σ̇) of the last rolling kin
+
+    # ---- kinematics ------------------------------------------------------------------
+
+    def roll_geometry(self, t, phi):
+        """The rolling contact's (e, ẑ×e, n, t, q, d, c_ββ) at pose angle φ (world)."""
+        p, th, pv, w = self.ln.state(self.seg, t)
+        e = (math.cos(th), math.sin(th))
+        ze = _zx(e)
+        n = (self.side * ze[0], self.side * ze[1])
+        tt = _zx(n)
+        beta = math.atan2(-n[1], -n[0])
+        c, sn = _rot(phi)
+        cb, rho, drho = self.ol.normal_point(beta - phi)
+        q = _turn(c, sn, cb)
+        d = (-rho * tt[0], -rho * tt[1])
+        cbb = (-drho * tt[0] + rho * n[0], -drho * tt[1] + rho * n[1])
+        return p, pv, w, e, ze, n, tt, q, d, cbb
+
+    def kin(self, t, y):
+        phi, om, z = y[0], y[1], y[2]
+        if self.kind == "end":
+            return self.end_kin(t, y)
+        p, pv, w, e, ze, n, tt, q, d, cbb = self.roll_geometry(t, phi)
+        bd = w - om
+        rt = e[0] * d[0] + e[1] * d[1]
+        zd = rt * bd if self.stick else y[3]
+        ecb = e[0] * cbb[0] + e[1] * cbb[1]
+        self._rt = (rt, bd, ecb, zd)
+        vpm = (pv[0] + w * z * ze[0], pv[1] + w * z * ze[1])
+        vc = (vpm[0] + zd * e[0], vpm[1] + zd * e[1])
+        qp, dp = _zx(q), _zx(d)
+        vg = (vc[0] - om * qp[0] - bd * d[0], vc[1] - om * qp[1] - bd * d[1])
+        a0 = [
+            2.0 * zd * w * ze[i]
+            - z * w * w * e[i]
+            + om * om * q[i]
+            - 2.0 * om * bd * dp[i]
+            - bd * bd * cbb[i]
+            for i in (0, 1)
+        ]
+        a1 = (d[0] - qp[0], d[1] - qp[1])
+        if self.stick:  # σ̈ = −ρ̃ ω̇ + β̇² e·c_ββ folded into a_G
+            a1 = (a1[0] - rt * e[0], a1[1] - rt * e[1])
+            a0 = [a0[i] + bd * bd * ecb * e[i] for i in (0, 1)]
+        slip = zd - rt * bd
+        u = (slip * e[0], slip * e[1])
+        return vg, tuple(a0), a1, e, q, n, tt, vpm, u, w
+
+    def end_kin(self, t, y):
+        """An end of the pusher on the curve at parametric angle s = y[2]."""
+        phi, om, s, sd = y[0], y[1], y[2], y[3]
+        p, th, pv, w = self.ln.state(self.seg, t)
+        e = (math.cos(th), math.sin(th))
+        rel = (self.endsign * self.ln.h * e[0], self.endsign * self.ln.h * e[1])
+        vc = (pv[0] - w * rel[1], pv[1] + w * rel[0])
+        c, sn = _rot(phi)
+        cb, c1, c2, nb = self.ol.geom(0, s)
+        r, d, dd, n = _turn(c, sn, cb), _turn(c, sn, c1), _turn(c, sn, c2), _turn(c, sn, nb)
+        dp = _zx(d)
+        a0 = tuple(
+            -w * w * rel[i] + om * om * r[i] - 2.0 * om * sd * dp[i] - sd * sd * dd[i]
+            for i in (0, 1)
+        )
+        vg = (vc[0] + om * r[1] - sd * d[0], vc[1] - om * r[0] - sd * d[1])
+        return vg, a0, (r[1], -r[0]), (-d[0], -d[1]), r, n, _zx(n), vc, (-sd * d[0], -sd * d[1]), w
+
+    def stick_zdd(self, omd):
+        if self.kind == "end":
+            return 0.0
+        rt, bd, ecb, _ = self._rt
+        return -rt * omd + bd * bd * ecb
+
+    def slip_accel(self, t, y, omd, zdd, tt):
+        if self.kind == "end":
+            return super().slip_accel(t, y, omd, zdd, tt)
+        self.kin(t, y)
+        rt, bd, ecb, _ = self._rt
+        e = self.ln.state(self.seg, t)[1]
+        et = math.cos(e) * tt[0] + math.sin(e) * tt[1]
+        return (zdd + rt * omd - bd * bd * ecb) * et
+
+    # ---- the reduced state from the full one ----------------------------------------
+
+    def y_now(self, t):
+        x = self.X
+        p, th, pv, w = self.ln.state(self.seg, t)
+        c, sn = _rot(x[2])
+        if self.kind == "end":
+            cp = self.cpoint(t, None)
+            dx, dy = cp[0] - x[0], cp[1] - x[1]
+            s = self.ol.locate(c * dx + sn * dy, -sn * dx + c * dy)[1]
+            d = _turn(c, sn, self.ol.geom(0, s)[1])
+            rel = (cp[0] - p[0], cp[1] - p[1])
+            vc = (pv[0] - w * rel[1], pv[1] + w * rel[0])
+            ub = (x[3] - x[5] * dy - vc[0], x[4] + x[5] * dx - vc[1])
+            sd = -(ub[0] * d[0] + ub[1] * d[1]) / (d[0] * d[0] + d[1] * d[1])
+            return np.array([x[2], x[5], s, 0.0 if self.stick else sd, *self.W])
+        _, _, _, e, ze, _, _, q, d, _ = self.roll_geometry(t, x[2])
+        cw = (x[0] + q[0], x[1] + q[1])
+        z = (cw[0] - p[0]) * e[0] + (cw[1] - p[1]) * e[1]
+        vb = (x[3] - x[5] * q[1], x[4] + x[5] * q[0])  # the body's material point at c
+        vpm = (pv[0] + w * z * ze[0], pv[1] + w * z * ze[1])
+        rt = e[0] * d[0] + e[1] * d[1]
+        zd = rt * (w - x[5]) + (vb[0] - vpm[0]) * e[0] + (vb[1] - vpm[1]) * e[1]
+        return np.array([x[2], x[5], z, zd, *self.W])
+
+    # ---- the gap, the contact's feature ---------------------------------------------
+
+    def _scaled(self, seg, t, x, y, phi):
+        """The pusher's ends in the ellipse's unit-circle frame."""
+        p, th, _, _ = self.ln.state(seg, t)
+        ol, h = self.ol, self.ln.h
+        e = (math.cos(th), math.sin(th))
+        c, sn = _rot(phi)
+        out = []
+        for sg in (-h, h):
+            wx, wy = p[0] + sg * e[0] - x, p[1] + sg * e[1] - y
+            bx, by = c * wx + sn * wy, -sn * wx + c * wy
+            lx, ly = ol._local(bx, by)
+            out.append((lx / ol.A, ly / ol.B))
+        return out
+
+    def nearest(self, seg, t, x, y, phi):
+        """(τ, |·|): the segment's point nearest the unit circle's centre, τ ∈ [0, 1]."""
+        (ax, ay), (bx, by) = self._scaled(seg, t, x, y, phi)
+        dx, dy = bx - ax, by - ay
+        den = dx * dx + dy * dy
+        tau = min(max(-(ax * dx + ay * dy) / den, 0.0), 1.0) if den > 0.0 else 0.0
+        return tau, math.hypot(ax + tau * dx, ay + tau * dy)
+
+    def gap(self, seg, t, x, y, phi):
+        return (self.nearest(seg, t, x, y, phi)[1] - 1.0) * min(self.ol.A, self.ol.B)
+
+    def identify(self, t):
+        """The contact where the gap closes: the curve on the face or an end on the curve;
+        G is moved (by the gap, ≤ 1e-9 ℓ) so that the contact is exact."""
+        x = self.X
+        p, th, _, _ = self.ln.state(self.seg, t)
+        e = (math.cos(th), math.sin(th))
+        ze = _zx(e)
+        tau = self.nearest(self.seg, t, x[0], x[1], x[2])[0]
+        c, sn = _rot(x[2])
+        if 0.0 < tau < 1.0:
+            cw = _turn(c, sn, self.ol.c0)
+            self.kind = "vertex"
+            self.side = (
+                1.0 if (x[0] + cw[0] - p[0]) * ze[0] + (x[1] + cw[1] - p[1]) * ze[1] > 0 else -1.0
+            )
+            q = self.roll_geometry(t, x[2])[7]
+            off = (x[0] + q[0] - p[0]) * ze[0] + (x[1] + q[1] - p[1]) * ze[1]
+            x[0] -= off * ze[0]
+            x[1] -= off * ze[1]
+            return
+        self.kind, self.endsign = "end", (1.0 if tau >= 1.0 else -1.0)
+        cp = self.cpoint(t, None)
+        dx, dy = cp[0] - x[0], cp[1] - x[1]
+        s = self.ol.locate(c * dx + sn * dy, -sn * dx + c * dy)[1]
+        r = _turn(c, sn, self.ol.geom(0, s)[0])
+        x[0] += dx - r[0]
+        x[1] += dy - r[1]
+
+    # ---- phases ----------------------------------------------------------------------
+
+    def run_contact(self, t0, t1):
+        mu, h = self.mu, self.ln.h
+
+        def fun(t, y):
+            omd, zdd, _, _, _, pw, *_ = self.acc(t, y)
+            zd = self._rt[3] if self.kind == "vertex" else y[3]
+            return np.array([y[1], omd, zd, zdd, *pw])
+
+        def nt(t, y):
+            _, _, lam, _, _, _, _, n, tt, ut = self.acc(t, y)
+            return lam[0] * n[0] + lam[1] * n[1], lam[0] * tt[0] + lam[1] * tt[1], ut
+
+        events = [("sep", lambda t, y: nt(t, y)[0])]
+        if self.stick:
+            events.append(
+                ("cone", lambda t, y: mu * nt(t, y)[0] - nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
+            )
+            events.append(
+                ("cone", lambda t, y: mu * nt(t, y)[0] + nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
+            )
+        else:
+            events.append(("slip", lambda t, y: self.dirn * nt(t, y)[2]))
+        if self.kind == "vertex":
+            events.append(("off", lambda t, y: h * (1.0 + _HYST) - y[2]))
+            events.append(("off", lambda t, y: h * (1.0 + _HYST) + y[2]))
+        else:
+            events.append(("tangent", lambda t, y: self.face_turn(t, y) + _HYST))
+
+        def rec(t, y):
+            lam, cpt = self.full(t, y)
+            self.record(t, self.mode, lam, cpt)
+
+        y0 = self.y_now(t0)
+        reason, t, y, idx, steps = _integrate_contact(
+            fun, t0, y0, t1, [g for _, g in events], self.rtol, self.atol, self.steps_left, rec
+        )
+        self.steps_left -= steps
+        self.full(t, y)
+        return reason, t, (events[idx][0] if reason == "event" else None)
+
+    def face_turn(self, t, y):
+        """ε e·n at an end contact: < 0 where the face from the end would enter the body."""
+        th = self.ln.state(self.seg, t)[1]
+        n = self.end_kin(t, y)[5]
+        return self.endsign * (math.cos(th) * n[0] + math.sin(th) * n[1])
+
+    def after_event(self, t, label):
+        if label == "sep":
+            return _SEP
+        if label == "off":  # the rolling contact reaches an end of the face
+            self.endsign = 1.0 if self.y_now(t)[2] > 0.0 else -1.0
+            self.kind = "end"
+            return self.arrive(t)
+        if label == "tangent":  # the face turns onto the curve at the end
+            y = self.y_now(t)
+            n = self.end_kin(t, y)[5]
+            th = self.ln.state(self.seg, t)[1]
+            ze = (-math.sin(th), math.cos(th))
+            self.side = 1.0 if n[0] * ze[0] + n[1] * ze[1] > 0.0 else -1.0
+            self.kind = "vertex"
+            return self.arrive(t)
+        return self.decide(t, exclude=(self.mode,))
