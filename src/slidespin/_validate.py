@@ -52,6 +52,10 @@ SPEED = 1e8  # |vx|, |vy| of a State [m/s]
 SPIN = 1e12  # |ω| of a State [rad/s]
 POSITION = 1e100  # |x|, |y| of a State [m]: any stop the other ranges allow is far inside
 RATIO = (1e-9, 1e9)  # β/a in terminal-ratio inputs
+#: largest step budget (the integrator counts steps in 64-bit integers; 1e9 steps of a few
+#: microseconds each is already an hour)
+MAX_STEPS = 1_000_000_000
+T_END = 1e9  # the largest t_end [s] of a pushed run
 
 
 def _as_float(name: str, value: object) -> float:
@@ -74,6 +78,7 @@ def _short(value: object, limit: int = 60) -> str:
         text = repr(value)
     except Exception:  # noqa: BLE001 - a repr that fails must not hide the real error
         text = f"<{type(value).__name__}>"
+    text = " ".join(text.split())  # one line (an array's repr spans several)
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
@@ -115,7 +120,7 @@ def real_array(
     Bools, strings, complex numbers, objects and ragged sequences are refused with the
     parameter's name.
     """
-    if isinstance(value, (bool, np.bool_, str, bytes)):
+    if isinstance(value, (bool, np.bool_, str, bytes)) or _holds_bool(value):
         raise ValueError(f"{name} must be a real number or array of them, got {_short(value)}")
     try:
         arr = np.asarray(value)
@@ -123,6 +128,10 @@ def real_array(
         raise ValueError(
             f"{name} must be a real number or array of them, got {_short(value)}"
         ) from None
+    if np.ma.is_masked(value):  # np.asarray drops a mask: its entries would be read as data
+        raise ValueError(
+            f"{name} has masked entries; valid values: plain real numbers (fill or drop them)"
+        )
     if arr.dtype.kind == "O" and arr.ndim == 0:  # e.g. an int beyond int64 or a Fraction
         arr = np.asarray(_as_float(name, value))
     if arr.dtype.kind not in "fiu":
@@ -140,6 +149,13 @@ def real_array(
         word = "is not finite" if not math.isfinite(x) else "is invalid"
         raise ValueError(f"{name} = {x!r}{u} {word}; valid range: {rng}")
     return arr
+
+
+def _holds_bool(value: object) -> bool:
+    """True if a (nested) list or tuple holds a bool (NumPy would read True as 1)."""
+    if not isinstance(value, (list, tuple)):
+        return False
+    return any(isinstance(x, (bool, np.bool_)) or _holds_bool(x) for x in value)
 
 
 def finite(name: str, value: object) -> float:

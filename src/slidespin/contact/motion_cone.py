@@ -338,7 +338,7 @@ class MotionCone:
     def contains(self, twist) -> bool:
         """True if the twist (vx, vy, ω ℓ) lies in the cone spanned by the two edges, i.e. is
         a non-negative combination of them (a sticking push produces it)."""
-        t = np.asarray(twist, dtype=float)
+        t = _pair3("twist", twist)
         a, b = self.edges
         m = np.column_stack((a, b))
         coef, *_ = np.linalg.lstsq(m, t, rcond=None)

@@ -576,6 +576,11 @@ def body_outline(body, outline: object = None) -> Outline:
         out = _hull_outline(_footprint_discs(shape), g)
     else:
         name = "outline"
+        if not isinstance(shape, (list, tuple, np.ndarray)):
+            raise ValueError(
+                f"{name} = {v._short(shape)} is invalid; valid values: None, vertices (n, 2) "
+                "[m], a Polygon, Rectangle, Disk, Annulus or an Ellipse"
+            )
         if isinstance(shape, (str, bytes)) or (
             isinstance(shape, (list, tuple))
             and any(

@@ -588,7 +588,7 @@ class _Engine:
                     continue
                 if reason == "stop":
                     continue
-                if reason == "end":
+                if reason == "end" and self.rows[-1][0] != t1:
                     self.record(t1, _SEP)
             else:
                 reason, t, label = self.run_contact(t, t1)

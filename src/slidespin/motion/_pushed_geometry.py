@@ -376,12 +376,18 @@ def check_inputs(
         raise ValueError(
             f"incline = {v._short(incline)} is invalid; valid values: a slidespin.Incline or None"
         )
-    t_end = v.positive("t_end", t_end, "s")
+    t_end = v.in_range("t_end", t_end, 0.0, v.T_END, lo_open=True)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     for name, val in (("max_steps", max_steps), ("max_phases", max_phases)):
-        if isinstance(val, bool) or not isinstance(val, (int, np.integer)) or val < 1:
-            raise ValueError(f"{name} = {val!r} is invalid; valid range: integer >= 1")
+        if (
+            isinstance(val, bool)
+            or not isinstance(val, (int, np.integer))
+            or not 1 <= val <= v.MAX_STEPS
+        ):
+            raise ValueError(
+                f"{name} = {v._short(val)} is invalid; valid range: integer in [1, {v.MAX_STEPS}]"
+            )
     return t_end, g, rtol
 
 
@@ -515,6 +521,7 @@ def _separated(eng, t0, t1, gap, stop_drop):
     to_full(tau, y)
     t = float(y[4])
     if reason == "event" and idx == 2:
+        eng.rows[-1][0] = t1  # the row at the root (t1 to an ulp) is the row at t1
         return "end", t1
     if reason == "event" and idx == 1:
         eng.X[3:] = 0.0

@@ -89,6 +89,8 @@ def _rows(name: str, value: object, columns: tuple[str, ...], units: tuple[str, 
             f"{name} = {v._short(value)} is invalid; valid values: a sequence of rows {layout}"
         )
     _no_bools(name, value)
+    if np.ma.is_masked(value):  # np.asarray drops a mask: its entries would be read as data
+        raise ValueError(f"{name} has masked entries; valid values: rows {layout} of numbers")
     try:
         arr = np.asarray(value)
     except (ValueError, TypeError, OverflowError):

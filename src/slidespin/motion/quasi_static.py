@@ -49,6 +49,7 @@ from slidespin.contact._engine import TwistWrench
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import Outline, body_outline
+from slidespin.motion._qs_pieces import PhaseBudget, Pieces, check_max_phases
 from slidespin.motion.outcomes import PUSH_MODES
 from slidespin.motion.pushers import LinePusher
 from slidespin.motion.quasi_static_line import push_line_quasi_static
@@ -106,8 +107,9 @@ class QuasiStaticPush:
     switch_modes : tuple of str
         The mode entered at each switch time.
     status : str
-        ``"ok"``, or ``"indeterminate"`` if no consistent contact mode was found (then the
-        arrays hold NaN from that time on and ``message`` says why; the vocabulary of
+        ``"ok"``, ``"indeterminate"`` if no consistent contact mode was found, or
+        ``"max_phases"`` past the budget of pieces (then the arrays hold NaN from that time
+        on and ``message`` says why; the vocabulary of
         :data:`slidespin.motion.outcomes.PUSHED_STATUSES`).
     message : str
         One line on how the run ended.
@@ -536,6 +538,7 @@ def push_quasi_static(
     outline=None,
     g: float = 9.81,
     rtol: float = 1e-10,
+    max_phases: int = 10_000,
 ) -> QuasiStaticPush:
     """The quasi-static motion of ``body`` pushed by a finger along its path (MODEL §13).
 
@@ -564,6 +567,10 @@ def push_quasi_static(
     rtol : float, default 1e-10
         Relative tolerance of the integration in [1e-13, 1e-3] (absolute: ``rtol`` × ℓ on
         the position, ``rtol`` on the angle).
+    max_phases : int, default 10000
+        Budget of pieces (contact modes between switches and path knots) in [1, 1e9]; beyond
+        it the push ends with status ``"max_phases"`` (values as reached, NaN after), as a
+        dynamic run does.
 
     Returns
     -------
@@ -582,10 +589,19 @@ def push_quasi_static(
     """
     if isinstance(pusher, LinePusher):
         fields = push_line_quasi_static(
-            body, friction, pusher, times, start, outline=outline, g=g, rtol=rtol
+            body,
+            friction,
+            pusher,
+            times,
+            start,
+            outline=outline,
+            g=g,
+            rtol=rtol,
+            max_phases=max_phases,
         )
         return QuasiStaticPush(**fields)
     t_out, q = _check_inputs(body, friction, pusher, times, start)
+    max_phases = check_max_phases(max_phases)
     q[2], turns = reduced_angle(float(q[2]))  # the turns are added back to the result
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.bounded("rtol", rtol, 1e-13, 1e-3)
@@ -602,7 +618,7 @@ def push_quasi_static(
         )
     knots = sorted({float(k) for k in np.asarray(pusher.knots, dtype=float) if t0 < k < t1})
     bounds = [t0, *knots, t1]
-    pieces: list[tuple] = []  # (ta, tb, mode, feature, seg, q or dense solution)
+    pieces = Pieces(max_phases)  # (ta, tb, mode, feature, seg, q or dense solution)
     status, message = "ok", f"followed the path to t = {t1!r} s"
     try:
         for ta, tb in zip(bounds[:-1], bounds[1:]):
@@ -639,6 +655,8 @@ def push_quasi_static(
             pieces.append((t0, t1, mode, feature, seg, q.copy()))
     except _NoMode as exc:
         status, message = "indeterminate", str(exc)
+    except PhaseBudget as exc:
+        status, message = "max_phases", str(exc)
     out = _assemble(prob, t_out, pieces, status, message)
     return dataclasses.replace(out, phi=out.phi + turns) if turns else out
 

@@ -59,6 +59,7 @@ from slidespin.contact._engine import TwistWrench
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
+from slidespin.motion._qs_pieces import PhaseBudget, Pieces, check_max_phases
 from slidespin.motion.outcomes import PUSH_MODES
 from slidespin.motion.state import reduced_angle
 
@@ -542,7 +543,7 @@ def _check(body, friction, pusher, times, start, g, rtol):
 
 def push_line_quasi_static(
     body: Body, friction: FrictionTensor, pusher, times, start=None, *, outline=None,
-    g: float = 9.81, rtol: float = 1e-10,
+    g: float = 9.81, rtol: float = 1e-10, max_phases: int = 10_000,
 ) -> dict:  # fmt: skip
     """The quasi-static motion of ``body`` pushed by a line pusher (MODEL §13).
 
@@ -563,9 +564,9 @@ def push_line_quasi_static(
     start : (x, y, phi), optional
         Pose of G [m, m, rad] at ``times[0]``, default (0, 0, 0); the pusher must not start
         inside the outline.
-    outline, g, rtol
+    outline, g, rtol, max_phases
         As in :func:`slidespin.push_quasi_static` (``g`` in [1e-6, 1e6] m/s², ``rtol`` in
-        [1e-13, 1e-3]).
+        [1e-13, 1e-3], ``max_phases`` in [1, 1e9]).
 
     Returns
     -------
@@ -581,6 +582,7 @@ def push_line_quasi_static(
     the shared segment in face contact.
     """
     t_out, q, g, rtol = _check(body, friction, pusher, times, start, g, rtol)
+    max_phases = check_max_phases(max_phases)
     q[2], turns = reduced_angle(float(q[2]))  # the turns are added back to the result
     t0, t1 = float(t_out[0]), float(t_out[-1])
     out = body_outline(body, outline)
@@ -605,7 +607,7 @@ def push_line_quasi_static(
         )
     knots = sorted({float(k) for k in np.asarray(pusher.knots, dtype=float) if t0 < k < t1})
     bounds = [t0, *knots, t1]
-    pieces: list[tuple] = []
+    pieces = Pieces(max_phases)
     status, message = "ok", f"followed the path to t = {t1!r} s"
     try:
         for ta, tb in zip(bounds[:-1], bounds[1:]):
@@ -636,6 +638,8 @@ def push_line_quasi_static(
             pieces.append((t0, t1, ("sep", 0, None), seg0, q.copy()))
     except _NoMode as exc:
         status, message = "indeterminate", str(exc)
+    except PhaseBudget as exc:
+        status, message = "max_phases", str(exc)
     fields = _assemble(prob, t_out, pieces, status, message)
     fields["phi"] = fields["phi"] + turns
     return fields

@@ -50,7 +50,7 @@ __all__ = ["simulate", "Trajectory", "ENDINGS", "STATUSES", "classify_ending", "
 
 #: largest step budget (the integrator counts steps in 64-bit integers; 1e9 steps of a few
 #: microseconds each is already an hour)
-MAX_STEPS_LIMIT = 1_000_000_000
+MAX_STEPS_LIMIT = v.MAX_STEPS
 
 
 def check_solver_options(rtol: float, max_steps: int) -> tuple[float, int]:
@@ -503,7 +503,7 @@ def _pushed(body, friction, state, g, rtol, max_steps, max_step, load, incline, 
     if t_end is None:
         raise ValueError(
             "t_end = None is invalid with a pusher (a pushed body need not stop); valid "
-            "values: a time bound in (0, 1e9] s, e.g. the end of the pusher's path"
+            f"values: a time bound in (0, {v.T_END:g}] s, e.g. the end of the pusher's path"
         )
     for name, val in (("max_step", max_step), ("scan_step", scan_step)):
         if val is not None:

@@ -83,7 +83,7 @@ MAX_NAME_CHARS = 200
 #: deepest nesting of tables, inline tables and arrays in a case file or sweep spec
 MAX_DEPTH = 6
 #: largest ``[solver] max_steps`` (the step counter is a 64-bit integer; 10⁹ steps are hours)
-MAX_STEPS_LIMIT = 1_000_000_000
+MAX_STEPS_LIMIT = v.MAX_STEPS
 _INT64 = 2**63 - 1
 
 #: keys of each footprint shape in [patch] (and in every [[patch.pads]] entry)
