@@ -171,13 +171,6 @@ def test_slow_finger_costs_no_more_than_a_fast_one():
     assert counts[0.001] < 3 * counts[0.03], counts
 
 
-def test_line_pusher_refuses_a_round_hull_in_one_line():
-    pusher = ss.LinePusher(0.1, [(0.0, -0.2, 0.0, math.pi / 2), (1.0, 0.0, 0.0, math.pi / 2)])
-    with pytest.raises(ValueError, match="body = .*straight edges and arcs") as err:
-        ss.simulate(FEET, ISO, ss.State(), pusher=pusher, t_end=1.0)
-    assert "\n" not in str(err.value)
-
-
 PLATE_AND_FOOT = ss.Body(
     ss.Pads(ss.Rectangle(0.1, 0.1, centre=(-0.05, 0.0)), ss.Disk(0.03, centre=(0.1, 0.0))),
     ss.UniformPressure(),

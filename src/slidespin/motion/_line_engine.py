@@ -25,7 +25,9 @@ from slidespin.motion._pushed_geometry import (
 from slidespin.motion.outcomes import PUSH_MODES
 
 _SEP = 0
-_BASE = {"face": 4, "vertex": 7, "end": 10}  # + 0 sticking, + 1 left, + 2 right
+#: + 0 sticking, + 1 left, + 2 right; a round outline's arc rolling on the face reports as a
+#: vertex, an end on an arc as an end (motion/_line_round.py)
+_BASE = {"face": 4, "vertex": 7, "end": 10, "roll": 7, "endarc": 10}
 _TOUCH = 1e-9  # |gap| [ℓ] within which the pusher given at t = 0 touches the outline
 _GAP_TOL = 1e-13  # [ℓ] a separated pusher re-contacts where the gap falls below −_GAP_TOL
 _CONE_TOL = 1e-12
@@ -159,7 +161,7 @@ class _Engine:
     def cpoint(self, t, y):
         """The contact point on the pusher: its end, or the point σ = y[2] of its face."""
         p, th, _, _ = self.ln.state(self.seg, t)
-        sig = self.endsign * self.ln.h if self.kind == "end" else y[2]
+        sig = self.endsign * self.ln.h if self.kind in ("end", "endarc") else y[2]
         return (p[0] + sig * math.cos(th), p[1] + sig * math.sin(th))
 
     def full(self, t, y):
@@ -362,14 +364,14 @@ class _Engine:
             dirn = 1.0 if ut > 0.0 else -1.0
             ln, _, _, inside, hi_side = self.try_mode(t, False, dirn)
             if ln < 0.0:
-                return _SEP
+                return self.turn_off_face(t, depth) if self.kind == "face" else _SEP
             if not inside:
                 self.pivot(t, hi_side)
                 return self.decide(t, depth=depth + 1)
             return self.code()
         ln, lt, _, inside, hi_side = self.try_mode(t, True)
         if ln < 0.0:
-            return _SEP
+            return self.turn_off_face(t, depth) if self.kind == "face" else _SEP
         cone = abs(lt) <= self.mu * ln + _CONE_TOL * (abs(ln) + abs(lt))
         if inside and cone and self.code() not in exclude:
             return self.code()
@@ -387,6 +389,20 @@ class _Engine:
             self.pivot(t, hi_side)
             return self.decide(t, depth=depth + 1)
         return _SEP if ln < 0.0 else -1
+
+    def turn_off_face(self, t, depth):
+        """A flush face that the pusher would have to pull (λn < 0) while the body turns
+        relative to it: the contact at the end of the shared segment about which the other
+        end turns away from the face (ω̇ ≥ 0 about the ``hi`` end, ≤ 0 about ``lo``, θ̈ = 0
+        on a path segment) if it pushes there, else separation."""
+        saved = (self.kind, self.j, self.endsign)
+        for at_hi in (True, False):
+            self.pivot(t, at_hi)
+            mode = self.decide(t, depth=depth + 1)
+            if mode not in (_SEP, -1) and (self.acc(t, self.y_now(t))[0] >= 0.0) == at_hi:
+                return mode
+            self.kind, self.j, self.endsign = saved
+        return _SEP
 
     def arrive(self, t, impacts=True):
         """The mode once a contact starts or the pusher's velocity jumps (impact if any)."""
@@ -426,6 +442,11 @@ class _Engine:
             return 1.0
         return self.side * (-q[0] * math.sin(th) + q[1] * math.cos(th)) + _GAP_TOL
 
+    def edge_end(self, i):
+        """The far end of edge i (body frame): the next vertex, or on a hull of discs the
+        point where the edge meets the next disc."""
+        return self.ol.V[i] + self.ol.L[i] * self.ol.E[i]
+
     def run_contact(self, t0, t1):
         mu, nv = self.mu, len(self.ol.L)
 
@@ -455,7 +476,7 @@ class _Engine:
             events.append(("off", lambda t, y: h - y[2]))
             events.append(("off", lambda t, y: h + y[2]))
             for nb in ((self.j - 1) % nv, (self.j + 1) % nv):
-                vb = self.ol.V[nb]
+                vb = self.edge_end(self.j) if nb == (self.j + 1) % nv else self.ol.V[nb]
                 events.append((("flush", nb), lambda t, y, vb=vb: self.flush(t, y, vb)))
         else:
             length = float(self.ol.L[self.j])
@@ -469,7 +490,7 @@ class _Engine:
             c, sn = _rot(self.X[2])
             d = _turn(c, sn, self.ol.E[i])
             nb = i if (d[0] * e[0] + d[1] * e[1]) * tow < 0.0 else (i + 1) % nv
-            vb = self.ol.V[nb]
+            vb = self.ol.V[i] if nb == i else self.edge_end(i)
             events.append((("flush", nb), lambda t, y, vb=vb: self.flush(t, y, vb)))
 
         def rec(t, y):

@@ -39,10 +39,9 @@ separates, an end sliding onto a body vertex makes a vertex contact; the separat
 closing (arrival). Impacts on arrival and at knots are plastic, as for a finger. Energy:
 pusher work (λ·ṗ(c) + τ θ̇, impulses included) + load work = ΔKE + plane friction + contact
 slip (−λ·u = μp λn |u·t|) + impact losses. The engine of these contacts on a polygon is
-:mod:`slidespin.motion._line_engine`; on an ellipse or a circle,
-:mod:`slidespin.motion._line_round` (the curve rolling or sliding on the face, ``vertex_*``, or
-an end on the curve, ``end_*``). A hull with straight edges and arcs (pads with disks) is not
-supported yet (a ``ValueError``). Natural units throughout (ℓ, m, g = 1).
+:mod:`slidespin.motion._line_engine`; on an ellipse, a circle or a hull with arcs (pads with disks),
+:mod:`slidespin.motion._line_round` (a curve rolling or sliding on the face, ``vertex_*``, or
+an end on a curve, ``end_*``). Natural units throughout (ℓ, m, g = 1).
 """
 
 from __future__ import annotations
@@ -65,8 +64,7 @@ def simulate_line(
 ) -> PushedTrajectory:
     """A body pushed by a line pusher over [0, t_end] (MODEL §13, with §11's loads): the
     arguments of :func:`slidespin.motion.pushed.simulate_pushed`, checked there; the outline
-    must be a polygon, an ellipse or a circle, and the pusher must not start inside it (a
-    one-line ``ValueError``).
+    must not start inside the outline (a one-line ``ValueError``).
     Returns a :class:`~slidespin.motion.pushed_trajectory.PushedTrajectory` with the modes
     of the module notes (``contact_point``: the resultant's point on the face, or the point
     contact; ``pusher_position``: the pusher's centre)."""
@@ -74,15 +72,10 @@ def simulate_line(
     prob.b(0.0, state.phi)
     a, tu, vu = prob.a, prob.t_unit, prob.v_unit
     ol = _Outline(body, a, outline)
-    if ol.round:
-        name, val = ("outline", outline) if outline is not None else ("body", body)
-        raise ValueError(
-            f"{name} = {v._short(val)} is invalid for a line pusher: a hull with straight "
-            "edges and arcs (pads with disks) is not supported yet; valid: a polygon, an "
-            "ellipse or a circle (give outline=)"
-        )
     line = _Line(pusher, a, tu)
-    eng = (_Engine if ol.poly else RoundEngine)(prob, ol, line, rtol, int(max_steps))
+    eng = (RoundEngine if ol.round or not ol.poly else _Engine)(
+        prob, ol, line, rtol, int(max_steps)
+    )
     phi0, eng.turns = reduced_angle(state.phi)
     eng.X = np.array(
         [state.x / a, state.y / a, phi0, state.vx / vu, state.vy / vu, state.omega * tu]

@@ -1,0 +1,152 @@
+"""A line pusher on hulls of discs (pads with disks: straight edges, arcs and sharp corners;
+MODEL §13): the arc's contacts against the ellipse engine on the same circle, a flat push
+on a straight edge (closed form), the energy balance and the contact's geometry against a
+support function written in the tests, and mirror symmetry."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from round_feet import FEET, FEET_DISCS, MIXED, MIXED_DISCS
+from test_push_crosschecks import _hermite
+from test_pushed_round_hull import G_FEET, G_MIXED, _body_frame, _support_gap
+
+import slidespin as ss
+
+G = 9.81
+ISO = ss.FrictionTensor(0.3, 0.3)
+ANISO = ss.FrictionTensor(0.2, 0.45, angle=0.3)
+#: a big disc and a small one: G = (−0.021, 0) inside the big one
+TWO = ss.Body(
+    ss.Pads(ss.Disk(0.06, centre=(-0.03, 0.0)), ss.Disk(0.02, centre=(0.06, 0.0))),
+    ss.UniformPressure(),
+    mass=1.0,
+)
+#: a stadium: two equal discs, G at the origin, flat edges at y = ±0.03
+STADIUM = ss.Body(
+    ss.Pads(ss.Disk(0.03, centre=(-0.05, 0.0)), ss.Disk(0.03, centre=(0.05, 0.0))),
+    ss.UniformPressure(),
+    mass=1.0,
+)
+_LEFT = -0.03 - 0.06 + 0.021  # TWO's leftmost point from G
+
+
+@pytest.mark.parametrize(
+    ("length", "rows", "mu", "first"),
+    [
+        (
+            0.2,
+            [(0, _LEFT - 0.05, 0.0, math.pi / 2), (1.0, _LEFT + 0.15, 0.05, 1.87)],
+            0.3,
+            "vertex",
+        ),
+        (
+            0.03,
+            [(0, _LEFT - 0.05, 0.03, math.pi / 2), (1.0, _LEFT + 0.1, 0.03, math.pi / 2)],
+            0.5,
+            "end",
+        ),
+    ],
+)
+def test_an_arc_moves_as_the_circle_it_belongs_to(length, rows, mu, first):
+    """A push that touches only the big disc's arc of TWO (the face rolling on it; an end on
+    it): the same motion as the body given that disc as its outline (the ellipse engine,
+    checked against a constrained reference in test_pushed_line_round.py)."""
+    pusher = ss.LinePusher(length, rows, mu=mu)
+    a = ss.simulate(TWO, ANISO, ss.State(), pusher=pusher, t_end=1.5)
+    b = ss.simulate(
+        TWO, ANISO, ss.State(), pusher=pusher, t_end=1.5, outline=ss.Disk(0.06, centre=(-0.03, 0))
+    )
+    assert a.status == b.status == "ok"
+    assert [m for _, _, m in a.switches] == [m for _, _, m in b.switches]
+    assert a.switches[0][2].startswith(first)
+    for (ta, *_), (tb, *_) in zip(a.switches, b.switches):
+        assert ta == pytest.approx(tb, abs=1e-9)
+    tq = np.linspace(0.3, 1.5, 9)
+    np.testing.assert_allclose(_hermite(a, tq), _hermite(b, tq), atol=1e-9)
+    assert abs(a.phi[-1]) > 0.01  # it turned
+    assert a.relative_energy_error < 1e-9
+
+
+def test_flat_push_on_a_straight_edge_translates_with_mu_m_g():
+    """A face on the stadium's straight edge, pushing along its normal through G: an impact,
+    face sticking with λ = μ m g, no rotation; then V²/(2 μ g) of sliding (closed forms)."""
+    speed, t1 = 0.3, 1.0
+    pusher = ss.LinePusher.constant_velocity(
+        (0.0, -0.03, 0.0), (0.0, speed, 0.0), t1, length=0.06, mu=0.5
+    )
+    tr = ss.simulate(STADIUM, ISO, ss.State(), pusher=pusher, t_end=1.5)
+    assert tr.status == "ok", tr.message
+    assert [m for _, _, m in tr.switches] == ["face_sticking", "separated"]
+    stick = np.flatnonzero([m == "face_sticking" for m in tr.mode])
+    np.testing.assert_allclose(tr.pusher_force[stick[1:], 1], 0.3 * G, rtol=1e-10)
+    np.testing.assert_allclose(tr.phi, 0.0, atol=1e-12)
+    assert tr.y[-1] == pytest.approx(speed * t1 + speed**2 / (2 * 0.3 * G), rel=1e-9)
+
+
+TURN = [(0, -0.2, 0.03, math.pi / 2), (1.0, 0.0, 0.05, math.pi / 2 + 0.4), (2.0, 0.1, 0.2, 1.2)]
+BACK = [(0, 0.25, 0.01, math.pi / 2), (2.0, -0.05, -0.02, math.pi / 2 - 0.3)]
+HULLS = {"feet": (FEET, FEET_DISCS, G_FEET), "mixed": (MIXED, MIXED_DISCS, G_MIXED)}
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.3])
+@pytest.mark.parametrize(
+    ("name", "friction", "rows"),
+    [
+        ("feet", ISO, TURN),
+        ("feet", ANISO, TURN),  # a face turning off one end (was 4000 grazing impacts)
+        ("feet", ANISO, BACK),
+        ("mixed", ANISO, TURN),
+        ("mixed", ISO, BACK),
+    ],
+)
+def test_energy_balance_and_contact_on_the_hull(name, friction, rows, mu):
+    """Turning pushers over edges, arcs and corners: the energy balance to 1e-9, every
+    contact row on the hull (to 1e-10 m) and on the pusher's segment, λ in the cone."""
+    body, discs, g = HULLS[name]
+    pusher = ss.LinePusher(0.08, rows, mu=mu)
+    tr = ss.simulate(body, friction, ss.State(), pusher=pusher, t_end=2.5)
+    assert tr.status == "ok", tr.message
+    assert len(tr.switches) >= 2
+    assert tr.relative_energy_error < 1e-9
+    c = np.flatnonzero([m != "separated" for m in tr.mode])
+    for q in _body_frame(tr, c, g):
+        assert abs(_support_gap(q, discs)[0]) < 1e-10
+    pose = pusher.pose(tr.t[c])
+    rel = tr.contact_point[c] - pose[:, :2]
+    e = np.column_stack((np.cos(pose[:, 2]), np.sin(pose[:, 2])))
+    np.testing.assert_allclose(rel[:, 0] * e[:, 1] - rel[:, 1] * e[:, 0], 0.0, atol=1e-12)
+    assert np.all(np.abs(np.sum(rel * e, axis=1)) <= 0.04 * (1 + 1e-9))
+    # the pusher never enters the hull: points along its face, every 20th row
+    every = np.arange(0, tr.t.size, 20)
+    poses = pusher.pose(tr.t[every])
+    for k, (px, py, th) in zip(every, poses):
+        c, s = math.cos(tr.phi[k]), math.sin(tr.phi[k])
+        for sig in np.linspace(-0.04, 0.04, 9):
+            d = (px + sig * math.cos(th) - tr.x[k], py + sig * math.sin(th) - tr.y[k])
+            q = np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]]) + g
+            assert _support_gap(q, discs)[0] > -1e-9
+
+
+def test_mirrored_path_mirrors_the_motion_on_the_stadium():
+    rows = np.array([(0, -0.15, 0.02, math.pi / 2), (1.0, 0.0, 0.04, math.pi / 2 + 0.3)])
+    mrows = rows * np.array([1.0, 1.0, -1.0, -1.0])
+    a = ss.simulate(STADIUM, ANISO, ss.State(), pusher=ss.LinePusher(0.08, rows, 0.3), t_end=1.5)
+    mirrored = ss.FrictionTensor(ANISO.fx, ANISO.fy, -ANISO.f, angle=-ANISO.angle)
+    b = ss.simulate(
+        STADIUM, mirrored, ss.State(), pusher=ss.LinePusher(0.08, mrows, 0.3), t_end=1.5
+    )
+    assert a.status == b.status == "ok" and len(a.switches) >= 2
+
+    def swap(m):
+        return m.replace("left", "L").replace("right", "left").replace("L", "right")
+
+    assert [(round(t, 9), swap(m)) for t, _, m in a.switches] == [
+        (round(t, 9), m) for t, _, m in b.switches
+    ]
+    tq = np.linspace(0.05, 1.5, 12)
+    xa, ya, pa = _hermite(a, tq)
+    xb, yb, pb = _hermite(b, tq)
+    np.testing.assert_allclose(np.c_[xa, -ya, -pa], np.c_[xb, yb, pb], atol=1e-9)
