@@ -150,3 +150,77 @@ def test_mirrored_path_mirrors_the_motion_on_the_stadium():
     xa, ya, pa = _hermite(a, tq)
     xb, yb, pb = _hermite(b, tq)
     np.testing.assert_allclose(np.c_[xa, -ya, -pa], np.c_[xb, yb, pb], atol=1e-9)
+
+
+# ---- quasi-static -----------------------------------------------------------------------
+
+
+def test_quasi_static_arc_moves_as_the_circle_it_belongs_to():
+    """``push_quasi_static`` on TWO with a face rolling on the big disc's arc: the same poses
+    as with that disc as the outline (the ellipse's quasi-static engine)."""
+    pusher = ss.LinePusher(
+        0.2, [(0, _LEFT - 0.05, 0.0, math.pi / 2), (1.0, _LEFT + 0.15, 0.05, 1.87)], mu=0.3
+    )
+    times = np.linspace(0.0, 1.0, 11)
+    a = ss.push_quasi_static(TWO, ANISO, pusher, times)
+    b = ss.push_quasi_static(TWO, ANISO, pusher, times, outline=ss.Disk(0.06, centre=(-0.03, 0)))
+    assert a.status == b.status == "ok"
+    assert list(a.mode) == list(b.mode) and "vertex_sticking" in a.mode
+    np.testing.assert_allclose(np.c_[a.x, a.y, a.phi], np.c_[b.x, b.y, b.phi], atol=1e-9)
+    assert abs(a.phi[-1]) > 0.005
+
+
+@pytest.mark.parametrize(
+    ("name", "rows", "mu"),
+    [
+        (
+            "feet",
+            [(0, -0.2, 0.03, math.pi / 2), (1.0, 0.0, 0.06, 2.17), (2.0, 0.05, 0.15, 2.5)],
+            0.05,
+        ),
+        (
+            "feet",
+            [
+                (0, -0.2, -0.04, math.pi / 2),
+                (1.0, -0.02, -0.04, math.pi / 2),
+                (2.0, 0.06, -0.04, 2.07),
+            ],
+            0.0,
+        ),
+        ("mixed", [(0, -0.2, 0.03, math.pi / 2), (1.0, 0.0, 0.05, math.pi / 2 + 0.4)], 0.3),
+        (
+            "mixed",
+            [
+                (0, -0.2, -0.04, math.pi / 2),
+                (1.0, -0.02, -0.04, math.pi / 2),
+                (2.0, 0.06, -0.04, 2.07),
+            ],
+            0.0,
+        ),
+    ],
+)
+def test_slow_dynamics_tends_to_quasi_static_on_the_hull(name, rows, mu):
+    """The same path at 0.1, 0.03 and 0.01 of its speed: after the arrival the dynamic
+    poses tend to the quasi-static ones (two engines written apart) like V², below 1e-5 ℓ."""
+    body = HULLS[name][0]
+    errs = []
+    for scale in (0.1, 0.03, 0.01):
+        path = np.array(rows, float)
+        path[:, 0] /= scale
+        pusher = ss.LinePusher(0.08, path, mu=mu)
+        t_end = float(path[-1, 0])
+        tr = ss.simulate(body, ANISO, ss.State(), pusher=pusher, t_end=t_end)
+        assert tr.status == "ok"
+        ta = tr.switches[0][0]  # the arrival (the body rests before it)
+        tq = np.linspace(ta + 0.05 * (t_end - ta), t_end, 8)
+        qs = ss.push_quasi_static(body, ANISO, pusher, np.r_[0.0, tq])
+        assert qs.status == "ok"
+        x, y, phi = _hermite(tr, tq)
+        ell = body.length_unit
+        errs.append(
+            max(np.max(np.abs(x - qs.x[1:])), np.max(np.abs(y - qs.y[1:]))) / ell
+            + np.max(np.abs(phi - qs.phi[1:]))
+        )
+    errs = np.array(errs)
+    assert np.all(errs[:-1] / errs[1:] > 5.0), errs  # (10/3)² ≈ 11 per step
+    assert errs[-1] < 1e-5

@@ -276,20 +276,36 @@ class RoundEngine(_Engine):
         x[1] += dy - r[1]
 
     def identify_hull(self, t):
+        """identify() on a hull of discs: of the axes that attain the gap (to _FLAT), the
+        face's if a disc touches it within the segment (an edge flush if two do), else an
+        edge's (an end on it; a face if the pusher lies along it), else a disc's (an end on
+        its arc)."""
         x, ol = self.X, self.ol
         g, u, tags, cw, ends = self.axes(self.seg, t, x[0], x[1], x[2])
-        m = int(np.argmax(g))
+        p, th, _, _ = self.ln.state(self.seg, t)
+        e = np.array([math.cos(th), math.sin(th)])
+        ze = (-e[1], e[0])
+        nk, h = len(ol.L), self.ln.h
+        tied = [m for m in np.flatnonzero(g >= g.max() - _FLAT)]
+        near: list = []
+        for m in tied:
+            if tags[m][0] == "face":
+                sup = cw @ u[m] - ol.R
+                near = [i for i in range(nk) if sup[i] - sup.min() <= _FLAT]
+                sig = [(cw[i] - ol.R[i] * u[m] - np.array(p)) @ e for i in near]
+                if any(abs(sg) <= h + _FLAT for sg in sig):
+                    break
+                near = []
+        rank = {"face": 0, "edge": 1, "disc": 2}
+        m = next((k for k in tied if tags[k][0] == "face"), None) if near else None
+        if m is None:
+            m = min((k for k in tied if tags[k][0] != "face"), key=lambda k: rank[tags[k][0]])
         tag, um = tags[m], u[m]
         x[0] -= g[m] * um[0]  # onto the pusher, along the separating axis
         x[1] -= g[m] * um[1]
-        th = self.ln.state(self.seg, t)[1]
-        ze = (-math.sin(th), math.cos(th))
         if tag[0] == "face":
             self.side = tag[1]
-            sup = cw @ um - ol.R
-            nk = len(ol.L)
-            near = [i for i in range(nk) if sup[i] - sup.min() <= _FLAT]
-            i = min(near, key=lambda q: sup[q])
+            i = min(near, key=lambda q: float(cw[q] @ um - ol.R[q]))
             pair = [q for q in ((i - 1) % nk, (i + 1) % nk) if q in near and q != i]
             if pair:  # two discs on the face: their edge is flush
                 self.kind, self.j = "face", (i if pair[-1] == (i + 1) % nk else pair[0])

@@ -3,7 +3,7 @@ inertia neglected (MODEL §13).
 
 The pusher is a segment of length L with prescribed centre and direction; it pushes with the
 side of its segment that faces the mass centre G at the start (its pushing normal N, into the
-body). The body's outline ∂B is convex (a polygon hull or an ellipse, relative to G:
+body). The body's outline ∂B is convex (a polygon, a hull of discs or an ellipse, relative to G:
 :func:`slidespin.contact.outline.body_outline`). At every instant the plane friction on its
 limit surface balances the pusher: W(û) + Σ J_cᵀ λ = 0 (MODEL §11, §13), with the exact
 friction wrench W of MODEL §2 and §10 and λ in the pusher's Coulomb cone |λt| ≤ μp λn.
@@ -39,7 +39,9 @@ With μp = 0 the two sliding modes are one (λt = 0) and are reported as ``*_sli
 symmetric push). A pusher at rest moves nothing (``"separated"``, force 0). An end of the
 pusher reaching a body corner continues on the next edge, or leaves the corner when it moves
 away from the body; if no mode is consistent the run ends with status ``"indeterminate"``.
-Outlines with round parts other than an ellipse or a circle (pads with disks) are refused.
+On a hull of discs (pads with disks) a disc touches the face at its support point (a
+``vertex_*`` contact with the margins of a corner) and an end of the pusher slides on an
+edge or an arc (``end_*``), :mod:`slidespin.motion._qs_line_hull`.
 
 Point contacts are solved as in :mod:`slidespin.motion.quasi_static` (one bracketed root for
 sticking, one for the cone edge when sliding). Each mode is integrated with scipy's DOP853 on
@@ -59,13 +61,13 @@ from slidespin.contact._engine import TwistWrench
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
+from slidespin.motion._qs_line_hull import hull_features, hull_gap
 from slidespin.motion._qs_pieces import PhaseBudget, Pieces, check_max_phases
 from slidespin.motion.outcomes import PUSH_MODES
 from slidespin.motion.state import reduced_angle
 
 __all__ = ["LINE_PUSH_MODES", "push_line_quasi_static"]
 
-#: mode names of a line pusher, indexed by ``QuasiStaticPush.mode_code`` (module notes)
 #: the line pusher's modes (a subset of :data:`slidespin.motion.outcomes.PUSH_MODES`, whose
 #: indices are the result's ``mode_code``, as for a finger)
 LINE_PUSH_MODES = (
@@ -140,12 +142,15 @@ class _Line:
         self.L = float(pusher.length)
         self.side = side
         self.out = outline
-        self.poly = outline.is_polygon
+        self.poly = outline.kind == "hull"  # a polygon, or a hull of discs (pads with disks)
         if self.poly:
-            self.verts = outline.vertices
-            e = np.roll(self.verts, -1, axis=0) - self.verts
+            self.verts = outline.vertices  # the corners, or the discs' centres
+            self.radii = outline.discs[:, 2].copy()
+            self.ea, self.eb = outline.edges[:, 0, :], outline.edges[:, 1, :]  # the edges' ends
+            e = self.eb - self.ea
             self.lengths = np.hypot(e[:, 0], e[:, 1])
             self.normals = outline.edge_normals  # inward
+        self.round = self.poly and bool(np.any(self.radii > 0.0))
         self.warm: dict = {}
         self.touch = _TOUCH * self.ell
 
@@ -170,6 +175,8 @@ class _Line:
     def gap(self, fr) -> float:
         """Separating-axis gap between the pusher segment and ∂B [m] (> 0 apart)."""
         e0, e1 = fr["E"]
+        if self.round:
+            return hull_gap(self, fr)
         if self.poly:
             vw = self.verts @ fr["rot"].T
             best = -math.inf
@@ -199,6 +206,8 @@ class _Line:
             return []
         e0, d, npush = fr["E"][0], fr["d"], fr["N"]
         out = []
+        if self.round:
+            return hull_features(self, fr, tol)
         if self.poly:
             vw = self.verts @ fr["rot"].T
             dn, ds = (vw - e0) @ npush, (vw - e0) @ d
@@ -234,7 +243,7 @@ class _Line:
         if feat[0] in ("vertex", "smooth"):
             if feat[0] == "vertex":
                 i = feat[1]
-                rc = fr["rot"] @ self.verts[i]
+                rc = fr["rot"] @ self.verts[i] - self.radii[i] * npush  # a disc's support
                 nw = self.normals @ fr["rot"].T
                 m = (_cross(-nw[i - 1], -npush), _cross(-npush, -nw[i]))
             else:
@@ -245,13 +254,18 @@ class _Line:
         k, j = feat[1], feat[2]
         ek = fr["E"][k]
         dout = d if k == 0 else -d
-        if j < 0:
+        if feat[0] == "endarc":  # an end on disc j's arc: the normal inside its cone
+            cw = fr["rot"] @ self.verts[j]
+            n = (cw - ek) / math.hypot(*(cw - ek))
+            rc = cw - self.radii[j] * n
+            nw = self.normals @ fr["rot"].T
+            geo = (_cross(-nw[j - 1], -n), _cross(-n, -nw[j]))
+        elif j < 0:
             cb, nb, _ = self.out.closest(fr["rot"].T @ ek)
             rc, n = fr["rot"] @ cb, fr["rot"] @ nb
             geo: tuple = ()
         else:
-            a = fr["rot"] @ self.verts[j]
-            b = fr["rot"] @ self.verts[(j + 1) % len(self.verts)]
+            a, b = fr["rot"] @ self.ea[j], fr["rot"] @ self.eb[j]
             n = fr["rot"] @ self.normals[j]
             u = float((ek - a) @ (b - a)) / self.lengths[j] ** 2
             rc = a + u * (b - a)
@@ -260,9 +274,9 @@ class _Line:
 
     def shared(self, fr, i):
         """The shared segment of face i: (σ_lo, σ_hi, feature at lo, feature at hi)."""
-        vw = self.verts @ fr["rot"].T
-        j = (i + 1) % len(vw)
-        sa, sb = ((vw[[i, j]] - fr["E"][0]) @ fr["d"]).tolist()
+        j = (i + 1) % len(self.verts)
+        ends = np.array([self.ea[i], self.eb[i]]) @ fr["rot"].T
+        sa, sb = ((ends - fr["E"][0]) @ fr["d"]).tolist()
         (slo, ilo), (shi, ihi) = sorted(((sa, i), (sb, j)))
         lo = ("vertex", ilo) if slo >= 0.0 else ("end", 0, i)
         hi = ("vertex", ihi) if shi <= self.L else ("end", 1, i)
@@ -418,13 +432,13 @@ class _Line:
                         return mode
                 pts = ((flo, fr["E"][0] + shi * fr["d"]), (fhi, fr["E"][0] + slo * fr["d"]))
                 for pf, other in pts:
-                    kind = "end" if pf[0] == "end" else "vertex"
+                    kind = "end" if pf[0] in ("end", "endarc") else "vertex"
                     for sub in subs:
                         mode = (kind, sub, pf)
                         if mode not in exclude and self.opens(mode, t, q, seg, other):
                             return mode
                 continue
-            kind = "end" if feat[0] == "end" else "vertex"
+            kind = "end" if feat[0] in ("end", "endarc") else "vertex"
             for sub in subs:
                 mode = (kind, sub, feat)
                 if mode not in exclude and self.ok(mode, t, q, seg):
@@ -554,7 +568,7 @@ def push_line_quasi_static(
     ----------
     body : Body
         The pushed body; its outline (``outline=``, default the footprint's convex hull or
-        the ellipse) must be a polygon or an ellipse.
+        the ellipse) is a polygon, a hull of discs or an ellipse.
     friction : FrictionTensor
         Plane friction (isotropic or anisotropic, plane- or body-fixed).
     pusher : LinePusher
@@ -586,11 +600,6 @@ def push_line_quasi_static(
     q[2], turns = reduced_angle(float(q[2]))  # the turns are added back to the result
     t0, t1 = float(t_out[0]), float(t_out[-1])
     out = body_outline(body, outline)
-    if out.kind == "hull" and not out.is_polygon:
-        raise ValueError(
-            "outline: a hull with round parts (pads with disks) is not supported by the line "
-            "pusher yet; valid values: a polygon outline (outline=vertices) or an ellipse"
-        )
     pose0 = np.asarray(pusher.pose(t0), dtype=float)
     dn = (-math.sin(pose0[2]), math.cos(pose0[2]))
     side_val = -((pose0[0] - q[0]) * dn[0] + (pose0[1] - q[1]) * dn[1])
