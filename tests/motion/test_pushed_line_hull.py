@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from round_feet import FEET, FEET_DISCS, MIXED, MIXED_DISCS
 from test_push_crosschecks import _hermite
+from test_pushed_line_round import mirror_check
 from test_pushed_round_hull import G_FEET, G_MIXED, _body_frame, _support_gap
 
 import slidespin as ss
@@ -131,25 +132,7 @@ def test_energy_balance_and_contact_on_the_hull(name, friction, rows, mu):
 
 
 def test_mirrored_path_mirrors_the_motion_on_the_stadium():
-    rows = np.array([(0, -0.15, 0.02, math.pi / 2), (1.0, 0.0, 0.04, math.pi / 2 + 0.3)])
-    mrows = rows * np.array([1.0, 1.0, -1.0, -1.0])
-    a = ss.simulate(STADIUM, ANISO, ss.State(), pusher=ss.LinePusher(0.08, rows, 0.3), t_end=1.5)
-    mirrored = ss.FrictionTensor(ANISO.fx, ANISO.fy, -ANISO.f, angle=-ANISO.angle)
-    b = ss.simulate(
-        STADIUM, mirrored, ss.State(), pusher=ss.LinePusher(0.08, mrows, 0.3), t_end=1.5
-    )
-    assert a.status == b.status == "ok" and len(a.switches) >= 2
-
-    def swap(m):
-        return m.replace("left", "L").replace("right", "left").replace("L", "right")
-
-    assert [(round(t, 9), swap(m)) for t, _, m in a.switches] == [
-        (round(t, 9), m) for t, _, m in b.switches
-    ]
-    tq = np.linspace(0.05, 1.5, 12)
-    xa, ya, pa = _hermite(a, tq)
-    xb, yb, pb = _hermite(b, tq)
-    np.testing.assert_allclose(np.c_[xa, -ya, -pa], np.c_[xb, yb, pb], atol=1e-9)
+    mirror_check(STADIUM, ANISO, [(0, -0.15, 0.02, math.pi / 2), (1.0, 0.0, 0.04, 1.87)], 1.5)
 
 
 # ---- quasi-static -----------------------------------------------------------------------

@@ -18,6 +18,7 @@ from slidespin.motion._pushed_geometry import (
     _point_impulse,
     _rest,
     _rot,
+    _Run,
     _separated,
     _wrench,
     _zx,
@@ -42,25 +43,15 @@ def _turn(c, sn, v):
     return (c * v[0] - sn * v[1], sn * v[0] + c * v[1])
 
 
-class _Engine:
+class _Engine(_Run):
     """One line-pushed run; ``self.X`` = (x, y, φ, vx, vy, ω), works ``self.W`` = (pusher,
     friction, slip, load), ``self.loss``; the contact: ``kind`` (face, vertex, end), ``j``
     (the body vertex on the face, the face's edge, or the edge under the end), ``side`` (±1:
     the face normal into the body is side·ẑ × e) and ``endsign`` (the end at σ = ±h)."""
 
     def __init__(self, prob, ol, line, rtol, max_steps):
-        self.prob, self.ol, self.ln = prob, ol, line
-        self.k = prob.k
-        self.mu = line.mu
-        self.rtol, self.atol = rtol, rtol * 1e-2
-        self.steps_left = max_steps
-        self.rows: list = []
-        self.switches: list = []
-        self.impacts: list = []
-        self.W = np.zeros(4)
-        self.loss = 0.0
-        self.turns = 0.0  # 2π times the whole turns taken off the start angle
-        self.seg = 0
+        super().__init__(prob, ol, line.mu, rtol, max_steps)
+        self.ln = line
         self.mode = _SEP
         self.kind, self.j, self.side, self.endsign = "face", 0, 1.0, 1.0
         self.dirn, self.stick = 1.0, True
@@ -442,32 +433,12 @@ class _Engine:
             return 1.0
         return self.side * (-q[0] * math.sin(th) + q[1] * math.cos(th)) + _GAP_TOL
 
-    def edge_end(self, i):
-        """The far end of edge i (body frame): the next vertex, or on a hull of discs the
-        point where the edge meets the next disc."""
-        return self.ol.V[i] + self.ol.L[i] * self.ol.E[i]
-
-    def run_contact(self, t0, t1):
-        mu, nv = self.mu, len(self.ol.L)
-
-        def fun(t, y):
-            omd, zdd, _, _, _, pw, *_ = self.acc(t, y)
-            return np.array([y[1], omd, y[3], zdd, *pw])
-
-        def nt(t, y):
-            _, _, lam, tau, _, _, _, n, tt, ut = self.acc(t, y)
-            return lam[0] * n[0] + lam[1] * n[1], lam[0] * tt[0] + lam[1] * tt[1], tau, ut
-
-        events = [("sep", lambda t, y: nt(t, y)[0])]
-        if self.stick:
-            events.append(
-                ("cone", lambda t, y: mu * nt(t, y)[0] - nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
-            )
-            events.append(
-                ("cone", lambda t, y: mu * nt(t, y)[0] + nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
-            )
-        else:
-            events.append(("slip", lambda t, y: self.dirn * nt(t, y)[3]))
+    def feature_events(self, t0, nt):
+        """The events of the contact's geometry (labelled): the face's resultant at an end of
+        the shared segment; a vertex past the pusher's end or an edge turning flush; an end
+        at a corner or its edge turning flush."""
+        nv = len(self.ol.L)
+        events: list = []
         if self.kind == "face":
             events.append(("lo", lambda t, y: -nt(t, y)[2] - self.overlap(t, y)[0] * nt(t, y)[0]))
             events.append(("hi", lambda t, y: self.overlap(t, y)[1] * nt(t, y)[0] + nt(t, y)[2]))
@@ -492,6 +463,39 @@ class _Engine:
             nb = i if (d[0] * e[0] + d[1] * e[1]) * tow < 0.0 else (i + 1) % nv
             vb = self.ol.V[i] if nb == i else self.edge_end(i)
             events.append((("flush", nb), lambda t, y, vb=vb: self.flush(t, y, vb)))
+        return events
+
+    def edge_end(self, i):
+        """The far end of edge i (body frame): the next vertex, or on a hull of discs the
+        point where the edge meets the next disc."""
+        return self.ol.V[i] + self.ol.L[i] * self.ol.E[i]
+
+    def zdot(self, y):
+        """dy[2]/dt: σ̇ (or ṡ) is the state's y[3] (a rolling contact's follows from φ)."""
+        return y[3]
+
+    def run_contact(self, t0, t1):
+        mu = self.mu
+
+        def fun(t, y):
+            omd, zdd, _, _, _, pw, *_ = self.acc(t, y)
+            return np.array([y[1], omd, self.zdot(y), zdd, *pw])
+
+        def nt(t, y):
+            _, _, lam, tau, _, _, _, n, tt, ut = self.acc(t, y)
+            return lam[0] * n[0] + lam[1] * n[1], lam[0] * tt[0] + lam[1] * tt[1], tau, ut
+
+        events = [("sep", lambda t, y: nt(t, y)[0])]
+        if self.stick:
+            events.append(
+                ("cone", lambda t, y: mu * nt(t, y)[0] - nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
+            )
+            events.append(
+                ("cone", lambda t, y: mu * nt(t, y)[0] + nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
+            )
+        else:
+            events.append(("slip", lambda t, y: self.dirn * nt(t, y)[3]))
+        events += self.feature_events(t0, nt)
 
         def rec(t, y):
             lam, cpt = self.full(t, y)
@@ -585,15 +589,11 @@ class _Engine:
                 self.record_now(0.0)
         else:
             self.record(0.0, _SEP)
-        t, phases, same_t, t_last = 0.0, 0, 0, -1.0
+        t = 0.0
         while t < t_end:
-            phases += 1
-            if phases > max_phases:
-                return "max_phases", t
-            same_t = same_t + 1 if t == t_last else 0
-            if same_t > 8:
-                return "indeterminate", t
-            t_last = t
+            stop = self.next_phase(t, max_phases)
+            if stop:
+                return stop, t
             self.seg, _, te = self.ln.segment(t)
             t1 = min(te, t_end)
             if self.mode == _SEP:

@@ -42,8 +42,8 @@ import math
 
 import numpy as np
 
-from slidespin.motion._line_engine import _CONE_TOL, _SEP, _Engine, _turn
-from slidespin.motion._pushed_geometry import _FLAT, _integrate_contact, _rot, _zx
+from slidespin.motion._line_engine import _SEP, _Engine, _turn
+from slidespin.motion._pushed_geometry import _FLAT, _rot, _zx
 
 __all__ = ["RoundEngine"]
 
@@ -328,57 +328,31 @@ class RoundEngine(_Engine):
 
     # ---- phases ----------------------------------------------------------------------
 
-    def run_contact(self, t0, t1):
+    def zdot(self, y):
+        return self._rt[3] if self.kind == "roll" else y[3]
+
+    def feature_events(self, t0, nt):
+        """Rolling: the face's ends, and on a hull the arc's ends (an edge turning flush);
+        an end on a curve: the face turning onto the curve, and on a hull the arc's ends
+        (the end sliding on onto an edge); else the polygon engine's."""
         if self.kind not in ("roll", "endarc"):
-            return super().run_contact(t0, t1)
-        mu, h = self.mu, self.ln.h
-
-        def fun(t, y):
-            omd, zdd, _, _, _, pw, *_ = self.acc(t, y)
-            zd = self._rt[3] if self.kind == "roll" else y[3]
-            return np.array([y[1], omd, zd, zdd, *pw])
-
-        def nt(t, y):
-            _, _, lam, _, _, _, _, n, tt, ut = self.acc(t, y)
-            return lam[0] * n[0] + lam[1] * n[1], lam[0] * tt[0] + lam[1] * tt[1], ut
-
-        events = [("sep", lambda t, y: nt(t, y)[0])]
-        if self.stick:
-            events.append(
-                ("cone", lambda t, y: mu * nt(t, y)[0] - nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
-            )
-            events.append(
-                ("cone", lambda t, y: mu * nt(t, y)[0] + nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
-            )
-        else:
-            events.append(("slip", lambda t, y: self.dirn * nt(t, y)[2]))
-        arc = self.ol.poly
+            return super().feature_events(t0, nt)
+        h, arc, events = self.ln.h, self.ol.poly, []
         if self.kind == "roll":
             events.append(("roll_off", lambda t, y: h * (1.0 + _HYST) - y[2]))
             events.append(("roll_off", lambda t, y: h * (1.0 + _HYST) + y[2]))
-            if arc:  # the face turning parallel to the edge before or after the arc
+            if arc:
                 events.append(("arc_lo", lambda t, y: self.arc_angle(t, y) + _HYST))
                 events.append(
                     ("arc_hi", lambda t, y: self.arc_span() - self.arc_angle(t, y) + _HYST)
                 )
         else:
             events.append(("tangent", lambda t, y: self.face_turn(t, y) + _HYST))
-            if arc:  # the end sliding off the arc onto an edge
+            if arc:
                 length = float(self.ol.AL[self.j])
                 events.append(("arc_lo", lambda t, y: y[2] + _HYST))
                 events.append(("arc_hi", lambda t, y: length - y[2] + _HYST))
-
-        def rec(t, y):
-            lam, cpt = self.full(t, y)
-            self.record(t, self.mode, lam, cpt)
-
-        y0 = self.y_now(t0)
-        reason, t, y, idx, steps = _integrate_contact(
-            fun, t0, y0, t1, [g for _, g in events], self.rtol, self.atol, self.steps_left, rec
-        )
-        self.steps_left -= steps
-        self.full(t, y)
-        return reason, t, (events[idx][0] if reason == "event" else None)
+        return events
 
     def arc_span(self):
         return float(self.ol.AL[self.j] / self.ol.R[self.j])

@@ -238,6 +238,44 @@ class _Outline:
 
 
 # ------------------------------------------------------------------------------------------
+# what every pushed run keeps
+
+
+class _Run:
+    """The state every pushed engine keeps (natural units): the problem, outline, μp,
+    tolerances and step budget; the rows, switches and impacts; ``self.X`` = (x, y, φ, vx,
+    vy, ω) between phases, the works ``self.W`` = (pusher, friction, slip, load) and the
+    impact loss ``self.loss``."""
+
+    def __init__(self, prob, ol, mu, rtol, max_steps):
+        self.prob, self.ol = prob, ol
+        self.k = prob.k
+        self.mu = mu
+        self.rtol, self.atol = rtol, rtol * 1e-2
+        self.steps_left = max_steps
+        self.rows: list = []
+        self.switches: list = []
+        self.impacts: list = []
+        self.W = np.zeros(4)
+        self.loss = 0.0
+        self.turns = 0.0  # 2π times the whole turns taken off the start angle
+        self.seg = 0
+        self._phases, self._same_t, self._t_last = 0, 0, -1.0
+
+    def next_phase(self, t, max_phases):
+        """Count a phase starting at t: ``"max_phases"`` past the budget, ``"indeterminate"``
+        after 8 phases at one instant (no progress), else None."""
+        self._phases += 1
+        if self._phases > max_phases:
+            return "max_phases"
+        self._same_t = self._same_t + 1 if t == self._t_last else 0
+        if self._same_t > 8:
+            return "indeterminate"
+        self._t_last = t
+        return None
+
+
+# ------------------------------------------------------------------------------------------
 # the finger (natural units)
 
 

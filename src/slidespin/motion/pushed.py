@@ -75,6 +75,7 @@ from slidespin.motion._pushed_geometry import (
     _integrate_contact,
     _Outline,
     _rot,
+    _Run,
     check_inputs,
 )
 from slidespin.motion._stick_slip import GAUGE_TOL
@@ -100,23 +101,13 @@ _STOP_DROP = 1e-13  # a separated body stops when its speed falls below this of 
 # the engine
 
 
-class _Engine:
+class _Engine(_Run):
     """One pushed run in natural units; the state between phases is ``self.X`` = (x, y, φ,
     vx, vy, ω), the works ``self.W`` = (pusher, friction, slip, load) and ``self.loss``."""
 
     def __init__(self, prob, outline, finger, rtol, max_steps):
-        self.prob, self.ol, self.fg = prob, outline, finger
-        self.k = prob.k
-        self.mu = finger.mu
-        self.rtol, self.atol = rtol, rtol * 1e-2
-        self.steps_left = max_steps
-        self.rows: list = []
-        self.switches: list = []
-        self.impacts: list = []
-        self.W = np.zeros(4)
-        self.loss = 0.0
-        self.turns = 0.0  # 2π times the whole turns taken off the start angle
-        self.seg = 0
+        super().__init__(prob, outline, finger.mu, rtol, max_steps)
+        self.fg = finger
         self.vert = None  # the vertex of a corner contact (_pushed_vertex)
         vmax = float(np.max(np.hypot(finger.v[:, 0], finger.v[:, 1]))) if finger.v.size else 0.0
         self.vscale = max(vmax, 1e-300)
@@ -535,15 +526,10 @@ class _Engine:
                 self.record_now(0.0)
         else:
             self.record(0.0, _SEP)
-        phases, same_t, t_last = 0, 0, -1.0
         while t < t_end:
-            phases += 1
-            if phases > max_phases:
-                return "max_phases", t
-            same_t = same_t + 1 if t == t_last else 0
-            if same_t > 8:
-                return "indeterminate", t
-            t_last = t
+            stop = self.next_phase(t, max_phases)
+            if stop:
+                return stop, t
             self.seg, _, te = self.fg.segment(t)
             t1 = min(te, t_end)
             mode = self.mode
