@@ -42,7 +42,7 @@ import math
 
 import numpy as np
 
-from slidespin.motion._line_engine import _SEP, _Engine, _turn
+from slidespin.motion._line_engine import _Engine, _turn
 from slidespin.motion._pushed_geometry import _FLAT, _rot, _zx
 
 __all__ = ["RoundEngine"]
@@ -377,6 +377,9 @@ class RoundEngine(_Engine):
             self.kind = "roll"  # the face turns about the end of its segment at a disc
 
     def after_event(self, t, label):
+        """The new mode after a contact event: the curve's events here, the polygon
+        engine's for faces, corners and edges (a corner met by a sliding end that is a
+        disc's arc: the end slides on onto it)."""
         nk = len(self.ol.L) if self.ol.poly else 0
         if label == "corner" and self.kind == "end":  # the end at an edge's end
             z = self.y_now(t)[2]
@@ -384,10 +387,8 @@ class RoundEngine(_Engine):
             if self.ol.R[i] > 0.0:  # the end slides on onto disc i's arc
                 self.kind, self.j = "endarc", i
                 return self.arrive(t)
-        if label in ("roll_off",):  # the rolling contact reaches an end of the face
+        if label == "roll_off":  # the rolling contact reaches an end of the face
             self.endsign = 1.0 if self.y_now(t)[2] > 0.0 else -1.0
-            if self.ol.poly and self.ol.R[self.j] == 0.0:  # pragma: no cover - a corner rolls not
-                return _SEP
             self.kind = "endarc"
             return self.arrive(t)
         if label == "tangent":  # the face turns onto the curve at the end
@@ -404,7 +405,4 @@ class RoundEngine(_Engine):
         if label in ("arc_lo", "arc_hi"):  # the end slides off the arc onto an edge
             self.kind, self.j = "end", (self.j - 1) % nk if label == "arc_lo" else self.j
             return self.arrive(t)
-        mode = super().after_event(t, label)
-        if self.kind == "vertex" and self.ol.R[self.j] > 0.0:
-            self.kind = "roll"
-        return mode
+        return super().after_event(t, label)
