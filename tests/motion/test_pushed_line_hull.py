@@ -207,3 +207,21 @@ def test_slow_dynamics_tends_to_quasi_static_on_the_hull(name, rows, mu):
     errs = np.array(errs)
     assert np.all(errs[:-1] / errs[1:] > 5.0), errs  # (10/3)² ≈ 11 per step
     assert errs[-1] < 1e-5
+
+
+@pytest.mark.parametrize("tilt", [0.6, -0.6])
+def test_a_tiny_pusher_meets_an_arc_with_the_end_whose_face_stays_outside(tilt):
+    """A 1 µm pusher tilted 0.6 rad from the arc's tangent reaches the stadium's arc with
+    both ends at once (to 1e-9 ℓ): the contact is the end from which the face leaves the
+    body (the other made it 'roll' on a face that is not tangent, and G jumped 5 mm)."""
+    b = math.radians(45.0)
+    u = np.array([math.cos(b), math.sin(b)])
+    start = np.array([0.05, 0.0]) + 0.04 * u
+    ang = b + math.pi / 2 + tilt
+    pusher = ss.LinePusher(1e-6, [(0.0, *start, ang), (0.5, *(start - 0.1 * u), ang)], mu=0.3)
+    tr = ss.simulate(STADIUM, ISO, ss.State(), pusher=pusher, t_end=0.6)
+    assert tr.status == "ok"
+    assert [m for _, _, m in tr.switches] == ["end_sliding_right", "separated"]
+    same = np.flatnonzero(np.diff(tr.t) == 0.0)
+    assert np.all(np.hypot(np.diff(tr.x), np.diff(tr.y))[same] == 0.0)
+    assert tr.relative_energy_error < 1e-9

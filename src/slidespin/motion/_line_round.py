@@ -297,9 +297,17 @@ class RoundEngine(_Engine):
                     break
                 near = []
         rank = {"face": 0, "edge": 1, "disc": 2}
+
+        def order(k):  # edges before arcs; of two ends, the one whose face stays outside
+            tag = tags[k]
+            end = 1 if tag[0] == "disc" and tag[2] == 1 else 0
+            if tag[0] == "edge":
+                end = 1 if ends[1] @ u[k] >= ends[0] @ u[k] else 0
+            return rank[tag[0]], -(2 * end - 1) * float(e @ u[k])
+
         m = next((k for k in tied if tags[k][0] == "face"), None) if near else None
         if m is None:
-            m = min((k for k in tied if tags[k][0] != "face"), key=lambda k: rank[tags[k][0]])
+            m = min((k for k in tied if tags[k][0] != "face"), key=order)
         tag, um = tags[m], u[m]
         x[0] -= g[m] * um[0]  # onto the pusher, along the separating axis
         x[1] -= g[m] * um[1]
