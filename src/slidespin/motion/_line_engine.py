@@ -446,23 +446,19 @@ class _Engine(_Run):
             h = self.ln.h
             events.append(("off", lambda t, y: h - y[2]))
             events.append(("off", lambda t, y: h + y[2]))
-            for nb in ((self.j - 1) % nv, (self.j + 1) % nv):
-                vb = self.edge_end(self.j) if nb == (self.j + 1) % nv else self.ol.V[nb]
-                events.append((("flush", nb), lambda t, y, vb=vb: self.flush(t, y, vb)))
+            # an edge at the vertex turning flush: watched at its far end (labelled by edge)
+            j = self.j
+            for edge, vb in (((j - 1) % nv, self.ol.V[(j - 1) % nv]), (j, self.edge_end(j))):
+                events.append((("flush", edge), lambda t, y, vb=vb: self.flush(t, y, vb)))
         else:
             length = float(self.ol.L[self.j])
             events.append(("corner", lambda t, y: y[2]))
             events.append(("corner", lambda t, y: length - y[2]))
+            # the edge turning flush with the face: at its vertex on the pusher's side of the
+            # end (flush() is 1 for the other, beyond the end; a turning pusher may swap them)
             i = self.j
-            p, th, _, _ = self.ln.state(self.seg, t0)
-            e = (math.cos(th), math.sin(th))
-            # the edge's vertex on the pusher's side of the end (towards its centre)
-            tow = -self.endsign
-            c, sn = _rot(self.X[2])
-            d = _turn(c, sn, self.ol.E[i])
-            nb = i if (d[0] * e[0] + d[1] * e[1]) * tow < 0.0 else (i + 1) % nv
-            vb = self.ol.V[i] if nb == i else self.edge_end(i)
-            events.append((("flush", nb), lambda t, y, vb=vb: self.flush(t, y, vb)))
+            for vb in (self.ol.V[i], self.edge_end(i)):
+                events.append((("flush", i), lambda t, y, vb=vb: self.flush(t, y, vb)))
         return events
 
     def edge_end(self, i):
@@ -540,14 +536,9 @@ class _Engine(_Run):
             lambda t: self.gap(seg, t, x[0], x[1], x[2]) + _GAP_TOL,
         )
 
-    def to_face(self, t, nb):
-        """A point contact whose neighbouring edge turned flush: face contact on that edge."""
-        nv = len(self.ol.L)
-        if self.kind == "vertex":
-            i = self.j if nb == (self.j + 1) % nv else nb
-        else:
-            i = self.j
-        self.kind, self.j = "face", i
+    def to_face(self, t, edge):
+        """A point contact whose edge turned flush: face contact on that edge."""
+        self.kind, self.j = "face", edge
 
     # ---- the run -----------------------------------------------------------------------
 
@@ -646,7 +637,7 @@ class _Engine(_Run):
             self.kind = "vertex"
             self.j = self.j if z < 0.5 * self.ol.L[self.j] else (self.j + 1) % nv
             return self.arrive(t)  # its velocity normal to the face: away, or an impact
-        if isinstance(label, tuple):  # ("flush", vertex): the edge turns onto the face
+        if isinstance(label, tuple):  # ("flush", edge): the edge turns onto the face
             self.to_face(t, label[1])
             return self.arrive(t)
         return self.decide(t, exclude=(mode,))

@@ -314,9 +314,15 @@ class RoundEngine(_Engine):
         if tag[0] == "face":
             self.side = tag[1]
             i = min(near, key=lambda q: float(cw[q] @ um - ol.R[q]))
-            pair = [q for q in ((i - 1) % nk, (i + 1) % nk) if q in near and q != i]
-            if pair:  # two discs on the face: their edge is flush
-                self.kind, self.j = "face", (i if pair[-1] == (i + 1) % nk else pair[0])
+            # two discs on the face: the edge between them whose inward normal is the face's
+            # (of two discs, both edges join them)
+            flush = [
+                q for q in range(nk) if q in near and (q + 1) % nk in near and q != (q + 1) % nk
+            ]
+            if flush:
+                c, sn = _rot(x[2])
+                self.kind = "face"
+                self.j = max(flush, key=lambda q: float(um @ _turn(c, sn, ol.N[q])))
             else:
                 self.kind, self.j = ("vertex" if ol.R[i] == 0.0 else "roll"), i
             return

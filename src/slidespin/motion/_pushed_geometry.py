@@ -322,8 +322,13 @@ def _integrate(fun, t0, y0, t1, events, rtol, atol, budget, rec, stiff=False):
         if steps >= budget:
             return "max_steps", solver.t, solver.y, -1, steps
         t_old = solver.t
-        with np.errstate(over="ignore"):  # Radau's difference Jacobian: zero work columns
-            solver.step()
+        try:
+            with np.errstate(over="ignore", invalid="ignore"):  # Radau's difference Jacobian
+                solver.step()
+        except (ValueError, np.linalg.LinAlgError):  # Radau's Newton ran off to inf/NaN
+            if not stiff:
+                raise
+            return "failed", solver.t, solver.y, -1, steps
         steps += 1
         if solver.status == "failed":
             return "failed", solver.t, solver.y, -1, steps
