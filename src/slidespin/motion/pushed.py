@@ -615,10 +615,10 @@ def simulate_pushed(
         arrives); a finger inside the body is refused.
     pusher : PointPusher or LinePusher
         The finger (:class:`slidespin.motion.pushers.PointPusher`) or a flat pusher
-        (:class:`~slidespin.motion.pushers.LinePusher`, polygonal outlines only; its modes in
+        (:class:`~slidespin.motion.pushers.LinePusher`, any outline; its modes in
         :mod:`slidespin.motion.pushed_line`): its path and μp.
     t_end : float
-        End of the run [s], finite and > 0.
+        End of the run [s], in (0, 1e9].
     g : float, default 9.81
         Gravitational acceleration [m/s²], in [1e-6, 1e6].
     rtol : float, default 1e-10
