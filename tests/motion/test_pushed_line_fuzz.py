@@ -136,3 +136,20 @@ def test_face_rolling_off_a_small_arc_stays_on_the_pusher():
         assert math.dist(tr.contact_point[k], (ax + w * d[0], ay + w * d[1])) < 1e-9
     assert _deepest(tr, pusher, two, two_discs) < 1e-9
     assert tr.relative_energy_error < 1e-9
+
+
+def test_frictionless_centred_slow_push_does_not_chatter():
+    """μp = 0, a face pushing a disk through its centre at 1 mm/s: sticking (λt = 0) held
+    only to the integration's error, and the run flipped between sticking and sliding 717
+    times in 3 s. The force is the plane friction's, μ m g along the push."""
+    disk = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0)
+    rows = [
+        (0.0, -0.087439806630877, 0.077413830543319, 6.586549768229824),
+        (3.0, -0.086543608469613, 0.074550820090012, 6.586549768229824),
+    ]
+    pusher = ss.LinePusher(0.3, rows, mu=0.0)
+    tr = ss.simulate(disk, ISO, ss.State(), pusher=pusher, t_end=4.1)
+    assert tr.status == "ok" and len(tr.switches) <= 4
+    push = np.flatnonzero((tr.t > 0.5) & (tr.t < 2.9))
+    np.testing.assert_allclose(np.hypot(*tr.pusher_force[push].T), 0.3 * 9.81, rtol=1e-6)
+    assert tr.relative_energy_error < 1e-9

@@ -32,6 +32,10 @@ _BASE = {"face": 4, "vertex": 7, "end": 10, "roll": 7, "endarc": 10}
 _TOUCH = 1e-9  # |gap| [ℓ] within which the pusher given at t = 0 touches the outline
 _GAP_TOL = 1e-13  # [ℓ] a separated pusher re-contacts where the gap falls below −_GAP_TOL
 _CONE_TOL = 1e-12
+#: μp = 0: sticking is λt = 0, which a symmetric push keeps only to the integration's error
+#: (it then flipped between sticking and sliding hundreds of times a second); the cone is
+#: taken this wide (of λn), an error of the same order as the integration's
+_CONE_TOL_FRICTIONLESS = 1e-8
 _VEL_TOL = 1e-11
 _STOP_DROP = 1e-13
 _ZENO = 1e-5  # a rocking face whose approach falls below this (of the speed scale) lands flat
@@ -363,7 +367,7 @@ class _Engine(_Run):
         ln, lt, _, inside, hi_side = self.try_mode(t, True)
         if ln < 0.0:
             return self.turn_off_face(t, depth) if self.kind == "face" else _SEP
-        cone = abs(lt) <= self.mu * ln + _CONE_TOL * (abs(ln) + abs(lt))
+        cone = abs(lt) <= self.mu * ln + self.cone_tol() * (abs(ln) + abs(lt))
         if inside and cone and self.code() not in exclude:
             return self.code()
         first = -1.0 if lt > 0.0 else 1.0
@@ -470,8 +474,12 @@ class _Engine(_Run):
         """dy[2]/dt: σ̇ (or ṡ) is the state's y[3] (a rolling contact's follows from φ)."""
         return y[3]
 
+    def cone_tol(self):
+        """The slack of the friction cone's edges, relative to λn (wider when μp = 0)."""
+        return _CONE_TOL if self.mu > 0.0 else _CONE_TOL_FRICTIONLESS
+
     def run_contact(self, t0, t1):
-        mu = self.mu
+        mu, tol = self.mu, self.cone_tol()
 
         def fun(t, y):
             omd, zdd, _, _, _, pw, *_ = self.acc(t, y)
@@ -484,10 +492,10 @@ class _Engine(_Run):
         events = [("sep", lambda t, y: nt(t, y)[0])]
         if self.stick:
             events.append(
-                ("cone", lambda t, y: mu * nt(t, y)[0] - nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
+                ("cone", lambda t, y: mu * nt(t, y)[0] - nt(t, y)[1] + tol * abs(nt(t, y)[0]))
             )
             events.append(
-                ("cone", lambda t, y: mu * nt(t, y)[0] + nt(t, y)[1] + _CONE_TOL * abs(nt(t, y)[0]))
+                ("cone", lambda t, y: mu * nt(t, y)[0] + nt(t, y)[1] + tol * abs(nt(t, y)[0]))
             )
         else:
             events.append(("slip", lambda t, y: self.dirn * nt(t, y)[3]))
