@@ -153,3 +153,22 @@ def test_frictionless_centred_slow_push_does_not_chatter():
     push = np.flatnonzero((tr.t > 0.5) & (tr.t < 2.9))
     np.testing.assert_allclose(np.hypot(*tr.pusher_force[push].T), 0.3 * 9.81, rtol=1e-6)
     assert tr.relative_energy_error < 1e-9
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.3])
+def test_slow_face_coming_flush_settles_flat(mu):
+    """A slow push turning a stadium's flat edge onto the face: the contact rocked between the
+    two ends of the shared segment in ever shorter swings (the approach stayed above the
+    landing threshold, 1e-5 of a slow pusher's speed, at the floor the events' slack leaves)
+    and the run ended max_phases after 40 s with the body frozen. It lands flat and slides
+    with the face, as the quasi-static engine does: the edge ends parallel to the pusher."""
+    rows = [(0, 0.03, -0.1, 0.1), (3, 0.03, 0.05, 0.1)]
+    pusher = ss.LinePusher(0.1, rows, mu=mu)
+    tr = ss.simulate(STADIUM, ISO, ss.State(), pusher=pusher, t_end=3.0)
+    qs = ss.push_quasi_static(STADIUM, ISO, pusher, [0.0, 3.0])
+    assert tr.status == qs.status == "ok"
+    assert len(tr.switches) < 40 and tr.switches[-1][2].startswith("face_")
+    assert qs.mode[-1].startswith("face_")
+    assert tr.phi[-1] == pytest.approx(0.1, abs=1e-9) and qs.phi[-1] == pytest.approx(0.1, abs=1e-9)
+    assert tr.relative_energy_error < 1e-9
+    assert _deepest(tr, pusher, STADIUM, STADIUM_DISCS) < 1e-9

@@ -38,8 +38,9 @@ _CONE_TOL = 1e-12
 _CONE_TOL_FRICTIONLESS = 1e-8
 _VEL_TOL = 1e-11
 _STOP_DROP = 1e-13
-_ZENO = 1e-5  # a rocking face whose approach falls below this (of the speed scale) lands flat
-# (above the floor √(2 a _GAP_TOL) ~ 5e-7 that the events' slack leaves to rocking)
+_ZENO = 1e-5  # a rocking face whose approach falls below this (of the speed scale, at least
+# √(g ℓ)) lands flat: above the floor √(2 a _GAP_TOL) ~ 5e-7 that the events' slack leaves to
+# rocking, which a slow pusher's speed scale alone put the threshold under
 
 
 def _turn(c, sn, v):
@@ -275,7 +276,8 @@ class _Engine(_Run):
         s = -tau / ln if ln > 0.0 else 0.0
         slack = 1e-12 * max(1.0, hi - lo)
         approach = min(un_end for un_end in self.face_normal_speeds(t))
-        if ln > 0.0 and (lo - slack <= s <= hi + slack or -approach < _ZENO * self.vscale):
+        zeno = _ZENO * max(self.vscale, 1.0)  # of the pusher's speed, at least of √(g ℓ)
+        if ln > 0.0 and (lo - slack <= s <= hi + slack or -approach < zeno):
             self.apply_impulse(t, lam, tau, r, vpm, w)
             return
         # the resultant leaves the segment: an impact at one end only (the end whose impulse
