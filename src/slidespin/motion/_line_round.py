@@ -43,7 +43,7 @@ import math
 import numpy as np
 
 from slidespin.motion._line_engine import _Engine, _turn
-from slidespin.motion._pushed_geometry import _FLAT, _rot, _zx
+from slidespin.motion._pushed_geometry import _FLAT, _rot, _zx, disc_hull_axes
 
 __all__ = ["RoundEngine"]
 
@@ -224,21 +224,8 @@ class RoundEngine(_Engine):
         c, sn = _rot(phi)
         rot = np.array([[c, -sn], [sn, c]])
         cw = np.array([x, y]) + ol.C @ rot.T
-        n0 = np.array([-e[1], e[0]])
-        us, tags = [n0, -n0], [("face", 1.0), ("face", -1.0)]
-        us += list(ol.N @ rot.T)
-        tags += [("edge", i) for i in range(len(ol.L))]
-        for i in np.flatnonzero(ol.R > 0.0):
-            for k in (0, 1):
-                dv = cw[i] - ends[k]
-                dn = math.hypot(dv[0], dv[1])
-                if dn > 0.0:
-                    us.append(dv / dn)
-                    tags.append(("disc", int(i), k))
-        u = np.array(us)
-        kmin = (u @ cw.T - ol.R[None, :]).min(axis=1)
-        smax = (u @ ends.T).max(axis=1)
-        return kmin - smax, u, tags, cw, ends
+        gaps, u, tags = disc_hull_axes(cw, ol.R, ol.N @ rot.T, ends, e)
+        return gaps, u, tags, cw, ends
 
     def gap(self, seg, t, x, y, phi):
         if self.ol.poly:

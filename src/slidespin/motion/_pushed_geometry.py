@@ -535,6 +535,29 @@ def _identify(ol, line, seg, t, x):
     return kind, i, side, (-1.0, 1.0)[m], -depth[m] * N[0], -depth[m] * N[1]
 
 
+def disc_hull_axes(centres, radii, inward, ends, direction):
+    """The separating axes of a hull of discs and a segment (any consistent units, one frame):
+    the discs' ``centres`` (k, 2) and ``radii``, the edges' ``inward`` unit normals (k, 2), the
+    segment's ``ends`` (2, 2) and unit ``direction``. Returns (gaps, u, tags): for each axis u
+    (pointing into the body) min over the hull of u·x − max over the segment of u·y (the
+    largest is the distance while apart, ≤ 0 in contact), tagged ("face", ±1) for ±ẑ × the
+    direction, ("edge", i), or ("disc", i, k) for the direction from end k to disc i's centre."""
+    n0 = np.array([-direction[1], direction[0]])
+    us, tags = [n0, -n0], [("face", 1.0), ("face", -1.0)]
+    us += list(inward)
+    tags += [("edge", i) for i in range(len(inward))]
+    for i in np.flatnonzero(radii > 0.0):
+        for k in (0, 1):
+            dv = centres[i] - ends[k]
+            dn = math.hypot(dv[0], dv[1])
+            if dn > 0.0:
+                us.append(dv / dn)
+                tags.append(("disc", int(i), k))
+    u = np.array(us)
+    kmin = (u @ centres.T - radii[None, :]).min(axis=1)
+    return kmin - (u @ ends.T).max(axis=1), u, tags
+
+
 def _separated(eng, t0, t1, gap, stop_drop):
     """The free body of engine ``eng`` in the regularised time τ (MODEL §5) until t1, the
     pusher's arrival (``gap(t, x, y, φ)`` falls below 0) or the stop: (reason, t)."""

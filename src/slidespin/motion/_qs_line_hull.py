@@ -16,27 +16,19 @@ import math
 
 import numpy as np
 
+from slidespin.motion._pushed_geometry import disc_hull_axes
+
 __all__ = ["hull_features", "hull_gap"]
 
 
 def hull_gap(prob, fr) -> float:
-    """The separating-axis gap [m] (> 0 apart) over the face's normal, the edges' normals
-    and the directions from the discs' centres to the pusher's ends."""
-    rot, ends = fr["rot"], np.array(fr["E"])
-    c = prob.verts @ rot.T
-    r = prob.radii
-    us = [fr["N"], *(prob.normals @ rot.T)]
-    for i in np.flatnonzero(r > 0.0):
-        for e in ends:
-            dv = e - c[i]
-            dn = math.hypot(dv[0], dv[1])
-            if dn > 0.0:
-                us.append(dv / dn)
-    u = np.array(us)
-    cu = u @ c.T
-    lo, hi = (cu - r).min(axis=1), (cu + r).max(axis=1)
-    pe = u @ ends.T
-    return float(np.max(np.maximum(pe.min(axis=1) - hi, lo - pe.max(axis=1))))
+    """The separating-axis gap [m] (> 0 apart) over the face's normals, the edges' normals
+    and the directions from the pusher's ends to the discs' centres."""
+    rot = fr["rot"]
+    gaps, _, _ = disc_hull_axes(
+        prob.verts @ rot.T, prob.radii, prob.normals @ rot.T, np.array(fr["E"]), fr["d"]
+    )
+    return float(gaps.max())
 
 
 def hull_features(prob, fr, tol):
