@@ -58,6 +58,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     )
     from slidespin.contact.pressure_map import PressureMap
     from slidespin.contact.shapes import Annulus, Blade, Circle, Disk, Pads, Polygon, Rectangle
+    from slidespin.contact.speed_laws import PowerLaw, SpeedTable, Stribeck
     from slidespin.contact.statics import Onset, can_stick, critical_tilt, load_factor, onset
     from slidespin.contact.wrench import Wrench, friction_wrench
     from slidespin.motion.batch import StopResults, simulate_bodies, simulate_cases, simulate_many
@@ -108,6 +109,9 @@ _HOMES = {
     "Body": "slidespin.contact.body",
     "Ellipse": "slidespin.contact.ellipse",
     "FrictionTensor": "slidespin.contact.friction",
+    "PowerLaw": "slidespin.contact.speed_laws",
+    "SpeedTable": "slidespin.contact.speed_laws",
+    "Stribeck": "slidespin.contact.speed_laws",
     "Incline": "slidespin.contact.incline",
     "LimitSurface": "slidespin.contact.limit_surface",
     "limit_surface": "slidespin.contact.limit_surface",
@@ -186,6 +190,9 @@ __all__ = [
     "HertzPressure",
     "PressureMap",
     "FrictionTensor",
+    "PowerLaw",
+    "Stribeck",
+    "SpeedTable",
     "Body",
     "Incline",
     "Wrench",

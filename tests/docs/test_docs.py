@@ -42,6 +42,7 @@ PUBLIC_MODULES = (
     "slidespin.contact.pressure",
     "slidespin.contact.pressure_map",
     "slidespin.contact.shapes",
+    "slidespin.contact.speed_laws",
     "slidespin.contact.static_set",
     "slidespin.contact.statics",
     "slidespin.contact.wrench",

@@ -49,6 +49,7 @@ from slidespin.contact.pressure_map import (
     symmetry,
 )
 from slidespin.contact.pressure_map import mass_centre as pressure_centroid
+from slidespin.contact.speed_laws import law_is_constant
 
 __all__ = ["Body", "check_body_friction"]
 
@@ -267,6 +268,7 @@ class Body:
             raise ValueError(
                 f"friction = {v._short(friction)} is invalid; valid values: a FrictionTensor"
             )
+        require_constant_law(friction, "this function")
         tol = v.finite("wrench_tol", wrench_tol)
         key = (friction.fx, friction.fy, friction.f, friction.frame, friction.angle, tol)
         cache = self._cache
@@ -339,6 +341,18 @@ def _length_unit(patch: Ellipse | _fp.Footprint) -> float:
     """ℓ: the semi-axis a of an ellipse, the extent of a footprint [m] (the radius of a disk,
     its a, whatever the pressure law)."""
     return patch.a if isinstance(patch, Ellipse) else float(patch.extent)
+
+
+def require_constant_law(friction: FrictionTensor, feature: str) -> None:
+    """A ``ValueError`` naming ``speed_law`` if the tensor has a speed-dependent law
+    (MODEL §14) and ``feature`` does not take one yet."""
+    if not law_is_constant(friction.speed_law):
+        raise ValueError(
+            f"speed_law = {friction.speed_law!r} is not available in {feature} yet; valid "
+            "values: speed_law=None. Speed-dependent laws work with friction_wrench, "
+            "footprint_wrench, simulate (free motion) and the static set (can_stick, "
+            "load_factor, critical_tilt, support_function, which use the static ratio)"
+        )
 
 
 def check_body_friction(body, friction, *, elliptic_only: str | None = None) -> None:

@@ -22,6 +22,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from slidespin import _validate as v
+from slidespin.contact.speed_laws import (
+    STATIC_RATIO,
+    PowerLaw,
+    SpeedTable,
+    Stribeck,
+    check_speed_law,
+    law_is_constant,
+)
 
 __all__ = ["FrictionTensor", "FRAMES"]
 
@@ -57,6 +65,14 @@ class FrictionTensor:
         The same angle in degrees, in [−360, 360] (the ``angle_deg`` key of case files);
         give exactly one of ``angle`` and ``angle_deg``. Stored as ``angle`` [rad];
         ``tensor.angle_deg`` reads it back in degrees.
+    static : float, default 1 (keyword)
+        μs/μk, in [1, 100]: at rest the tensor holds ``static`` times its kinetic set of
+        wrenches (MODEL §14, "Static above kinetic"); the coefficients above are the kinetic
+        ones. With a :class:`~slidespin.Stribeck` law the ratio is the law's
+        ``static_ratio`` (give it there; ``static`` then reads it back).
+    speed_law : PowerLaw, Stribeck, SpeedTable or None, default None (keyword)
+        A factor g(|w|) of the local slip speed on the whole tensor (MODEL §14,
+        :mod:`slidespin.contact.speed_laws`); None is the paper's constant law.
 
     Notes
     -----
@@ -80,8 +96,22 @@ class FrictionTensor:
     frame: str = "plane"
     angle: float = 0.0
     angle_deg: InitVar[float | None] = None
+    static: float = 1.0
+    speed_law: PowerLaw | Stribeck | SpeedTable | None = None
 
     def __post_init__(self, angle_deg: float | None = None) -> None:  # noqa: RUF033 - InitVar
+        check_speed_law(self.speed_law)
+        static = v.bounded("static", self.static, *STATIC_RATIO)
+        if isinstance(self.speed_law, Stribeck):
+            ratio = self.speed_law.static_ratio
+            if static not in (1.0, ratio):
+                raise ValueError(
+                    f"static = {static!r} is invalid with speed_law = {self.speed_law!r}; valid "
+                    f"values: 1 (the default) or the law's static_ratio = {ratio!r}, which "
+                    "sets mu_s/mu_k"
+                )
+            static = ratio
+        object.__setattr__(self, "static", static)
         object.__setattr__(self, "fx", v.bounded("fx", self.fx, *v.COEFFICIENT))
         object.__setattr__(self, "fy", v.bounded("fy", self.fy, *v.COEFFICIENT))
         f = v.finite("f", self.f)
@@ -103,6 +133,14 @@ class FrictionTensor:
                 )
             angle = math.radians(deg)
         object.__setattr__(self, "angle", angle)
+        top = static * max(self.fx, self.fy, abs(self.f))
+        if static != 1.0 and top > v.COEFFICIENT[1]:
+            raise ValueError(
+                f"static = {static!r} is invalid for fx = {self.fx!r}, fy = {self.fy!r}, f = "
+                f"{self.f!r}; valid range: [1, {v.COEFFICIENT[1] / top * static:.6g}] (the "
+                f"static coefficients static*fx, static*fy, static*|f| must stay <= "
+                f"{v.COEFFICIENT[1]:g})"
+            )
 
     @classmethod
     def from_degrees(
@@ -116,6 +154,40 @@ class FrictionTensor:
         """Isotropic Coulomb friction with the given coefficient (in [1e-6, 5])."""
         c = v.bounded("coefficient", coefficient, *v.COEFFICIENT)
         return cls(c, c)
+
+    def __repr__(self) -> str:
+        extra = ""
+        if self.static != 1.0 and not isinstance(self.speed_law, Stribeck):
+            extra += f", static={self.static!r}"
+        if self.speed_law is not None:
+            extra += f", speed_law={self.speed_law!r}"
+        return (
+            f"FrictionTensor(fx={self.fx!r}, fy={self.fy!r}, f={self.f!r}, "
+            f"frame={self.frame!r}, angle={self.angle!r}{extra})"
+        )
+
+    @property
+    def is_constant(self) -> bool:
+        """True if the tensor is the paper's: one coefficient at rest and at every speed
+        (``static`` = 1 and no speed law, or a law whose factor is 1 everywhere)."""
+        return self.static == 1.0 and law_is_constant(self.speed_law)
+
+    @property
+    def kinetic(self) -> FrictionTensor:
+        """The same tensor with the constant law and no static excess (the coefficients as
+        given)."""
+        if self.static == 1.0 and self.speed_law is None:
+            return self
+        return FrictionTensor(self.fx, self.fy, self.f, self.frame, self.angle)
+
+    @property
+    def static_tensor(self) -> FrictionTensor:
+        """The constant tensor whose set of wrenches holds a body at rest: the coefficients
+        times ``static`` (MODEL §14)."""
+        if self.static == 1.0 and self.speed_law is None:
+            return self
+        r = self.static
+        return FrictionTensor(r * self.fx, r * self.fy, r * self.f, self.frame, self.angle)
 
     @property
     def mu(self) -> float:

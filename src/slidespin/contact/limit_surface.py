@@ -40,7 +40,7 @@ from scipy.optimize import nnls
 from slidespin import _validate as v
 from slidespin._validate import _short
 from slidespin.contact._engine import TwistWrench
-from slidespin.contact.body import Body, check_body_friction
+from slidespin.contact.body import Body, check_body_friction, require_constant_law
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.contact.static_set import check_anisotropy, static_support
@@ -323,6 +323,7 @@ def limit_surface(
     0.0
     """
     check_body_friction(body, friction)
+    require_constant_law(friction, "limit_surface (the wrenches of unit twists)")
     check_anisotropy(body, friction, "limit_surface")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 10 <= n <= MAX_DIRECTIONS:
         raise ValueError(

@@ -293,12 +293,33 @@ class FootprintSupport:
 _NO_CIRCLES = np.empty((0, 4))
 
 
+class ScaledSupport:
+    """The support function of ``ratio`` × C: the static set of a tensor whose static
+    coefficients are ``ratio`` (= μs/μk ≥ 1) times its kinetic ones (MODEL §14: C scales with
+    the tensor, h and its support point by ``ratio``)."""
+
+    __slots__ = ("base", "ratio")
+
+    def __init__(self, base, ratio: float) -> None:
+        self.base = base
+        self.ratio = ratio
+
+    def __call__(self, d):
+        h, grad = self.base(d)
+        return h * self.ratio, grad * self.ratio
+
+
 def static_support(tw: TwistWrench, friction: FrictionTensor, phi: float):
-    """The support function of C at angle ``phi``: :class:`StaticSupport` for an ellipse,
-    :class:`FootprintSupport` for a footprint (natural units of ``tw``)."""
+    """The support function of the static set at angle ``phi``: :class:`StaticSupport` for
+    an ellipse, :class:`FootprintSupport` for a footprint (natural units of ``tw``), scaled
+    by the tensor's ``static`` ratio μs/μk when it exceeds 1 (:class:`ScaledSupport`)."""
     if tw.footprint:
-        return FootprintSupport(tw, friction, phi)
-    return StaticSupport(tw.par, friction, phi)
+        base: FootprintSupport | StaticSupport = FootprintSupport(tw, friction, phi)
+    else:
+        base = StaticSupport(tw.par, friction, phi)
+    if friction.static != 1.0:
+        return ScaledSupport(base, friction.static)
+    return base
 
 
 #: bound on (friction anisotropy) × (patch elongation): the static features map the patch to
@@ -438,7 +459,7 @@ def support_function(
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     a = body.length_unit
-    sup = static_support(TwistWrench(body, friction), friction, v.finite("phi", phi))
+    sup = static_support(TwistWrench(body, friction.kinetic), friction, v.finite("phi", phi))
     h, grad = sup(np.array([d[0], d[1], d[2] * a]))
     load = body.mass * g * nf
     return float(h * load), np.array([grad[0] * load, grad[1] * load, grad[2] * load * a])

@@ -244,7 +244,7 @@ def load_factor(
     b = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", b, incline):
         return math.inf
-    sup = static_support(TwistWrench(body, friction), friction, phi)
+    sup = static_support(TwistWrench(body, friction.kinetic), friction, phi)
     return _load_factor_nat(sup, b)[0]
 
 

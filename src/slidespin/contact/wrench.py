@@ -42,7 +42,9 @@ from slidespin.contact._kernel_blade import blade_wrench_array
 from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_array
 from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
 from slidespin.contact._map_wrench import MAP_TOL, MAP_TOL_RANGE, map_prepare, map_wrench_world
+from slidespin.contact._speed_wrench import SPEED_TOL, speed_patch, speed_wrench_world
 from slidespin.contact.body import Body
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import (
     BoussinesqPressure,
@@ -57,6 +59,7 @@ from slidespin.contact.pressure_map import (
     kernel_geometry,
 )
 from slidespin.contact.shapes import Annulus, Blade, Disk, Pads, Polygon, Rectangle
+from slidespin.contact.speed_laws import law_is_constant
 
 __all__ = ["Wrench", "footprint_wrench", "friction_wrench"]
 
@@ -235,6 +238,8 @@ def friction_wrench(
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     tol = v.bounded("tol", tol, *v.WRENCH_TOL)
+    if not law_is_constant(friction.speed_law):
+        return _law_wrench(body.patch, body.pressure, friction, vx, vy, omega, phi, body.mass * g)
     if body.is_footprint:  # the exact footprint kernel (MODEL §10); ``tol`` is not needed
         return footprint_wrench(
             body.patch,
@@ -353,6 +358,8 @@ def footprint_wrench(
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     load = v.positive("load", load, "N")
     map_tol = v.bounded("map_tol", map_tol, *MAP_TOL_RANGE)
+    if not law_is_constant(friction.speed_law):
+        return _law_wrench(footprint, pressure, friction, vx, vy, omega, phi, load)
     if isinstance(pressure, (BoussinesqPressure, HertzPressure)):
         return _round_wrench(footprint, pressure, friction, vx, vy, omega, phi, load)
     vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
@@ -407,6 +414,62 @@ def footprint_wrench(
     fy = fy * load
     mm = mm * load
     return Wrench.from_world(fx, fy, mm, theta, shape, scalar)
+
+
+def _law_wrench(patch, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
+    """The wrench under the tensor's speed law (MODEL §14): ω = 0 exactly as g(|v|) times the
+    constant law's wrench, the rest by :mod:`slidespin.contact._kernel_speed` to
+    ``SPEED_TOL`` (absolute, units of the load and load × extent)."""
+    if isinstance(patch, Blade) or isinstance(pressure, PressureMap):
+        raise ValueError(
+            f"speed_law = {friction.speed_law!r} is not available on "
+            + ("a Blade" if isinstance(patch, Blade) else "a PressureMap")
+            + "; valid values: speed_law=None there (speed laws run on ellipses, polygons, "
+            "rectangles, disks, rings and pads under uniform, linear, Boussinesq or Hertz "
+            "pressure)"
+        )
+    vxa, vya, oma, pha, shape, scalar = motion_arrays(vx, vy, omega, phi)
+    law = friction.speed_law
+    fx, fy, mm = np.zeros(vxa.size), np.zeros(vxa.size), np.zeros(vxa.size)
+    slide = oma == 0.0
+    if slide.any():  # pure translation: every point slips at |v|
+        kin = friction.kinetic
+        if isinstance(patch, Ellipse):
+            w0 = friction_wrench(
+                Body(patch, pressure, 1.0), kin, vxa[slide], vya[slide], 0.0, pha[slide], g=1.0
+            )
+        else:
+            w0 = footprint_wrench(patch, pressure, kin, vxa[slide], vya[slide], 0.0, pha[slide])
+        speed = np.hypot(vxa[slide], vya[slide])
+        moving = speed > 0.0
+        gv = np.ones_like(speed)
+        gv[moving] = law.factor(speed[moving])
+        fx[slide] = np.asarray(w0.force_x) * gv
+        fy[slide] = np.asarray(w0.force_y) * gv
+        mm[slide] = np.asarray(w0.moment) * gv
+    spin = ~slide
+    if spin.any():
+        sp = speed_patch(patch, pressure)
+        f0, f1, m, err = speed_wrench_world(
+            sp,
+            friction.matrix,
+            friction.frame == "body",
+            law,
+            pha[spin],
+            vxa[spin],
+            vya[spin],
+            oma[spin],
+            SPEED_TOL,
+        )
+        if err > 100.0 * SPEED_TOL:  # pragma: no cover - not reached for valid inputs
+            raise RuntimeError(
+                f"friction_wrench: the speed-law quadrature reached only ~{err:.1e} (units of "
+                f"the load and load x extent), not {SPEED_TOL:g}, for {friction!r} on "
+                f"{patch!r}; every input is inside its valid range, so this is a bug in "
+                "slidespin: please report it"
+            )
+        fx[spin], fy[spin], mm[spin] = f0, f1, m
+    return Wrench.from_world(fx * load, fy * load, mm * load, np.arctan2(vya, vxa), shape, scalar)
 
 
 def _round_wrench(disk, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
