@@ -33,7 +33,9 @@ from slidespin.contact import _engine
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
+from slidespin.contact.speed_laws import law_is_constant
 from slidespin.motion import _integrator
+from slidespin.motion._law_motion import simulate_law
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES
@@ -358,9 +360,11 @@ def simulate(
     a = body.length_unit  # the semi-axis, or a footprint's extent
     t_unit = math.sqrt(a / g)
     v_unit = math.sqrt(a * g)
-    par, fe, fc, geo = body.engine_params(friction)
-    k = par[_engine.P_K]
     s0 = initial_state
+    if not law_is_constant(friction.speed_law) and (s0.vx, s0.vy, s0.omega) != (0.0, 0.0, 0.0):
+        return simulate_law(body, friction, s0, g, rtol, max_steps, h_max, classify_ending)
+    par, fe, fc, geo = body.engine_params(friction.kinetic)
+    k = par[_engine.P_K]
     vxn, vyn, wn = s0.vx / v_unit, s0.vy / v_unit, s0.omega * t_unit
     speed0 = math.sqrt(vxn * vxn + vyn * vyn + (k * wn) ** 2)
     if speed0 == 0.0:
