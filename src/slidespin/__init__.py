@@ -71,6 +71,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.motion.pushers import LinePusher, PointPusher
     from slidespin.motion.quasi_static import QuasiStaticPush, push_quasi_static
     from slidespin.motion.simulate import simulate
+    from slidespin.motion.springs import Spring
     from slidespin.motion.state import State
     from slidespin.motion.trajectory import Trajectory
     from slidespin.studies.case import Case, load_case
@@ -159,6 +160,7 @@ _HOMES = {
     "push_quasi_static": "slidespin.motion.quasi_static",
     "Trajectory": "slidespin.motion.trajectory",
     "simulate": "slidespin.motion.simulate",
+    "Spring": "slidespin.motion.springs",
     "State": "slidespin.motion.state",
     "Case": "slidespin.studies.case",
     "load_case": "slidespin.studies.case",
@@ -213,6 +215,7 @@ __all__ = [
     # motion: state, loads, simulation to the stop, batches, statuses and endings
     "State",
     "Load",
+    "Spring",
     "simulate",
     "Trajectory",
     "simulate_loaded",

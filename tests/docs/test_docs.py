@@ -60,6 +60,7 @@ PUBLIC_MODULES = (
     "slidespin.motion.quasi_static",
     "slidespin.motion.quasi_static_line",
     "slidespin.motion.simulate",
+    "slidespin.motion.springs",
     "slidespin.motion.state",
     "slidespin.motion.trajectory",
     # analysis

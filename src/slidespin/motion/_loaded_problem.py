@@ -113,8 +113,14 @@ def _load_factor(sup, b, d0=None):
 class _Problem:
     """Everything in natural units (a = m = g = 1, time √(a/g)) for one loaded run."""
 
-    def __init__(self, body, friction, load, incline, g):
+    def __init__(self, body, friction, load, incline, g, springs=()):
         self.body, self.friction, self.load, self.incline, self.g = body, friction, load, incline, g
+        # springs (slidespin.motion.springs) depend on the state: evaluated at ``pose`` (x, y
+        # of G) and ``vel`` (vx, vy, k ω), natural units, which the slip's right-hand side
+        # sets from its state and the phase loop sets to the pose where the body sticks
+        self.springs = tuple(springs)
+        self.pose = (0.0, 0.0)
+        self.vel = (0.0, 0.0, 0.0)
         self.a = body.length_unit
         self.t_unit = math.sqrt(self.a / g)
         self.v_unit = math.sqrt(self.a * g)
@@ -128,7 +134,7 @@ class _Problem:
         else:
             dx, dy = incline.direction
             self.grav = (incline.downhill_factor * dx, incline.downhill_factor * dy)
-        self.constant = (load is None or load.is_constant) and self.fixed_tilt
+        self.constant = (load is None or load.is_constant) and self.fixed_tilt and not springs
         self.n_rhs = 0
         self.failure = ""
         self._support = {}
@@ -151,8 +157,8 @@ class _Problem:
             dx, dy = self.incline.direction
             bx, by = sa * dx, sa * dy
         bm = 0.0
-        if self.load is not None:
-            qx, qy, mz = self.load.wrench(t * self.t_unit, phi, self._mass_centre)
+        if self.load is not None or self.springs:
+            qx, qy, mz = self._applied(t, phi)
             mg = self.body.mass * self.g
             bx += qx / mg
             by += qy / mg
@@ -166,6 +172,23 @@ class _Problem:
                     "m g (m g a)"
                 )
         return bx, by, bm
+
+    def _applied(self, t, phi):
+        """(Qx, Qy, moment about G) [N, N, N m] of the loads and springs at natural time t,
+        the springs at ``pose`` and ``vel``."""
+        qx = qy = mz = 0.0
+        ts = t * self.t_unit
+        if self.load is not None:
+            qx, qy, mz = self.load.wrench(ts, phi, self._mass_centre)
+        if self.springs:
+            a, vu = self.a, self.v_unit
+            x, y = self.pose[0] * a, self.pose[1] * a
+            vx, vy = self.vel[0] * vu, self.vel[1] * vu
+            om = self.vel[2] / self.k / self.t_unit
+            for spring in self.springs:
+                sx, sy, sm = spring.wrench(ts, x, y, phi, vx, vy, om, self._mass_centre)
+                qx, qy, mz = qx + sx, qy + sy, mz + sm
+        return qx, qy, mz
 
     def friction_acc(self, u1, u2, u3, phi, t=0.0):
         fx, fy, m = self.tw(phi, u1, u2, u3 / self.k)
@@ -185,10 +208,13 @@ class _Problem:
         u2 *= inv
         u3 *= inv
         ax, ay, am = self.friction_acc(u1, u2, u3, y[7], y[4])
+        s = math.exp(y[3])
+        if self.springs:
+            self.pose = (y[5], y[6])
+            self.vel = (s * u1, s * u2, s * u3)
         bx, by, bm = self.b(y[4], y[7])
         xx, xy, xm = ax + bx, ay + by, am + bm
         ux = u1 * xx + u2 * xy + u3 * xm
-        s = math.exp(y[3])
         s2 = s * s
         return np.array(
             [
@@ -215,6 +241,12 @@ class _Problem:
             yh[j] += h
             jm[:, j] = (self.rhs(tau, yh) - f0) / h
         return jm
+
+    def hold_at(self, pos):
+        """The body at rest at ``pos`` (x, y, φ natural): where the springs are evaluated
+        while it sticks."""
+        self.pose = (float(pos[0]), float(pos[1]))
+        self.vel = (0.0, 0.0, 0.0)
 
     def stiffness(self, y):
         """Ratio of the fastest relaxation rate of u to the growth rate |u·X| (in τ)."""

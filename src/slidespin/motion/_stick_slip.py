@@ -82,7 +82,9 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow, s0=0.0, u0=None):
     cache = {"u": np.asarray(u0, dtype=float)}
     k = prob.k
 
-    def slaved(t, phi):
+    def slaved(t, z):
+        phi = z[3]
+        prob.hold_at(z[1:3])  # s is below the slow speed: the springs as at rest
         b = np.array(prob.b(t, phi))
         acc = _friction_fun(prob, phi, t)
         got = _onset_nat(acc, b, cache["u"], quick=True)
@@ -99,7 +101,7 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow, s0=0.0, u0=None):
 
     def rhs(t, z):
         prob.n_rhs += 1
-        u, lam, a, b = slaved(t, z[3])
+        u, lam, a, b = slaved(t, z)
         s = z[0]
         return np.array([lam, s * u[0], s * u[1], s * u[2] / k, s * (u @ a), s * (u @ b)])
 
@@ -110,7 +112,7 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow, s0=0.0, u0=None):
     ev_fast.direction = 1.0
 
     def ev_stall(t, z):
-        return slaved(t, z[3])[1]
+        return slaved(t, z)[1]
 
     ev_stall.terminal = True
     ev_stall.direction = -1.0
@@ -156,10 +158,10 @@ def _quasi_static(prob, t0, pos, work, t_end, rtol, s_slow, s0=0.0, u0=None):
                 te = sol.t_events[i][0]
                 z = sol.y_events[i][0]
                 break
-    u = slaved(te, z[3])[0]
+    u = slaved(te, z)[0]
     rows = []
     for tt, zz in zip(sol.t[1:], sol.y[:, 1:].T):
-        uu = slaved(tt, zz[3])[0]
+        uu = slaved(tt, zz)[0]
         rows.append(np.concatenate([[tt, zz[0]], zz[1:4], uu, zz[4:6]]))
     rows[-1] = np.concatenate([[te, z[0]], z[1:4], u, z[4:6]])
     return te, z[1:4].copy(), z[4:6].copy(), max(float(z[0]), 0.0), u, reason, rows
@@ -172,7 +174,7 @@ def _friction_fun(prob, phi, t):
 def _knots_nat(prob, t0, t_end):
     """Sample times of piecewise-linear loads and tilts in (t0, t_end], natural units."""
     times = set()
-    for obj in (prob.load, prob.incline):
+    for obj in (prob.load, prob.incline, *prob.springs):
         if obj is not None:
             times.update(tk / prob.t_unit for tk in obj.knots)
     return sorted(tk for tk in times if t0 < tk < t_end)
@@ -184,12 +186,19 @@ def _exact_at_knots(prob):
     A piecewise-linear load on a fixed plane is affine in t between knots (the body is at
     rest, φ fixed), so the gauge γ of the convex set C at it is convex there and exceeds 1
     somewhere in a segment only if it does at an end. A piecewise-linear tilt with no
-    other load gives γ = tan α(t) γ(d), monotone between knots.
+    other load gives γ = tan α(t) γ(d), monotone between knots. A spring of zero rest
+    length without a dashpot (:mod:`slidespin.motion.springs`) pulls a stuck body with a
+    force affine in t between the knots of its anchor's path, so it keeps this property.
     """
     load, inc = prob.load, prob.incline
+    springs_affine = all(sp.rest_length == 0.0 and sp.damping == 0.0 for sp in prob.springs)
+    if not springs_affine:
+        return False
     if inc is None or inc.is_constant:
-        return load is not None and load.is_piecewise_linear
-    return load is None and inc.knots != ()
+        if load is None:
+            return bool(prob.springs)
+        return load.is_piecewise_linear
+    return load is None and not prob.springs and inc.knots != ()
 
 
 def default_scan_step(duration: float) -> float:
@@ -432,6 +441,7 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
                 # closed-form tail of the approach to rest: t += s/|u·X|
                 u = ye[0:3] / np.linalg.norm(ye[0:3])
                 ax, ay, am = prob.friction_acc(u[0], u[1], u[2], ye[7], ye[4])
+                prob.hold_at(ye[5:8])
                 bx, by, bm = prob.b(ye[4], ye[7])
                 rate = -(u[0] * (ax + bx) + u[1] * (ay + by) + u[2] * (am + bm))
                 s = math.exp(ye[3])

@@ -72,6 +72,7 @@ from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import (
     LOADED_ENDINGS as LOADED_ENDINGS,  # re-exported (older imports)
 )
+from slidespin.motion.springs import Spring, split_loads
 from slidespin.motion.state import State
 
 __all__ = [
@@ -105,7 +106,7 @@ def simulate_loaded(
     body: Body,
     friction: FrictionTensor,
     initial_state: State,
-    load: Load | None = None,
+    load: Load | Spring | list | tuple | None = None,
     incline: Incline | None = None,
     t_end: float | None = None,
     g: float = 9.81,
@@ -127,8 +128,11 @@ def simulate_loaded(
         The body and its friction tensor.
     initial_state : State
         Initial position, angle and velocities (SI).
-    load : Load or None
-        Applied force and torque, constant or functions of time.
+    load : Load, Spring, a list of them, or None
+        Applied force and torque, constant or functions of time; a
+        :class:`~slidespin.Spring` to an anchor on a prescribed path (a force that depends on
+        the body's position and velocity, MODEL §14), alone or in a list with other loads
+        and springs (their wrenches add; springs run on the Python path).
     incline : Incline or None
         Tilted plane: normal load m g cos α, downhill pull m g sin α. The tilt may vary in
         time (``Incline(angle=callable)`` or :meth:`Incline.piecewise_linear`): then both
@@ -218,8 +222,7 @@ def simulate_loaded(
         raise ValueError(
             f"initial_state = {initial_state!r} is invalid; valid values: a slidespin.State"
         )
-    if load is not None and not isinstance(load, Load):
-        raise ValueError(f"load = {load!r} is invalid; valid values: a slidespin.Load or None")
+    time_load, springs = (None, ()) if load is None else split_loads(load)
     if incline is not None and not isinstance(incline, Incline):
         raise ValueError(
             f"incline = {incline!r} is invalid; valid values: a slidespin.Incline or None"
@@ -227,9 +230,10 @@ def simulate_loaded(
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     method = v.choice("method", method, METHODS)
-    prob = _Problem(body, friction, load, incline, g)
+    prob = _Problem(body, friction, time_load, incline, g, springs)
+    prob.hold_at((initial_state.x / prob.a, initial_state.y / prob.a))
     prob.b(0.0, initial_state.phi)  # the load's range, before any work
-    tab = load_table(prob)
+    tab = None if springs else load_table(prob)
     if method == "compiled" and tab is None:
         raise ValueError(
             f"method = 'compiled' is invalid for load = {_short(load)} and incline = "
@@ -306,6 +310,7 @@ def simulate_loaded(
         speed = float(np.linalg.norm(vel))
         from_rest = speed == 0.0
         if from_rest:
+            prob.hold_at(pos)
             # ---- at rest: does static friction hold? ----
             g_here = prob.gauge(t, pos[2])
             if g_here <= 1.0 + GAUGE_TOL:
@@ -465,8 +470,8 @@ def _check_knots(prob, t_end, phi):
     where each profile is largest (the extremes of a piecewise-linear load), the load is
     checked as every evaluation checks it (:meth:`_Problem.b`, which raises a ValueError)."""
     load = prob.load
-    if load is None or load.is_constant:
-        return
+    if load is None or load.is_constant or not isinstance(load, Load):
+        return  # (several loads, or springs, are checked as they are evaluated)
     mg = prob.body.mass * prob.g
     for col, scale in ((load.force, mg), (load.torque, mg * prob.a)):
         if not isinstance(col, Profile):

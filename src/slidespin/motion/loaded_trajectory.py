@@ -22,6 +22,7 @@ from slidespin.contact.incline import Incline
 from slidespin.motion._report import _html_table
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import status_message
+from slidespin.motion.springs import Spring
 from slidespin.motion.state import State
 
 __all__ = ["LoadedTrajectory"]
@@ -87,7 +88,7 @@ class LoadedTrajectory:
     body: Body = field(repr=False)
     friction: FrictionTensor = field(repr=False)
     initial_state: State = field(repr=False)
-    load: Load | None = field(default=None, repr=False)
+    load: Load | Spring | list | tuple | None = field(default=None, repr=False)
     incline: Incline | None = field(default=None, repr=False)
     g: float = 9.81
     message: str = ""

@@ -39,6 +39,7 @@ from slidespin.motion._law_motion import simulate_law
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES
+from slidespin.motion.springs import Spring
 from slidespin.motion.state import State
 from slidespin.motion.trajectory import Trajectory
 
@@ -126,7 +127,7 @@ def simulate(
     *,
     max_steps: int = ...,
     max_step: float | None = ...,
-    load: Load,
+    load: Load | Spring | list | tuple,
     incline: Incline | None = ...,
     t_end: float | None = ...,
     scan_step: float | None = ...,
@@ -145,7 +146,7 @@ def simulate(
     *,
     max_steps: int = ...,
     max_step: float | None = ...,
-    load: Load | None = ...,
+    load: Load | Spring | list | tuple | None = ...,
     incline: Incline,
     t_end: float | None = ...,
     scan_step: float | None = ...,
@@ -164,7 +165,7 @@ def simulate(
     *,
     max_steps: int = ...,
     max_step: float | None = ...,
-    load: Load | None = ...,
+    load: Load | Spring | list | tuple | None = ...,
     incline: Incline | None = ...,
     t_end: float,
     scan_step: float | None = ...,
@@ -183,7 +184,7 @@ def simulate(
     *,
     max_steps: int = ...,
     max_step: float | None = ...,
-    load: Load | None = ...,
+    load: Load | Spring | list | tuple | None = ...,
     incline: Incline | None = ...,
     t_end: float | None = ...,
     scan_step: float | None = ...,
@@ -202,7 +203,7 @@ def simulate(
     *,
     max_steps: int = ...,
     max_step: float | None = ...,
-    load: Load | None = ...,
+    load: Load | Spring | list | tuple | None = ...,
     incline: Incline | None = ...,
     t_end: float | None = ...,
     scan_step: float | None = ...,
@@ -220,7 +221,7 @@ def simulate(
     *,
     max_steps: int = 200_000,
     max_step: float | None = None,
-    load: Load | None = None,
+    load: Load | Spring | list | tuple | None = None,
     incline: Incline | None = None,
     t_end: float | None = None,
     scan_step: float | None = None,
@@ -257,11 +258,12 @@ def simulate(
         0.05, about 1000 points), not more accuracy. By default only the integrator's own
         steps are recorded (about 40 for the demo), which is enough for the stop values.
 
-    load : Load, optional
+    load : Load, Spring or a list of them, optional
         Applied force and torque (constant, tabulated, or functions of time:
         :mod:`slidespin.motion.loads`; a Python function is about 70 times slower than the same
         load tabulated with :meth:`~slidespin.motion.loads.Load.piecewise_linear`, see
-        :class:`~slidespin.motion.loads.Load`).
+        :class:`~slidespin.motion.loads.Load`); a :class:`~slidespin.Spring` to an anchor on a
+        prescribed path (:mod:`slidespin.motion.springs`), alone or in a list with loads.
     incline : Incline, optional
         A tilted plane: normal load m g cos α, downhill pull m g sin α.
     t_end : float, optional
