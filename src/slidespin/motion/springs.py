@@ -182,7 +182,7 @@ class Spring:
         return (qx, qy, rx * qy - ry * qx)
 
 
-def split_loads(load: object) -> tuple[Load | None, tuple[Spring, ...]]:
+def split_loads(load: object) -> tuple[Load | LoadSum | None, tuple[Spring, ...]]:
     """(the time-dependent loads as one :class:`~slidespin.Load` or None, the springs) of a
     ``load=`` argument: a Load, a Spring, or a list or tuple of them. Several Loads are
     summed (:class:`LoadSum`)."""
