@@ -18,7 +18,9 @@ c to each ellipse; the directions to its centre and ±90° from it; graded break
 vertices of an edge that passes near c, as for user maps, :mod:`slidespin.contact._map_wrench`).
 Each panel gets ``N_OUT`` Gauss–Legendre nodes in u with ψ = ψa + (ψb − ψa)(1 − cos πu)/2 and
 is bisected until its halves agree with it to ``tol`` × width/2π (absolute, in units of the
-load and load × extent). Each ray interval is split at the radii |ω|⁻¹ × the law's break
+load and load × extent; or to 1e-14 of the panel's own size, the floor round-off leaves), at
+most ``_MAX_SPLITS`` times per wrench (the panels left then count
+as missed, and the caller reports it). Each ray interval is split at the radii |ω|⁻¹ × the law's break
 speeds (a table's knots; vs × 2^k for Stribeck), and each piece gets ``N_IN`` graded
 Gauss–Legendre nodes (t = (1 − cos πs)/2: the √d and 1/√d rims of Hertz and Boussinesq become
 smooth). A ray that starts at c (the centre inside the patch) under a law singular at zero
@@ -53,6 +55,9 @@ N_IN = 20
 N_CHECK = 14
 N_GEOM = 14
 _MAX_LEVELS = 44
+#: most bisections per wrench: beyond, every panel left is taken as it is and counted as
+#: missed (a target below round-off would otherwise bisect without end)
+_MAX_SPLITS = 20000
 _MAX_GRADED = 60
 
 
@@ -163,15 +168,43 @@ def _crossings(edges, conics, cx, cy, ex, ey, out):
 
 
 @jit
-def _piece(pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, r0, r1, us, ws, acc):
-    """Add ∫ p g ρ (1, r − r_G) dρ over [r0, r1] with the rule (us, ws) to ``acc``."""
-    ln = r1 - r0
+def _piece(pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, r0, r1, us, ws, acc, rim):
+    """Add ∫ p g ρ (1, r − r_G) dρ over [r0, r1] with the rule (us, ws) to ``acc``.
+
+    For the Boussinesq and Hertz laws of an ellipse (``rim`` = (ρ₁, ρ₂, A): the ray's two
+    crossings of the ellipse and 1 − q = A (ρ − ρ₁)(ρ₂ − ρ) on it) the rule is applied in θ,
+    ρ = ρ_m + h sin θ (ρ_m, h the chord's mid-point and half-length): p dρ is then smooth,
+    (c/√A) dθ and c √A h² cos²θ dθ, however close [r0, r1] comes to the rim."""
+    if pcode == 0:
+        ln = r1 - r0
+        for j in range(us.size):
+            rho = r0 + ln * us[j]
+            p = _density(pcode, pp, cx + rho * ex, cy + rho * ey)
+            if p == 0.0:
+                continue
+            w = ln * ws[j] * p * speed_factor(lcode, lp, aom * rho) * rho
+            acc[0] += w
+            acc[1] += w * (dgx + rho * ex)
+            acc[2] += w * (dgy + rho * ey)
+        return
+    rho1, rho2, qa = rim[0], rim[1], rim[2]
+    mid = 0.5 * (rho1 + rho2)
+    half = 0.5 * (rho2 - rho1)
+    if not half > 0.0:
+        return
+    t0 = math.asin(min(1.0, max(-1.0, (r0 - mid) / half)))
+    t1 = math.asin(min(1.0, max(-1.0, (r1 - mid) / half)))
+    span = t1 - t0
+    sq = math.sqrt(qa)
     for j in range(us.size):
-        rho = r0 + ln * us[j]
-        p = _density(pcode, pp, cx + rho * ex, cy + rho * ey)
-        if p == 0.0:
-            continue
-        w = ln * ws[j] * p * speed_factor(lcode, lp, aom * rho) * rho
+        th = t0 + span * us[j]
+        rho = mid + half * math.sin(th)
+        if pcode == 1:  # Boussinesq: p dρ = c/√(A (ρ − ρ₁)(ρ₂ − ρ)) dρ = (c/√A) dθ
+            pd = pp[4] / sq
+        else:  # Hertz: c √A h² cos²θ dθ
+            ct = math.cos(th)
+            pd = pp[4] * sq * half * half * ct * ct
+        w = span * ws[j] * pd * speed_factor(lcode, lp, aom * rho) * rho
         acc[0] += w
         acc[1] += w * (dgx + rho * ex)
         acc[2] += w * (dgy + rho * ey)
@@ -205,6 +238,10 @@ def _ray(
     us, ws = (_UI, _WI) if n_in == N_IN else (_UC, _WC)
     k = _crossings(edges, conics, cx, cy, ex, ey, cross)
     dgx, dgy = cx - gx, cy - gy
+    rim = np.zeros(3)
+    if pcode != 0 and k >= 2:  # the ellipse of a Boussinesq or Hertz law: (ρ₁, ρ₂, A)
+        rim[0], rim[1] = cross[0], cross[1]
+        rim[2] = (ex / conics[0, 2]) ** 2 + (ey / conics[0, 3]) ** 2
     closed = lcode == 1 and pcode == 0 and n_in == N_IN
     if closed:  # a power law on a linear pressure: p g ρ is a sum of powers of ρ
         q = lp[0]
@@ -255,6 +292,7 @@ def _ray(
                         _UG,
                         _WG,
                         acc,
+                        rim,
                     )
                     top *= 0.5
                 # [0, top] in closed form, leading term
@@ -278,12 +316,32 @@ def _ray(
                 while 0.5 * (top - lo) > lo:
                     mid = lo + 0.5 * (top - lo)
                     _piece(
-                        pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, mid, top, _UG, _WG, acc
+                        pcode,
+                        pp,
+                        cx,
+                        cy,
+                        dgx,
+                        dgy,
+                        ex,
+                        ey,
+                        lcode,
+                        lp,
+                        aom,
+                        mid,
+                        top,
+                        _UG,
+                        _WG,
+                        acc,
+                        rim,
                     )
                     top = mid
-                _piece(pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, lo, top, _UG, _WG, acc)
+                _piece(
+                    pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, lo, top, _UG, _WG, acc, rim
+                )
             else:
-                _piece(pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, lo, hi, us, ws, acc)
+                _piece(
+                    pcode, pp, cx, cy, dgx, dgy, ex, ey, lcode, lp, aom, lo, hi, us, ws, acc, rim
+                )
             lo = hi
             if lo >= b:
                 break
@@ -468,6 +526,7 @@ def _polar(
     done_lo.pop()
     done_hi.pop()
     missed = 0
+    splits = 0
     two_pi = 2.0 * math.pi
     while top > 0:
         top -= 1
@@ -525,8 +584,14 @@ def _polar(
             abs(left[1] + right[1] - whole[1]),
             abs(left[2] + right[2] - whole[2]) / ext,
         )
-        if diff <= tol * (hi - lo) / two_pi or hi - lo < 1e-13 or lev >= _MAX_LEVELS:
-            if diff > tol * (hi - lo) / two_pi and hi - lo >= 1e-13:
+        splits += 1
+        spent = splits >= _MAX_SPLITS
+        # the target, or round-off: halves that agree to 1e-14 of the panel's size are all
+        # that floating point can tell apart
+        mag = max(abs(whole[0]), abs(whole[1]), abs(whole[2]) / ext)
+        target = max(tol * (hi - lo) / two_pi, 1e-14 * mag)
+        if diff <= target or hi - lo < 1e-13 or lev >= _MAX_LEVELS or spent:
+            if diff > target and hi - lo >= 1e-13:
                 missed += 1
             for c in range(3):
                 total[c] += left[c] + right[c]

@@ -42,7 +42,7 @@ from slidespin.contact._kernel_blade import blade_wrench_array
 from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_array
 from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
 from slidespin.contact._map_wrench import MAP_TOL, MAP_TOL_RANGE, map_prepare, map_wrench_world
-from slidespin.contact._speed_wrench import SPEED_TOL, speed_patch, speed_wrench_world
+from slidespin.contact._speed_wrench import speed_patch, speed_tol, speed_wrench_world
 from slidespin.contact.body import Body
 from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.friction import FrictionTensor
@@ -419,7 +419,8 @@ def footprint_wrench(
 def _law_wrench(patch, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
     """The wrench under the tensor's speed law (MODEL §14): ω = 0 exactly as g(|v|) times the
     constant law's wrench, the rest by :mod:`slidespin.contact._kernel_speed` to
-    ``SPEED_TOL`` (absolute, units of the load and load × extent)."""
+    :func:`~slidespin.contact._speed_wrench.speed_tol` (absolute, units of the load and load ×
+    extent: 1e-11 × min(1, |𝔽|))."""
     if isinstance(patch, Blade) or isinstance(pressure, PressureMap):
         raise ValueError(
             f"speed_law = {friction.speed_law!r} is not available on "
@@ -450,6 +451,7 @@ def _law_wrench(patch, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
     spin = ~slide
     if spin.any():
         sp = speed_patch(patch, pressure)
+        tol = speed_tol(friction, sp.pcode)
         f0, f1, m, err = speed_wrench_world(
             sp,
             friction.matrix,
@@ -459,12 +461,12 @@ def _law_wrench(patch, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
             vxa[spin],
             vya[spin],
             oma[spin],
-            SPEED_TOL,
+            tol,
         )
-        if err > 100.0 * SPEED_TOL:  # pragma: no cover - not reached for valid inputs
+        if err > 100.0 * tol:  # pragma: no cover - not reached for valid inputs
             raise RuntimeError(
                 f"friction_wrench: the speed-law quadrature reached only ~{err:.1e} (units of "
-                f"the load and load x extent), not {SPEED_TOL:g}, for {friction!r} on "
+                f"the load and load x extent), not {tol:g}, for {friction!r} on "
                 f"{patch!r}; every input is inside its valid range, so this is a bug in "
                 "slidespin: please report it"
             )

@@ -23,8 +23,10 @@ distance left, s h/((1 + q)|u·Ã|) and s² h/((2 + q)|u·Ã|) for the exponenti
 below 1e-15 of the time and the length unit; these tails are added to the stop. A direction
 of motion that keeps turning once the tails are negligible (by more than 4π: a skewed tensor
 with |f| ≥ |μ|/2, MODEL §7) ends the run with the ending ``spiral`` (no ϑ*, no β*). A
-direction still moving after ln s has fallen by 720 (s/s₀ ~ 1e-313) is reported
-``marginal``: its ending is the direction reached, not a converged limit.
+direction still moving after ln s has fallen by 720 (s/s₀ ~ 1e-313), or by 150 more once
+the tails are negligible, is reported ``marginal`` (an algebraic approach, MODEL §9: a thin
+ring with I* near 1): its ending, β* and ϑ* are the direction reached, not a converged
+limit; t_stop and the stop pose are converged.
 
 Steps: scipy's DOP853 (rtol = atol = ``rtol`` in natural units), one wrench of
 :mod:`slidespin.contact._kernel_speed` per stage (1–10 ms): a free run takes seconds, not
@@ -40,9 +42,9 @@ from scipy.integrate import DOP853
 
 from slidespin.contact._engine import TwistWrench
 from slidespin.contact._speed_wrench import (
-    SPEED_TOL,
     law_arrays,
     speed_patch,
+    speed_tol,
     speed_wrench_one,
 )
 from slidespin.contact.speed_laws import PowerLaw
@@ -61,6 +63,9 @@ DIRECTION_TOL = 1e-10
 SPIRAL_TURN = 4.0 * math.pi
 #: a fall of ln s by this much without convergence ends the run (``marginal``)
 LN_S_SPAN = 720.0
+#: once the tails are negligible, the direction gets this much further fall of ln s (s
+#: another e^150 ≈ 1e65 times smaller) to converge before the run ends ``marginal``
+LN_S_AFTER = 150.0
 
 
 class _LawFlow:
@@ -78,6 +83,9 @@ class _LawFlow:
         self.tensor = friction.matrix
         self.body_frame = friction.frame == "body"
         self.args = law_arrays(self.law)
+        # the wrench's target relative to the tensor (1e-11 |𝔽|): the adaptive rule's choices
+        # are then noise below the step control's tolerance
+        self.tol = speed_tol(friction, self.sp.pcode)
         self.n_wrench = 0
         self.worst = 0.0
 
@@ -97,7 +105,7 @@ class _LawFlow:
             gv = float(self.law.factor(math.hypot(vx, vy))) if (vx or vy) else 1.0
             return np.array([fx * gv, fy * gv, m * gv / self.k])
         fx, fy, m, err = speed_wrench_one(
-            self.sp, self.tensor, self.body_frame, self.args, phi, vx, vy, om, SPEED_TOL
+            self.sp, self.tensor, self.body_frame, self.args, phi, vx, vy, om, self.tol
         )
         self.worst = max(self.worst, err)
         return np.array([fx, fy, m / self.a / self.k])
@@ -141,6 +149,7 @@ def simulate_law(body, friction, initial_state: State, g: float, rtol: float, ma
     spiral = False
     turn = math.nan  # how far the direction of v has turned since the tails became negligible
     theta_prev = math.atan2(y0[1], y0[0])
+    ln_small = math.nan  # ln s where the tails first became negligible
     while True:
         if steps >= max_steps:
             status = "max_steps"
@@ -175,7 +184,9 @@ def simulate_law(body, friction, initial_state: State, g: float, rtol: float, ma
             tail_t, tail_path = rem_t, rem_x * math.hypot(u[0], u[1])
             tail_x, tail_y, tail_phi = rem_x * u[0], rem_x * u[1], rem_x * u[2] / k
             break
-        if y[3] < math.log(speed0) - LN_S_SPAN:
+        if small and math.isnan(ln_small):
+            ln_small = y[3]
+        if y[3] < math.log(speed0) - LN_S_SPAN or y[3] < ln_small - LN_S_AFTER:
             status = "stopped" if moving <= max(DIRECTION_TOL, 10.0 * rtol) else "marginal"
             break
     rows_a = np.array(rows)
