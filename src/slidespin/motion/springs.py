@@ -27,9 +27,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from slidespin import _validate as v
-from slidespin.motion.loads import MAX_KNOTS, Load
+from slidespin.contact.body import Body
+from slidespin.contact.incline import Incline
+from slidespin.motion.loads import MAX_KNOTS, Load, applied_wrench
 
-__all__ = ["Spring", "split_loads"]
+__all__ = ["LoadSum", "Spring", "applied_wrench_state", "split_loads"]
 
 #: stiffness [N/m] and damping [N s/m] ranges
 STIFFNESS = (1e-9, 1e12)
@@ -232,3 +234,28 @@ class LoadSum:
             a, b, c = ld.wrench(t, phi, mass_centre)
             qx, qy, m = qx + a, qy + b, m + c
         return (qx, qy, m)
+
+
+def applied_wrench_state(
+    body: Body,
+    t: float,
+    state: tuple[float, float, float, float, float, float],
+    load: object = None,
+    incline: Incline | None = None,
+    g: float = 9.81,
+) -> tuple[float, float, float]:
+    """Total applied wrench (Qx, Qy, moment about G) [N, N, N m] of loads, springs and a
+    slope, with the body in ``state`` = (x, y, φ, vx, vy, ω) (SI) at time t [s]; ``load``
+    as ``simulate``'s (a Load, a Spring, a list of them, or None)."""
+    x, y, phi, vx, vy, om = state
+    qx, qy, mz = applied_wrench(body, t, phi, None, incline, g)
+    if load is None:
+        return (qx, qy, mz)
+    time_load, springs = split_loads(load)
+    if time_load is not None:
+        a, b, c = time_load.wrench(t, phi, body.mass_centre)
+        qx, qy, mz = qx + a, qy + b, mz + c
+    for spring in springs:
+        a, b, c = spring.wrench(t, x, y, phi, vx, vy, om, body.mass_centre)
+        qx, qy, mz = qx + a, qy + b, mz + c
+    return (qx, qy, mz)

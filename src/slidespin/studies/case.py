@@ -1,7 +1,9 @@
 """Cases described in TOML files (``slidespin simulate CASE.toml``).
 
 A case file has the tables ``[patch]``, ``[pressure]``, ``[friction]``, ``[body]``,
-``[initial]`` and optionally ``[solver]``, ``[load]``, ``[incline]`` and ``[pusher]`` (a finger
+``[initial]`` and optionally ``[solver]``, ``[load]``, ``[spring]`` (MODEL §14,
+:mod:`slidespin.studies.law_tables`, which also reads the speed-law keys of ``[friction]``),
+``[incline]`` and ``[pusher]`` (a finger
 or a flat pusher moved along a path, MODEL §13: :mod:`slidespin.studies.pusher_table`; see
 ``examples/*.toml``). The patch is an ellipse
 or a circle (the paper's), or a footprint (MODEL §10): ``shape = "polygon"`` (``vertices =
@@ -47,7 +49,14 @@ from slidespin.contact.pressure import pressure_law_from_name
 from slidespin.contact.shapes import Annulus, Circle, Disk, Pads, Polygon, Rectangle
 from slidespin.motion.loads import Load
 from slidespin.motion.pushers import LinePusher, PointPusher
+from slidespin.motion.springs import Spring
 from slidespin.motion.state import State
+from slidespin.studies.law_tables import (
+    LAW_KEYS,
+    SPRING_KEYS,
+    speed_law_from_table,
+    spring_from_table,
+)
 from slidespin.studies.load_tables import (
     INCLINE_KEYS,
     LOAD_KEYS,
@@ -141,11 +150,12 @@ _TABLES = {
         "pads",
     },
     "pressure": {"law", "xi_c", "eta_c"},
-    "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg"},
+    "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg", *LAW_KEYS},
     "body": {"mass", "moment_of_inertia", "inertia_ratio"},
     "initial": set(INITIAL_KEYS) | set(INITIAL_ALIASES),
     "solver": {"g", "rtol", "max_steps", "t_end"},
     "load": set(LOAD_KEYS),
+    "spring": set(SPRING_KEYS),
     "incline": set(INCLINE_KEYS),
     "pusher": set(PUSHER_KEYS),
 }
@@ -157,7 +167,8 @@ class Case:
     """A complete simulation case: body, friction, initial state and solver settings.
 
     ``load``, ``incline`` and ``t_end`` are the ``[load]``, ``[incline]`` and ``[solver] t_end``
-    of the file (MODEL §11); ``pusher`` and ``outline`` its ``[pusher]`` (MODEL §13: a
+    of the file (MODEL §11; with a ``[spring]``, ``load`` is the Spring, or [Load, Spring]);
+    ``pusher`` and ``outline`` its ``[pusher]`` (MODEL §13: a
     :class:`~slidespin.motion.pushers.PointPusher` or
     :class:`~slidespin.motion.pushers.LinePusher`, and the outline it touches, None for the
     patch's). A pushed case always has ``t_end``: the file's, or the path's last time.
@@ -170,7 +181,7 @@ class Case:
     rtol: float = 1e-10
     max_steps: int = 200_000
     name: str = ""
-    load: Load | None = None
+    load: Load | Spring | list | None = None
     incline: Incline | None = None
     t_end: float | None = None
     pusher: PointPusher | LinePusher | None = None
@@ -303,6 +314,8 @@ def case_from_dict(data: dict) -> Case:
         f=fr.get("f", 0.0),
         frame=fr.get("frame", "plane"),
         angle=_angle(fr, "friction", "angle"),
+        static=fr.get("static", 1.0),
+        speed_law=speed_law_from_table(fr),
     )
 
     bd = data["body"]
@@ -334,6 +347,9 @@ def case_from_dict(data: dict) -> Case:
         )
     name = check_name(data.get("name", ""))
     load = load_from_table(data["load"]) if "load" in data else None
+    if "spring" in data:  # a spring alone, or with the [load] (MODEL §14)
+        spring = spring_from_table(data["spring"])
+        load = spring if load is None else [load, spring]
     incline = incline_from_table(data["incline"]) if "incline" in data else None
     t_end = None
     if "t_end" in so:

@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from slidespin.motion.loads import applied_wrench
+from slidespin.motion.springs import applied_wrench_state
 from slidespin.viz._mpl import _cmap, _figure, _grid, _rect
 
 __all__ = [
@@ -274,11 +274,14 @@ def applied_load_history(traj, n: int = LOAD_SAMPLES):
     edges = [b for _, a, b in traj.phases] + [a for _, a, b in traj.phases]
     t = np.unique(np.concatenate((np.linspace(0.0, t_rec[-1], n), edges, t_rec[-1:])))
     t = t[(t >= 0.0) & (t <= t_rec[-1])]
-    phi = np.interp(t, t_rec, np.asarray(traj.phi, dtype=float))
+    cols = [
+        np.interp(t, t_rec, np.asarray(getattr(traj, name), dtype=float))
+        for name in ("x", "y", "phi", "vx", "vy", "omega")
+    ]  # a spring's force depends on the state, interpolated between the recorded rows
     out = np.array(
         [
-            applied_wrench(traj.body, ti, pi, traj.load, traj.incline, traj.g)
-            for ti, pi in zip(t, phi)
+            applied_wrench_state(traj.body, ti, st, traj.load, traj.incline, traj.g)
+            for ti, st in zip(t, zip(*cols))
         ],
         dtype=float,
     ).reshape(-1, 3)
