@@ -346,7 +346,7 @@ def case_from_dict(data: dict) -> Case:
             f"integer >= 1 and <= {MAX_STEPS_LIMIT}"
         )
     name = check_name(data.get("name", ""))
-    load = load_from_table(data["load"]) if "load" in data else None
+    load: Load | Spring | list | None = load_from_table(data["load"]) if "load" in data else None
     if "spring" in data:  # a spring alone, or with the [load] (MODEL §14)
         spring = spring_from_table(data["spring"])
         load = spring if load is None else [load, spring]
