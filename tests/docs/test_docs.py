@@ -76,6 +76,7 @@ PUBLIC_MODULES = (
     # studies
     "slidespin.studies",
     "slidespin.studies.case",
+    "slidespin.studies.law_tables",
     "slidespin.studies.load_tables",
     "slidespin.studies.pusher_table",
     "slidespin.studies.sweep",

@@ -32,7 +32,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
 
-__all__ = ["PowerLaw", "SpeedLaw", "SpeedTable", "Stribeck", "LAW_POWER", "LAW_STRIBECK"]
+__all__ = ["PowerLaw", "SpeedLaw", "SpeedTable", "Stribeck"]
 
 LAW_POWER, LAW_STRIBECK, LAW_TABLE = 1, 2, 3
 #: exponent q of a power law: 0 ≤ q ≤ 0.95 (q → 1 makes the traction at the

@@ -31,7 +31,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.incline import Incline
 from slidespin.motion.loads import MAX_KNOTS, Load, applied_wrench
 
-__all__ = ["LoadSum", "Spring", "applied_wrench_state", "split_loads"]
+__all__ = ["LoadSum", "Spring", "applied_wrench_state", "has_springs", "split_loads"]
 
 #: stiffness [N/m] and damping [N s/m] ranges
 STIFFNESS = (1e-9, 1e12)
@@ -216,24 +216,34 @@ class LoadSum:
 
     @property
     def is_constant(self) -> bool:
+        """True when every load is constant."""
         return all(ld.is_constant for ld in self.loads)
 
     @property
     def is_piecewise_linear(self) -> bool:
-        return False  # no single table: the Python path runs them
+        """False: there is no single table of several loads (the Python path runs them)."""
+        return False
 
     @property
     def knots(self) -> tuple[float, ...]:
+        """The union of the loads' sample times [s]."""
         return tuple(sorted({t for ld in self.loads for t in ld.knots}))
 
     def wrench(
         self, t: float, phi: float = 0.0, mass_centre: tuple[float, float] = (0.0, 0.0)
     ) -> tuple[float, float, float]:
+        """The sum of the loads' wrenches (Qx, Qy, moment about G) [N, N, N m]."""
         qx = qy = m = 0.0
         for ld in self.loads:
             a, b, c = ld.wrench(t, phi, mass_centre)
             qx, qy, m = qx + a, qy + b, m + c
         return (qx, qy, m)
+
+
+def has_springs(load: object) -> bool:
+    """True if a ``load=`` argument holds a :class:`Spring`."""
+    items = load if isinstance(load, (list, tuple)) else [load]
+    return any(isinstance(item, Spring) for item in items)
 
 
 def applied_wrench_state(

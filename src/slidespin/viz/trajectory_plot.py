@@ -17,7 +17,7 @@ import math
 
 import numpy as np
 
-from slidespin.motion.springs import applied_wrench_state
+from slidespin.motion.springs import applied_wrench_state, has_springs
 from slidespin.viz._mpl import _cmap, _figure, _grid, _rect
 
 __all__ = [
@@ -274,10 +274,15 @@ def applied_load_history(traj, n: int = LOAD_SAMPLES):
     edges = [b for _, a, b in traj.phases] + [a for _, a, b in traj.phases]
     t = np.unique(np.concatenate((np.linspace(0.0, t_rec[-1], n), edges, t_rec[-1:])))
     t = t[(t >= 0.0) & (t <= t_rec[-1])]
+    # a spring's force depends on the state, interpolated between the recorded rows; other
+    # loads need the angle only
+    names = ("x", "y", "phi", "vx", "vy", "omega")
     cols = [
         np.interp(t, t_rec, np.asarray(getattr(traj, name), dtype=float))
-        for name in ("x", "y", "phi", "vx", "vy", "omega")
-    ]  # a spring's force depends on the state, interpolated between the recorded rows
+        if name == "phi" or has_springs(traj.load)
+        else np.zeros_like(t)
+        for name in names
+    ]
     out = np.array(
         [
             applied_wrench_state(traj.body, ti, st, traj.load, traj.incline, traj.g)
