@@ -185,30 +185,10 @@ FAR_TABLE_HANG = pytest.mark.xfail(
 )
 
 
-#: Boussinesq pressure on a non-circular ellipse under a law: the library's adaptive check
-#: misses by ~4e-5 there (a fault this file found, not yet fixed), so it refuses the case
-BOUSS_ELONGATED = pytest.mark.xfail(
-    strict=True,
-    raises=ValueError,
-    reason="library refuses a speed law with Boussinesq pressure on a non-circular ellipse "
-    "(known fault: its quadrature check fails by ~4e-5)",
-)
-#: one Hertz case, the ICR 3 semi-axes out under a power law: the check flags ~5e-8
-HERTZ_OUT3 = pytest.mark.xfail(
-    strict=True,
-    raises=RuntimeError,
-    reason="library fault: the speed-law quadrature's check flags ~5e-8 (Hertz, ICR at 3 a, "
-    "power law), and friction_wrench raises",
-)
-
-
 def _marks(pk, lk, ik="inside", ek="b/a=0.5"):
-    """Known library faults (the power law under Boussinesq/Hertz and the Boussinesq hangs
-    were fixed after this file found them)."""
-    if pk == "boussinesq" and ek == "b/a=0.5":
-        return [BOUSS_ELONGATED]
-    if pk == "hertz" and ik == "out3" and lk == "power0.5":
-        return [HERTZ_OUT3]
+    """Known library faults: none left (the power law under Boussinesq/Hertz, the
+    Boussinesq hangs and the rim sliver of an elongated Boussinesq ellipse were fixed after
+    this file found them)."""
     return []
 
 
@@ -467,12 +447,6 @@ HANG_CASES = {
 }
 
 
-@pytest.mark.xfail(
-    strict=True,
-    raises=subprocess.CalledProcessError,
-    reason="the call exits with the library's ValueError: Boussinesq pressure on a "
-    "non-circular ellipse is refused with a speed law (known fault, see BOUSS_ELONGATED)",
-)
 @pytest.mark.parametrize("case", list(HANG_CASES))
 def test_elliptic_engine_returns(case):
     """Run the call in a subprocess with a time limit, then compare with the reference."""

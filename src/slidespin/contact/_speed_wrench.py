@@ -41,17 +41,10 @@ SPEED_TOL = 1e-11
 _AREA_NODES = 24
 
 
-def speed_tol(friction, pcode: int = P_LINEAR) -> float:
+def speed_tol(friction) -> float:
     """The kernel's target for ``friction``: ``SPEED_TOL`` relative to the tensor's norm when
-    that is below 1 (the wrench scales with it), never below 1e-15 (round-off).
-
-    For the Boussinesq and Hertz laws (``pcode``) the target is 30 times looser, 3e-10
-    |𝔽|: below about 1e-10 the adaptive angular rule can settle, for some states, on a
-    value wrong by ~1e-8 that its own check then flags (found by the independent reference
-    of ``tests/references/speed_law_reference.py``; the cause is not yet found). At 3e-10
-    the tests' reference agrees to ≲ 5e-11."""
-    tol = max(1e-15, SPEED_TOL * min(1.0, friction.norm))
-    return tol if pcode == P_LINEAR else 30.0 * tol
+    that is below 1 (the wrench scales with it), never below 1e-15 (round-off)."""
+    return max(1e-15, SPEED_TOL * min(1.0, friction.norm))
 
 
 @dataclass(frozen=True)
@@ -93,13 +86,6 @@ def speed_patch(patch, pressure) -> SpeedPatch:
     ):
         if isinstance(patch, Ellipse):
             ox, oy, a, b = 0.0, 0.0, patch.a, patch.b
-            if isinstance(pressure, BoussinesqPressure) and a != b:
-                raise ValueError(
-                    f"pressure = BoussinesqPressure() on patch = {patch!r} is not available "
-                    "with a speed law yet (its quadrature misses its check there, a known "
-                    "fault); valid values: the Boussinesq law on a circle (a = b), or the "
-                    "uniform, linear or Hertz law on this ellipse"
-                )
         else:
             (ox, oy), a, b = patch.centre, patch.radius, patch.radius
         conics = np.array([[ox, oy, a, b, 1.0]])

@@ -451,7 +451,7 @@ def _law_wrench(patch, pressure, friction, vx, vy, omega, phi, load) -> Wrench:
     spin = ~slide
     if spin.any():
         sp = speed_patch(patch, pressure)
-        tol = speed_tol(friction, sp.pcode)
+        tol = speed_tol(friction)
         f0, f1, m, err = speed_wrench_world(
             sp,
             friction.matrix,

@@ -85,7 +85,7 @@ class _LawFlow:
         self.args = law_arrays(self.law)
         # the wrench's target relative to the tensor (1e-11 |𝔽|): the adaptive rule's choices
         # are then noise below the step control's tolerance
-        self.tol = speed_tol(friction, self.sp.pcode)
+        self.tol = speed_tol(friction)
         self.n_wrench = 0
         self.worst = 0.0
 
