@@ -11,6 +11,10 @@ Frames. The paper fixes 𝔽 to the plane (``frame="plane"``). slidespin also of
 fixed to the body (``frame="body"``: skis, scales, textured soles), whose world-frame matrix
 is R(φ) 𝔽 R(φ)ᵀ, and a tensor whose principal axes are turned by ``angle`` from OX (plane) or
 from Cξ (body): 𝔽 → R(angle) 𝔽 R(angle)ᵀ. The skew part f·J is unchanged by any rotation.
+
+Beyond the paper (MODEL §14): ``static`` (μs/μk ≥ 1) scales the set of wrenches the tensor
+holds at rest, and ``speed_law`` (:mod:`slidespin.contact.speed_laws`) multiplies the whole
+tensor by a factor of the local slip speed.
 """
 
 from __future__ import annotations

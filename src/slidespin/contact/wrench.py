@@ -219,6 +219,11 @@ def friction_wrench(
     :func:`footprint_wrench` with the load m g: exact (closed forms, MODEL §10) for
     every motion state, and ``tol`` is not used.
 
+    With a speed law (``FrictionTensor(..., speed_law=...)``, MODEL §14) the traction is
+    −p g(|w|) 𝔽 ŵ and the wrench depends on the speeds themselves: it is computed by the
+    compiled rule of :mod:`slidespin.contact._kernel_speed` to 1e-11 min(1, |𝔽|) of the load
+    (``tol`` and ``map_tol`` are not used). Otherwise:
+
     The wrench depends only on the direction of (vx, vy, a ω): it is homogeneous of degree 0
     (MODEL §2). That direction is formed after scaling by the largest magnitude, so states
     of any finite size (1e-300 … 1e300) give the same wrench as their unit-size copies. At rest (v = ω = 0) static friction is undetermined and a zero wrench is
