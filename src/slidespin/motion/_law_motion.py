@@ -186,6 +186,9 @@ def simulate_law(body, friction, initial_state: State, g: float, rtol: float, ma
             break
         if small and math.isnan(ln_small):
             ln_small = y[3]
+            # the stop time and pose have converged: ``max_step`` (points for plotting) no
+            # longer applies, only the direction's convergence is left to see
+            solver.max_step = math.inf
         if y[3] < math.log(speed0) - LN_S_SPAN or y[3] < ln_small - LN_S_AFTER:
             status = "stopped" if moving <= max(DIRECTION_TOL, 10.0 * rtol) else "marginal"
             break
