@@ -45,6 +45,7 @@ import math
 import numpy as np
 
 from slidespin._jit import jit
+from slidespin.contact.pressure_map import _unit_rule
 
 __all__ = ["FAR", "P_LINEAR", "P_BOUSSINESQ", "P_HERTZ", "speed_factor", "speed_wrench_body"]
 
@@ -61,21 +62,12 @@ _MAX_SPLITS = 20000
 _MAX_GRADED = 60
 
 
-def _rule(n: int, graded: bool) -> tuple[np.ndarray, np.ndarray]:
-    x, w = np.polynomial.legendre.leggauss(n)
-    s = 0.5 * (x + 1.0)
-    ws = 0.5 * w
-    if not graded:
-        return s, ws
-    return 0.5 * (1.0 - np.cos(np.pi * s)), ws * 0.5 * np.pi * np.sin(np.pi * s)
-
-
-_UO, _WO = _rule(N_OUT, False)
-_UI, _WI = _rule(N_IN, True)
-_UC, _WC = _rule(N_CHECK, True)
-_UG, _WG = _rule(10, False)
-_UP, _WP = _rule(N_IN, False)  # plain rules for the θ of an ellipse's rim (smooth there)
-_UPC, _WPC = _rule(N_CHECK, False)
+_UO, _WO = _unit_rule(N_OUT, False)
+_UI, _WI = _unit_rule(N_IN, True)
+_UC, _WC = _unit_rule(N_CHECK, True)
+_UG, _WG = _unit_rule(10, False)
+_UP, _WP = _unit_rule(N_IN, False)  # plain rules for the θ of an ellipse's rim (smooth there)
+_UPC, _WPC = _unit_rule(N_CHECK, False)
 
 
 @jit

@@ -22,7 +22,12 @@ from slidespin.contact.pressure import (
     HertzPressure,
     LinearPressure,
 )
-from slidespin.contact.pressure_map import area_rule, mass_centre, pressure_coefficients
+from slidespin.contact.pressure_map import (
+    _unit_rule,
+    area_rule,
+    mass_centre,
+    pressure_coefficients,
+)
 from slidespin.contact.shapes import Disk
 from slidespin.contact.speed_laws import PowerLaw, Stribeck
 
@@ -64,11 +69,8 @@ class SpeedPatch:
 def _ellipse_rule(ox, oy, a, b, n=_AREA_NODES):
     """Polar area rule on an ellipse, graded towards the rim (√d and 1/√d rims are smooth in
     it): n radii, 2n + 2 angles; returns points and area weights."""
-    x, w = np.polynomial.legendre.leggauss(n)
-    s = 0.5 * (x + 1.0)
-    ws = 0.5 * w
-    r = 0.5 * (1.0 - np.cos(np.pi * s))
-    wr = ws * 0.5 * np.pi * np.sin(np.pi * s) * r
+    r, wr = _unit_rule(n, True)
+    wr = wr * r
     nt = 2 * n + 2
     th = 2.0 * np.pi * np.arange(nt) / nt
     rr, tt = np.meshgrid(r, th, indexing="ij")
