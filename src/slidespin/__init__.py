@@ -60,6 +60,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.contact.shapes import Annulus, Blade, Circle, Disk, Pads, Polygon, Rectangle
     from slidespin.contact.speed_laws import PowerLaw, SpeedTable, Stribeck
     from slidespin.contact.statics import Onset, can_stick, critical_tilt, load_factor, onset
+    from slidespin.contact.tipping import Breakaway, breakaway, pressure_centre
     from slidespin.contact.wrench import Wrench, friction_wrench
     from slidespin.motion.batch import StopResults, simulate_bodies, simulate_cases, simulate_many
     from slidespin.motion.loaded import simulate_loaded
@@ -136,6 +137,9 @@ _HOMES = {
     "Rectangle": "slidespin.contact.shapes",
     "Onset": "slidespin.contact.statics",
     "can_stick": "slidespin.contact.statics",
+    "Breakaway": "slidespin.contact.tipping",
+    "breakaway": "slidespin.contact.tipping",
+    "pressure_centre": "slidespin.contact.tipping",
     "critical_tilt": "slidespin.contact.statics",
     "load_factor": "slidespin.contact.statics",
     "onset": "slidespin.contact.statics",
@@ -200,6 +204,9 @@ __all__ = [
     "Wrench",
     "friction_wrench",
     "can_stick",
+    "Breakaway",
+    "breakaway",
+    "pressure_centre",
     "load_factor",
     "onset",
     "Onset",

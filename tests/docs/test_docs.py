@@ -43,6 +43,8 @@ PUBLIC_MODULES = (
     "slidespin.contact.pressure_map",
     "slidespin.contact.shapes",
     "slidespin.contact.speed_laws",
+    "slidespin.contact.tall",
+    "slidespin.contact.tipping",
     "slidespin.contact.static_set",
     "slidespin.contact.statics",
     "slidespin.contact.wrench",

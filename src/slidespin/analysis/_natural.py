@@ -18,6 +18,7 @@ from slidespin.contact import _engine
 from slidespin.contact._kernel_ellipse import STATUS_OK, wrench_world
 from slidespin.contact._kernel_footprint import wrench_array as fp_wrench_array
 from slidespin.contact._kernel_footprint import wrench_world as fp_wrench_world
+from slidespin.contact.body import require_thin
 
 _WRENCH_TOL = 1e-13  # absolute target of the wrench quadrature (units of m g and m g a)
 
@@ -42,6 +43,7 @@ class _Par(np.ndarray):
 
 def _params(body, friction, tol=_WRENCH_TOL):
     """:meth:`slidespin.Body.engine_params` as one :class:`_Par` (natural units, ℓ = 1)."""
+    require_thin(body, "the terminal analysis and fit")
     par, fe, fc, geo = body.engine_params(friction, tol)
     p = par.view(_Par)
     p.fp = (fe, fc, geo) if body.is_footprint else None

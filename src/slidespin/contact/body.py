@@ -51,7 +51,7 @@ from slidespin.contact.pressure_map import (
 from slidespin.contact.pressure_map import mass_centre as pressure_centroid
 from slidespin.contact.speed_laws import law_is_constant
 
-__all__ = ["Body", "check_body_friction"]
+__all__ = ["Body", "check_body_friction", "require_thin"]
 
 _LAWS = (UniformPressure, LinearPressure, BoussinesqPressure, HertzPressure)
 #: how many friction tensors' :meth:`Body.engine_params` a body keeps (oldest dropped first)
@@ -94,6 +94,17 @@ class Body:
         for a footprint, about its area centroid (for ``Pads`` a plate covering the pads
         only, with no mass between them: give I explicitly for a sled or a chair). For the
         linear law, whose G is off-centre, give I explicitly if the body is not such a plate.
+    height : float, default 0
+        Height h of the mass centre above the plane [m], in [0, 1e6] (MODEL §14; a
+        principal axis of inertia vertical). 0 is the paper's thin body. A tall body shifts
+        its pressure: the friction force, acting in the plane, and loads applied at other
+        heights (``Load(..., height=)``) tilt it, so the pressure centroid moves to
+        r_p = r_G − [h F + Σ (h − h_Q) Q]/P; where the linear law would turn negative the
+        footprint lifts off, and the body tips when r_p reaches the footprint's convex hull
+        (:mod:`slidespin.contact.tall`). Works with the uniform and the linear law on an
+        ellipse or an area footprint (not a ``Blade``: a line contact has no width to resist
+        tipping), in the loaded engine (:func:`slidespin.simulate` takes a tall body on its
+        Python path) and the statics; lift-off needs a footprint of polygons.
 
     Examples
     --------
@@ -111,6 +122,7 @@ class Body:
     pressure: PressureLaw
     mass: float
     moment_of_inertia: float | None = None
+    height: float = 0.0
     # engine_params per friction tensor (the object is immutable; see engine_params)
     _cache: dict | None = field(default=None, init=False, repr=False, compare=False)
 
@@ -171,14 +183,29 @@ class Body:
                     f"{hi * m * a * a:.6g}] kg m^2"
                 )
         object.__setattr__(self, "moment_of_inertia", inertia)
+        h = v.bounded("height", self.height, 0.0, v.LENGTH[1], "m")
+        if h > 0.0:
+            if isinstance(patch, _fp.Blade) or not isinstance(
+                self.pressure, (UniformPressure, LinearPressure)
+            ):
+                raise ValueError(
+                    f"height = {h!r} m is invalid for patch = {type(patch).__name__}(...) with "
+                    f"pressure = {self.pressure!r}; valid values: height = 0, or a height > 0 "
+                    "with UniformPressure() or LinearPressure(xi_c, eta_c) on an Ellipse or "
+                    "an area footprint (a Blade, a line contact, cannot resist tipping)"
+                )
+        object.__setattr__(self, "height", h)
 
     def __getstate__(self):
         """The fields, without the engine-parameter cache (a pickled body stays small)."""
-        return (self.patch, self.pressure, self.mass, self.moment_of_inertia)
+        return (self.patch, self.pressure, self.mass, self.moment_of_inertia, self.height)
 
     def __setstate__(self, state) -> None:
-        for name, value in zip(("patch", "pressure", "mass", "moment_of_inertia"), state):
+        names = ("patch", "pressure", "mass", "moment_of_inertia", "height")
+        for name, value in zip(names, state):
             object.__setattr__(self, name, value)
+        if len(state) < len(names):  # a body pickled before ``height`` existed
+            object.__setattr__(self, "height", 0.0)
         object.__setattr__(self, "_cache", None)
 
     @classmethod
@@ -352,6 +379,18 @@ def require_constant_law(friction: FrictionTensor, feature: str) -> None:
             "values: speed_law=None. Speed-dependent laws work with friction_wrench, "
             "footprint_wrench, simulate (free motion) and the static set (can_stick, "
             "load_factor, critical_tilt, support_function, which use the static ratio)"
+        )
+
+
+def require_thin(body, feature: str) -> None:
+    """A ``ValueError`` naming ``height`` if the body is tall (MODEL §14) and ``feature``
+    does not take tall bodies yet."""
+    if getattr(body, "height", 0.0) > 0.0:
+        raise ValueError(
+            f"height = {body.height!r} m is not available in {feature} yet; valid values: "
+            "height = 0. Tall bodies work with simulate (free, loaded, on slopes: the Python "
+            "path of the stick-slip engine), the statics (can_stick, load_factor, onset, "
+            "breakaway) and pressure_centre"
         )
 
 

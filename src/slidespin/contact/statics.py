@@ -54,6 +54,7 @@ from slidespin.contact.static_set import (
     _wrench3,
     static_support,
 )
+from slidespin.contact.tall import TallTwist, tall_factors
 
 __all__ = [
     "Onset",
@@ -244,8 +245,26 @@ def load_factor(
     b = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", b, incline):
         return math.inf
+    if body.height > 0.0:
+        return _tall(body, friction, applied_wrench, b, phi, t, body.mass * g * nf)[0]
     sup = static_support(TwistWrench(body, friction.kinetic), friction, phi)
     return _load_factor_nat(sup, b)[0]
+
+
+def _raised(body, applied_wrench, phi, t):
+    """Σ (h − h_Q) Q [N m] (fixed frame) of a load object with heights, else (0, 0): a
+    triple acts at G's height (MODEL §14)."""
+    method = getattr(applied_wrench, "raised_force", None)
+    if not callable(method):
+        return (0.0, 0.0)
+    return method(t, phi, body.height)
+
+
+def _tall(body, friction, applied_wrench, b, phi, t, normal_load):
+    """:func:`slidespin.contact.tall.tall_factors` of the load ``applied_wrench`` (natural
+    wrench ``b``, normal load P [N]) on a tall body at rest at angle φ, time t."""
+    raised = _raised(body, applied_wrench, phi, t)
+    return tall_factors(body, friction, b, phi, raised, normal_load, _load_factor_nat)
 
 
 def _natural_wrench(body, w, nf, g):
@@ -336,12 +355,17 @@ class Onset:
         round-off, where the rate of the start vanishes).
     residual : float
         |A_a + A(u) − λ u| in units of g, the accuracy of the solve.
+    mode : str
+        ``"slide"``; ``"tip"`` for a tall body that tips before it slides (MODEL §14): it
+        does not slide, and ``direction``, ``twist``, ``acceleration`` and ``residual`` are
+        zero (:func:`slidespin.breakaway` gives the factors).
     """
 
     direction: np.ndarray
     twist: np.ndarray
     acceleration: float
     residual: float
+    mode: str = "slide"
 
 
 #: residual |A_a + A(u) − λ u| (units of g) below which an onset direction is accepted: the
@@ -493,11 +517,26 @@ def onset(
     nf = _normal(incline, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     w = _with_pull(body, w, incline, g)
-    tw = TwistWrench(body, friction, _TOL)
+    tw: TwistWrench | TallTwist
     wn = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", wn, incline):
         return None
-    sup = static_support(tw, friction, phi)
+    if body.height > 0.0:
+        # a tall body (MODEL §14): it tips, or it slides with the pressure it has moved
+        lam, mode, _slide, _tip, tall, s_vec, sig = _tall(
+            body, friction, applied_wrench, wn, phi, t, body.mass * g * nf
+        )
+        if lam >= 1.0:
+            return None
+        if mode == "tip":
+            zero = np.zeros(3)
+            return Onset(zero, zero.copy(), 0.0, 0.0, mode="tip")
+        tw = TallTwist(tall, sig)
+        rp = (tall.rg[0] + s_vec[0], tall.rg[1] + s_vec[1])
+        sup = tall.at(rp).support(friction, phi)
+    else:
+        tw = TwistWrench(body, friction, _TOL)
+        sup = static_support(tw, friction, phi)
     lam_star, d = _load_factor_nat(sup, wn)
     if lam_star >= 1.0:  # the verdict of load_factor and can_stick, bit for bit
         return None

@@ -35,6 +35,7 @@ from slidespin._validate import _short
 from slidespin.contact._engine import TwistWrench
 from slidespin.contact.static_set import static_support
 from slidespin.contact.statics import WRENCH_MAX, _load_factor_nat, _norm, _onset_from_par
+from slidespin.contact.tall import TallContact, TallTwist
 
 _TOL = 1e-13
 #: ln s beyond which s² overflows (a trial stage the step control must reject)
@@ -126,6 +127,11 @@ class _Problem:
         self.v_unit = math.sqrt(self.a * g)
         self.tw = TwistWrench(body, friction, _TOL)  # the wrench of any patch
         self.k = self.tw.k
+        # a tall body (MODEL §14): the pressure moves with the friction force and the loads'
+        # heights; ``rp`` is the pressure centroid of the last wrench (natural, body frame)
+        self.tall = TallContact(body, friction, _TOL) if body.height > 0.0 else None
+        self.rp = self.tall.rg if self.tall is not None else (0.0, 0.0)
+        self.tipped = False  # the last gauge at rest was the hull's (the body tips)
         # a constant tilt keeps its factors as numbers (bit for bit the fixed-plane run)
         self.fixed_tilt = incline is None or incline.is_constant
         self.nf = 1.0 if incline is None or not self.fixed_tilt else incline.normal_factor
@@ -135,6 +141,7 @@ class _Problem:
             dx, dy = incline.direction
             self.grav = (incline.downhill_factor * dx, incline.downhill_factor * dy)
         self.constant = (load is None or load.is_constant) and self.fixed_tilt and not springs
+        self.python_only = bool(springs) or self.tall is not None
         self.n_rhs = 0
         self.failure = ""
         self._support = {}
@@ -191,9 +198,43 @@ class _Problem:
         return qx, qy, mz
 
     def friction_acc(self, u1, u2, u3, phi, t=0.0):
-        fx, fy, m = self.tw(phi, u1, u2, u3 / self.k)
         nf = self.nf if self.fixed_tilt else self.nf_at(t)
+        if self.tall is not None:
+            fx, fy, m, self.rp = self.tall.solve(phi, u1, u2, u3 / self.k, self.sigma(t, phi))
+        else:
+            fx, fy, m = self.tw(phi, u1, u2, u3 / self.k)
         return fx * nf, fy * nf, m * nf / self.k
+
+    def sigma(self, t, phi):
+        """Σ (h − h_Q) Q / P in the body frame, natural units (MODEL §14): the loads' tilt
+        of a tall body (zero for loads at G's height)."""
+        if self.load is None:
+            return (0.0, 0.0)
+        rx, ry = self.load.raised_force(t * self.t_unit, phi, self.body.height)
+        scale = self.body.mass * self.g * self.nf_at(t) * self.a
+        c, s = math.cos(phi), math.sin(phi)
+        return ((c * rx + s * ry) / scale, (-s * rx + c * ry) / scale)
+
+    def rest_centroid(self, t, phi):
+        """r_p of the body at rest at (t, φ): static friction balances the applied force,
+        F = −ΣQ, so r_p = r_G + h ΣQ/P − σ (natural units, body frame; MODEL §14)."""
+        tall = self.tall
+        bx, by, _ = self.b(t, phi)
+        nf = self.nf_at(t)
+        c, s = math.cos(phi), math.sin(phi)
+        fx, fy = (c * bx + s * by) / nf, (-s * bx + c * by) / nf
+        sx, sy = self.sigma(t, phi)
+        return (tall.rg[0] + tall.h * fx - sx, tall.rg[1] + tall.h * fy - sy)
+
+    def tip_gauge(self, y):
+        """The hull's gauge at the pressure centroid of the slip state y (1: tipping)."""
+        u = y[0:3] / math.sqrt(float(y[0] ** 2 + y[1] ** 2 + y[2] ** 2))
+        if self.springs:
+            s = math.exp(y[3])
+            self.pose = (y[5], y[6])
+            self.vel = (s * u[0], s * u[1], s * u[2])
+        self.friction_acc(u[0], u[1], u[2], y[7], y[4])
+        return self.tall.tip_gauge(self.rp)
 
     def rhs(self, tau, y):
         self.n_rhs += 1
@@ -257,7 +298,17 @@ class _Problem:
         rate = abs(float(self.rhs(0.0, y)[3]))
         return kappa / max(rate, 1e-300)
 
-    def support(self, phi):
+    def support(self, phi, t=None):
+        """The support function of C at angle φ (for a tall body, with the pressure of the
+        body at rest under the load at time t)."""
+        if self.tall is not None:
+            rp = self.rest_centroid(0.0 if t is None else t, phi)
+            key = (float(phi), rp)
+            if key not in self._support:
+                if len(self._support) > 8:
+                    self._support.clear()
+                self._support[key] = self.tall.at(rp).support(self.friction, float(phi))
+            return self._support[key]
         key = float(phi)
         if key not in self._support:
             if len(self._support) > 8:
@@ -279,14 +330,28 @@ class _Problem:
         leaves it (None for a zero load). The last one is kept: asked again at the same
         (t, φ), it is not computed again."""
         t_last, phi_last, g_last, d_last = self._normal
-        own = w is None
+        own = w is None and self.tall is None  # (a tall body's verdict is not kept)
+        if w is None and not own:
+            w = self.w_nat(t, phi)
         if own:
             if t == t_last and phi == phi_last:
                 return g_last, d_last
             w = self.w_nat(t, phi)
         if not w.any():
             return 0.0, None
-        lam, self._d_last = _load_factor(self.support(phi), w, self._d_last)
+        tip = 0.0
+        if self.tall is not None:
+            # a tall body at rest: it tips when the pressure centroid reaches the hull
+            # (gauge 1), and slides when the load leaves C of the shifted pressure
+            tip = self.tall.tip_gauge(self.rest_centroid(t, phi))
+            if tip >= 1.0:
+                self.tipped = True
+                return tip, None
+        lam, self._d_last = _load_factor(self.support(phi, t), w, self._d_last)
+        if self.tall is not None:
+            self.tipped = tip >= 1.0 / lam
+            if self.tipped:
+                return tip, None
         if own:
             self._normal = (t, phi, 1.0 / lam, self._d_last)
         return 1.0 / lam, self._d_last
@@ -297,13 +362,14 @@ class _Problem:
         Raises :class:`~slidespin.contact.statics.OnsetNotFound` if the solve fails.
         """
         b = np.array(self.b(t, phi))
+        tw = self.tw if self.tall is None else TallTwist(self.tall, self.sigma(t, phi))
         return _onset_from_par(
-            self.tw,
+            tw,
             self.friction,
             phi,
             b,
             self.nf_at(t),
-            self.support(phi),
+            self.support(phi, t),
             slipping=True,
             d0=self._d_last,
         )

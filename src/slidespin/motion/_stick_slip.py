@@ -228,7 +228,8 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol, w_many=None, g0=None):
     """
     if prob.constant or math.isinf(t_end):
         return None
-    exact = _exact_at_knots(prob)
+    # a tall body's C moves with the load (MODEL §14): no convexity, no triangle bound
+    exact = _exact_at_knots(prob) and prob.tall is None
     points = _knots_nat(prob, t0, t_end)
     if scan is not None or not exact:
         h = (
@@ -255,7 +256,7 @@ def _stick_exit(prob, t0, phi, t_end, scan, t_tol, w_many=None, g0=None):
         return t0
     ge = None
     ws = None
-    if len(points) > BOUND_POINTS:
+    if len(points) > BOUND_POINTS and prob.tall is None:
         # the gauge of the unit wrenches, for the bound (C is symmetric: γ(−e) = γ(e))
         sup = prob.support(phi)
         ge = np.array([1.0 / _load_factor_nat(sup, e)[0] for e in np.eye(3)])
@@ -346,6 +347,11 @@ def _exit_newton(prob, phi, ta, tb, t_tol, f):
     return None, ta, t
 
 
+def ev_none(tau, y):
+    """An event that never happens (keeps the events' indices fixed)."""
+    return 1.0
+
+
 class _StepBudget(Exception):
     """Raised from inside solve_ivp when a slip phase has used its budget of steps."""
 
@@ -353,7 +359,8 @@ class _StepBudget(Exception):
 def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=None):
     """Integrate one slip phase in τ; returns (y_end, recorded rows, steps, reason).
 
-    ``reason``: ``stop``, ``t_end``, ``max_steps``, ``switch`` (ln s reached ``ln_switch``)
+    ``reason``: ``stop``, ``t_end``, ``max_steps``, ``switch`` (ln s reached ``ln_switch``),
+    ``tip`` (a tall body's pressure centroid reached the footprint's hull, MODEL §14)
     or ``failed`` (the integrator gave up; its message in ``prob.failure``).
     """
 
@@ -374,9 +381,15 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
 
     ev_switch.terminal = True
     ev_switch.direction = 1.0
-    events = [ev_stop, ev_end]
-    if ln_switch is not None:
-        events.append(ev_switch)
+
+    def ev_tip(tau, y):  # a tall body tips: its pressure centroid reaches the hull
+        return prob.tip_gauge(y) - 1.0
+
+    ev_tip.terminal = True
+    ev_tip.direction = 1.0
+    events = [ev_stop, ev_end, ev_switch if ln_switch is not None else ev_none]
+    if prob.tall is not None:
+        events.append(ev_tip)
     # solve_ivp evaluates every event once per accepted step (and once at the start); this
     # one never changes sign and only counts the steps, so that max_steps bounds the work
     # inside one call too (a chunk alone may take unboundedly many steps)
@@ -389,6 +402,8 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
         return 1.0
 
     events.append(ev_watch)
+    if prob.tall is not None and prob.tip_gauge(y0) >= 1.0:
+        return y0, [], 0, "tip"  # a tall body that tips as soon as it moves
     atol = np.full(10, rtol * 1e-2)
     implicit = method in ("Radau", "BDF", "LSODA")
     if implicit:
@@ -454,9 +469,13 @@ def _slip(prob, y0, ln_stop, t_end, rtol, method, h_max, steps_left, ln_switch=N
                 ye = sol.y_events[1][0].copy()
                 rec.append(ye)
                 return ye, rec, steps, "t_end"
-            ye = sol.y_events[2][0].copy()
+            if sol.t_events[2].size:
+                ye = sol.y_events[2][0].copy()
+                rec.append(ye)
+                return ye, rec, steps, "switch"
+            ye = sol.y_events[3][0].copy()
             rec.append(ye)
-            return ye, rec, steps, "switch"
+            return ye, rec, steps, "tip"
         rec.extend(sol.y[:, 1:].T)
         if steps >= steps_left:
             return y, rec, steps, "max_steps"

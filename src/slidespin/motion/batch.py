@@ -33,7 +33,7 @@ from numpy.typing import ArrayLike
 from slidespin import _validate as v
 from slidespin._progress import progress_bar, show_progress
 from slidespin.contact import _engine
-from slidespin.contact.body import Body
+from slidespin.contact.body import Body, require_thin
 from slidespin.contact.friction import FrictionTensor
 from slidespin.motion import _integrator, _parallel
 from slidespin.motion._batch_inputs import STATE_COLUMNS, STATE_FIELDS, _check_run
@@ -454,6 +454,7 @@ def simulate_many(
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
     st, rtol, max_steps, g = _check_run(initial_states, None, rtol, max_steps, g)
     # the parameter vector of simulate() itself, so that the numbers agree to the last bit
+    require_thin(body, "simulate_many")
     par, fe, fc, geo = body.engine_params(friction)
     states = {name: st[:, i] for i, name in enumerate(("x", "y", "phi", "vx", "vy", "omega"))}
 
@@ -538,6 +539,7 @@ def simulate_bodies(
     for b, f in zip(bodies, frictions):
         key = (id(b), id(f))
         if key not in cache:
+            require_thin(b, "simulate_many")
             cache[key] = b.engine_params(f)
         engines.append(cache[key])
     pars = np.array([e[0] for e in engines])

@@ -233,7 +233,14 @@ def simulate_loaded(
     prob = _Problem(body, friction, time_load, incline, g, springs)
     prob.hold_at((initial_state.x / prob.a, initial_state.y / prob.a))
     prob.b(0.0, initial_state.phi)  # the load's range, before any work
-    tab = None if springs else load_table(prob)
+    tab = None if prob.python_only else load_table(prob)
+    if method == "compiled" and prob.tall is not None:
+        raise ValueError(
+            f"method = 'compiled' is invalid for a tall body (height = {body.height!r} m): "
+            "its pressure moves with the friction force (MODEL §14), which the Python path "
+            "integrates; valid values here: 'auto', 'scipy', 'radau', 'dop853', 'lsoda', "
+            "'bdf', 'rk45'"
+        )
     if method == "compiled" and tab is None:
         raise ValueError(
             f"method = 'compiled' is invalid for load = {_short(load)} and incline = "
@@ -293,6 +300,7 @@ def simulate_loaded(
     work = np.zeros(2)
     status = "ok"
     message = ""
+    tip_time = None
     moved = False
     steps_left = int(max_steps)
 
@@ -323,6 +331,11 @@ def simulate_loaded(
                 record(t, pos, vel, work)
                 if t_exit is None:
                     break
+                prob.gauge(t, pos[2])  # which way it leaves: slides, or tips
+            if prob.tipped:  # a tall body at rest tips before it slides (MODEL §14)
+                status, tip_time = "tipping", t
+                message = _tip_message(t * prob.t_unit, "at rest")
+                break
             # ---- onset: the slow start, with u slaved to the onset direction ----
             t_phase0 = t
             try:
@@ -385,6 +398,10 @@ def simulate_loaded(
         steps_left -= nst
         rows.extend(rec)
         phases.append(["slip", t_phase0, t])
+        if reason == "tip":
+            status, tip_time = "tipping", t
+            message = _tip_message(t * prob.t_unit, "sliding")
+            break
         if reason == "stop":
             vel = np.zeros(3)
             rows[-1][4:7] = 0.0
@@ -462,6 +479,14 @@ def simulate_loaded(
         incline=incline,
         g=g,
         message=message,
+        tip_time=None if tip_time is None else float(tip_time * tu),
+    )
+
+
+def _tip_message(t, how):
+    return (
+        f"the tall body tips at t = {t:.12g} s ({how}): its pressure centroid reached the "
+        "convex hull of the footprint (MODEL §14); the run ends there"
     )
 
 

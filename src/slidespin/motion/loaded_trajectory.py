@@ -55,9 +55,14 @@ class LoadedTrajectory:
         ``no_onset`` when the load left the static-friction set C but the onset solve
         found no slip direction (a solver failure: one always exists, MODEL §11); the run
         then ends at that time with the body at rest, and ``ending`` describes that state;
-        ``step_too_small`` when the integrator gave up (values as reached).
+        ``step_too_small`` when the integrator gave up (values as reached); ``tipping``
+        when a tall body tips (its pressure centroid reached the footprint's hull, MODEL
+        §14): the run ends at ``tip_time``.
     message : str
         Why the run ended early (empty for ``ok``).
+    tip_time : float or None
+        The time [s] at which a tall body tips (status ``tipping``), located to
+        ``time_tol``; ``None`` otherwise.
     energy_error : float
         |ΔKE − W_f − W_Q| [J] over the run (integration accuracy).
     gravity_work : float
@@ -92,6 +97,7 @@ class LoadedTrajectory:
     incline: Incline | None = field(default=None, repr=False)
     g: float = 9.81
     message: str = ""
+    tip_time: float | None = None
 
     def __repr__(self) -> str:
         f = self.final_state
@@ -160,6 +166,7 @@ class LoadedTrajectory:
             "status": self.status,
             "status_message": self.status_message,
             "message": self.message,
+            "tip_time": self.tip_time,
             "phases": [[k, a, b] for k, a, b in self.phases],
             "energy_error": self.energy_error,
             "gravity_work": self.gravity_work,

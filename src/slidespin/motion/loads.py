@@ -189,6 +189,11 @@ class Load:
         Body-frame point r_Q = (ξ, η) [m] where the force acts, measured from the patch
         centre C like every body-frame coordinate; ``None`` means the mass centre G (no
         moment from Q). For every pressure law except the linear one, G = C.
+    height : float or None, default None
+        Height h_Q [m] above the plane at which the force acts, in [0, 1e6], for a tall body
+        (``Body(..., height=h)``, MODEL §14): the force then tilts the body and moves its
+        pressure centroid by −(h − h_Q) Q / P. ``None`` means G's height (no tilt), as for
+        gravity's pull on a slope; on a body of height 0 every height is the same.
 
     Raises
     ------
@@ -232,6 +237,7 @@ class Load:
     torque: TorqueSpec = 0.0
     frame: str = "plane"
     at: tuple | None = None
+    height: float | None = None
 
     def __post_init__(self) -> None:
         if callable(self.force):
@@ -253,6 +259,10 @@ class Load:
             for i, x in enumerate(at):  # the placement range of footprints (MAX_OFFSET)
                 v.symmetric(f"at[{i}]", x, v.LENGTH[1], "m")
             object.__setattr__(self, "at", at)
+        if self.height is not None:
+            object.__setattr__(
+                self, "height", v.bounded("height", self.height, 0.0, v.LENGTH[1], "m")
+            )
 
     @classmethod
     def piecewise_linear(
@@ -265,6 +275,7 @@ class Load:
         at: tuple[float, float] | None = None,
         *,
         names: tuple[str, str, str] | None = None,
+        height: float | None = None,
     ) -> Load:
         """A load interpolated linearly between samples, constant beyond the first and last.
 
@@ -277,7 +288,7 @@ class Load:
             Force components [N] at those times, in ``frame``: finite, one per time.
         torque : sequence of float or None
             Torque [N m] at those times (default 0).
-        frame, at
+        frame, at, height
             As in :class:`Load`.
         names : (str, str, str) or None
             Names of ``fx``, ``fy``, ``torque`` in error messages (a case file's keys).
@@ -314,7 +325,7 @@ class Load:
             cols.append(arr)
         tt, a, b, m = (tuple(arr.tolist()) for arr in (t, *cols))
         torque_fn = _Samples(tt, m) if any(m) else 0.0
-        return cls(force=_Samples(tt, a, b), torque=torque_fn, frame=frame, at=at)
+        return cls(force=_Samples(tt, a, b), torque=torque_fn, frame=frame, at=at, height=height)
 
     @property
     def is_constant(self) -> bool:
@@ -384,6 +395,15 @@ class Load:
                 "|torque| + |at - G| |force| below 1.8e308 N m"
             )
         return (qx, qy, moment)
+
+    def raised_force(self, t: float, phi: float, height: float) -> tuple[float, float]:
+        """(h − h_Q) Q [N m] in the fixed frame: the force's lever about G's height ``height``
+        = h [m] (zero for a load at G's height, ``height=None``; MODEL §14)."""
+        if self.height is None:
+            return (0.0, 0.0)
+        qx, qy, _ = self.wrench(t, phi)
+        lever = height - self.height
+        return (lever * qx, lever * qy)
 
 
 def applied_wrench(

@@ -48,6 +48,10 @@ names are kept apart from the unloaded ones (:data:`LOADED_STATUSES`, :data:`LOA
 ``no_onset``              The load left the static-friction set but no slip direction was
                           found (a solver failure: one always exists, MODEL §11); the run
                           ends there with the body at rest.
+``tipping``               A tall body (``Body(..., height=h)``, MODEL §14) tips: its
+                          pressure centroid reached the convex hull of the footprint, at
+                          ``LoadedTrajectory.tip_time`` (located to ``time_tol``); the run
+                          ends there, at rest or sliding.
 ========================  =====================================================================
 
 Pushed runs (a pusher with a prescribed motion; MODEL §13, :mod:`slidespin.motion.pushed`,
@@ -141,7 +145,7 @@ ENDING_MESSAGES = {
 }
 
 #: status names of a loaded run (``LoadedTrajectory.status``)
-LOADED_STATUSES = ("ok", "max_steps", "max_phases", "step_too_small", "no_onset")
+LOADED_STATUSES = ("ok", "max_steps", "max_phases", "step_too_small", "no_onset", "tipping")
 
 #: ending names of a loaded run (``LoadedTrajectory.ending``)
 LOADED_ENDINGS = ("stopped_stuck", "at_rest_throughout", "moving_at_t_end", "steady_sliding")
@@ -154,6 +158,8 @@ LOADED_STATUS_MESSAGES = {
     "step_too_small": "the integrator could not meet its tolerance; values as reached",
     "no_onset": "the load left the static-friction set but no slip direction was found "
     "(a solver failure); the run ends there with the body at rest",
+    "tipping": "the tall body tips: its pressure centroid reached the footprint's convex "
+    "hull at tip_time; the run ends there",
 }
 
 #: one-line explanation of each loaded ending
@@ -199,7 +205,7 @@ PUSHED_STATUS_MESSAGES = {
 }
 
 #: the loaded run reached its end: converged
-LOADED_CONVERGED = frozenset({"ok"})
+LOADED_CONVERGED = frozenset({"ok", "tipping"})
 #: no loaded status is an analytic limit (kept for symmetry with :data:`FLAGGED`)
 LOADED_FLAGGED: frozenset[str] = frozenset()
 #: the loaded run ended early: values as reached (exit status 1 in the CLI)

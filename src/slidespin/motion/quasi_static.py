@@ -46,7 +46,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from slidespin import _validate as v
 from slidespin.contact._engine import TwistWrench
-from slidespin.contact.body import Body
+from slidespin.contact.body import Body, require_thin
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import Outline, body_outline
 from slidespin.motion._qs_pieces import PhaseBudget, Pieces, check_max_phases
@@ -228,6 +228,7 @@ class _Problem:
     """One body, tensor and pusher: the contact geometry and the mode solves (SI units)."""
 
     def __init__(self, body: Body, friction: FrictionTensor, pusher, g: float, outline) -> None:
+        require_thin(body, "pushed runs")
         self.tw = TwistWrench(body, friction)
         self.ell = body.length_unit
         self.load = body.mass * g

@@ -58,7 +58,7 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.contact._engine import TwistWrench
-from slidespin.contact.body import Body
+from slidespin.contact.body import Body, require_thin
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
 from slidespin.motion._qs_line_hull import hull_features, hull_gap
@@ -134,6 +134,7 @@ class _Line:
     """One body, tensor, outline and line pusher: geometry and mode solves (SI units)."""
 
     def __init__(self, body, friction, pusher, g, outline, side) -> None:
+        require_thin(body, "pushed runs")
         self.tw = TwistWrench(body, friction)
         self.ell = body.length_unit
         self.load = body.mass * g

@@ -332,8 +332,9 @@ def simulate(
             f"outline = {v._short(outline)} is invalid without a pusher (it is the outline a "
             "pusher touches); valid values: None"
         )
-    if load is not None or incline is not None or t_end is not None:
-        # applied loads, a tilted plane or a time bound: the stick-slip engine (MODEL §11),
+    if load is not None or incline is not None or t_end is not None or _tall(body):
+        # applied loads, a tilted plane, a time bound or a tall body (its pressure moves
+        # with the friction force, MODEL §14): the stick-slip engine (MODEL §11),
         # imported when first needed (a free run's first demo need not load it: ~0.1 s)
         from slidespin.motion.loaded import simulate_loaded
 
@@ -521,3 +522,8 @@ def _pushed(body, friction, state, g, rtol, max_steps, max_step, load, incline, 
         body, friction, state, pusher, t_end, g=g, rtol=rtol, max_steps=max_steps, load=load,
         incline=incline, outline=outline,
     )  # fmt: skip
+
+
+def _tall(body) -> bool:
+    """A tall body (MODEL §14): it runs on the stick-slip engine's Python path."""
+    return isinstance(body, Body) and body.height > 0.0

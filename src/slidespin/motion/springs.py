@@ -65,7 +65,9 @@ class Spring:
         row is a fixed anchor.
     at : (float, float), default (0, 0)
         The body point r_S where the spring is attached, in the body frame [m] (from the
-        patch centre C).
+        patch centre C), at G's height: on a tall body (``Body(..., height=h)``) the
+        spring's pull does not tilt the body (MODEL §14; put a ``Load`` with ``height``
+        for a force applied above or below G).
     damping : float, default 0
         Dashpot rate c [N s/m], in [0, 1e12].
     rest_length : float, default 0
@@ -228,6 +230,14 @@ class LoadSum:
     def knots(self) -> tuple[float, ...]:
         """The union of the loads' sample times [s]."""
         return tuple(sorted({t for ld in self.loads for t in ld.knots}))
+
+    def raised_force(self, t: float, phi: float, height: float) -> tuple[float, float]:
+        """The sum of the loads' (h − h_Q) Q [N m] (:meth:`slidespin.Load.raised_force`)."""
+        rx = ry = 0.0
+        for ld in self.loads:
+            a, b = ld.raised_force(t, phi, height)
+            rx, ry = rx + a, ry + b
+        return (rx, ry)
 
     def wrench(
         self, t: float, phi: float = 0.0, mass_centre: tuple[float, float] = (0.0, 0.0)

@@ -151,7 +151,7 @@ _TABLES = {
     },
     "pressure": {"law", "xi_c", "eta_c"},
     "friction": {"fx", "fy", "f", "frame", "angle", "angle_deg", *LAW_KEYS},
-    "body": {"mass", "moment_of_inertia", "inertia_ratio"},
+    "body": {"mass", "moment_of_inertia", "inertia_ratio", "height"},
     "initial": set(INITIAL_KEYS) | set(INITIAL_ALIASES),
     "solver": {"g", "rtol", "max_steps", "t_end"},
     "load": set(LOAD_KEYS),
@@ -189,10 +189,12 @@ class Case:
 
     @property
     def loaded(self) -> bool:
-        """True if the case runs the stick-slip engine (MODEL §11): applied loads, a tilt or a
-        time bound, and no pusher (a pushed case is :attr:`pushed`)."""
+        """True if the case runs the stick-slip engine (MODEL §11): applied loads, a tilt, a
+        time bound or a tall body, and no pusher (a pushed case is :attr:`pushed`)."""
         if self.pusher is not None:
             return False
+        if self.body.height > 0.0:  # a tall body runs on the stick-slip engine (MODEL §14)
+            return True
         return self.load is not None or self.incline is not None or self.t_end is not None
 
     @property
@@ -325,10 +327,12 @@ def case_from_dict(data: dict) -> Case:
             "[body] give at most one of 'moment_of_inertia' and 'inertia_ratio'; valid: one of "
             "them, or neither (the uniform plate)"
         )
+    inertia = bd.get("moment_of_inertia")
     if "inertia_ratio" in bd:
-        body = _in("body", Body.from_inertia_ratio, patch, law, mass, bd["inertia_ratio"])
-    else:
-        body = _in("body", Body, patch, law, mass, bd.get("moment_of_inertia"))
+        inertia = _in(
+            "body", Body.from_inertia_ratio, patch, law, mass, bd["inertia_ratio"]
+        ).moment_of_inertia
+    body = _in("body", Body, patch, law, mass, inertia, bd.get("height", 0.0))
 
     state = _initial_state(data["initial"])
 

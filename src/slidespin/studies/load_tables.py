@@ -26,6 +26,7 @@ LOAD_KEYS = (
     "torque",
     "frame",
     "at",
+    "height",
     "times",
     "profile_fx",
     "profile_fy",
@@ -56,7 +57,8 @@ def load_from_table(table: dict, where: str = "load") -> Load:
 
     A constant load takes ``fx``, ``fy`` [N] (or ``force = [Fx, Fy]``, the name of the
     Python API; not both), ``torque`` [N m], ``frame`` ("plane" or "body") and
-    ``at`` = [ξ, η] [m] (body frame, from the patch centre; default G). A load
+    ``at`` = [ξ, η] [m] (body frame, from the patch centre; default G) and ``height`` [m]
+    (where it acts above the plane, for a tall body; default G's height). A load
     varying in time takes ``times`` [s] with ``profile_fx``, ``profile_fy`` [N] and
     optionally ``profile_torque`` [N m] at those times, interpolated linearly
     (:meth:`Load.piecewise_linear`), instead of ``fx``, ``fy``, ``torque``.
@@ -106,6 +108,7 @@ def load_from_table(table: dict, where: str = "load") -> Load:
             frame,
             at,
             names=("profile_fx", "profile_fy", "profile_torque"),
+            height=table.get("height"),
         )
     if "force" in table:
         force = _table_value(where, check_pair, "force", table["force"])
@@ -117,7 +120,9 @@ def load_from_table(table: dict, where: str = "load") -> Load:
             (table.get("fx", 0.0), table.get("fy", 0.0)),
             ("fx", "fy"),
         )
-    return _table_value(where, Load, force, table.get("torque", 0.0), frame, at)
+    return _table_value(
+        where, Load, force, table.get("torque", 0.0), frame, at, table.get("height")
+    )
 
 
 def incline_from_table(table: dict, where: str = "incline") -> Incline:

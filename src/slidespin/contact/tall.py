@@ -1,0 +1,512 @@
+"""Tall bodies (MODEL §14): the pressure moved by the friction force and by loads applied
+above or below G, lift-off, and tipping.
+
+A body whose mass centre G is at height h above the plane, decelerated by the friction force
+F and pushed by loads Q at heights h_Q, presses on its footprint with a pressure whose
+centroid is (the moment balance about G's horizontal axes, in the body's accelerating
+frame; body-frame vectors, P the normal load)
+
+    r_p = r_G − [h F + Σ (h − h_Q) Q] / P.                                       (MODEL §14)
+
+Gravity's pull along a slope acts at G (h_Q = h) and shifts nothing; a load given without a
+height acts at G's height. The pressure is the linear law of MODEL §10 with its centroid at
+r_p; where it would turn negative that part of the footprint lifts off: p = max(0, p₀ + p₁ξ +
+p₂η) with the three coefficients solved so that ∫p dS = P and ∫p r dS = P r_p (on a footprint
+of polygons: the polygons are clipped by the line p = 0, and on the part left the linear law
+is fitted again: Newton's method on the convex function ½ ∫max(0, p)² − c·(P, P r_p), whose
+Hessian is the moment matrix of the part in contact, so that each step fits the linear law on
+the part in contact of the last). The body **tips** when r_p reaches the
+boundary of the footprint's convex hull: :meth:`TallContact.tip_gauge` is the gauge of the
+hull about G at r_p (1 on the boundary).
+
+In motion F depends on the pressure and the pressure on F: :meth:`TallContact.solve` finds
+r_p and the wrench together (Broyden's method on the 2×2 equation above; for the linear law
+without lift-off the wrench is affine in r_p and the iteration ends in a few steps). At rest,
+static friction balances the applied force (F = −ΣQ, gravity's pull included), so r_p is
+known directly: r_p = r_G + [Σ h_Q Q + h Q_gravity]/P.
+
+Everything is in natural units, as :class:`slidespin.contact._engine.TwistWrench`: lengths in
+ℓ = :attr:`slidespin.Body.length_unit`, unit normal load, body-frame vectors.
+
+Where we depart from MODEL §14: nothing; lift-off is built for footprints of polygons (the
+convex hull then exact); on an ellipse, a disk or a ring the pressure may shift up to where
+its linear law reaches zero (a quarter of the radius for a disk), and a shift beyond raises
+:class:`LiftOffUnsupported`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.optimize import brentq
+from scipy.spatial import ConvexHull
+
+from slidespin.contact._engine import P_BN, P_LAW, P_XG, P_YG, TwistWrench
+from slidespin.contact.footprint_arrays import FootprintArrays, _moments, linear_load
+from slidespin.contact.pressure import LAW_LINEAR
+from slidespin.contact.static_set import static_support
+
+__all__ = ["LiftOffUnsupported", "TallContact", "TallTwist", "tall_factors"]
+
+#: a pressure minimum above −LIFT_TOL × the mean pressure counts as ≥ 0 (no lift-off)
+LIFT_TOL = 1e-12
+#: the pressure of a state beyond the hull (no pressure exists there) is taken at this gauge
+#: of the hull, so that the equations stay continuous through the tipping event
+_GAUGE_CAP = 1.0 - 1e-9
+_NEWTON_TOL = 1e-15
+
+
+class LiftOffUnsupported(ValueError):
+    """The pressure would lift off part of a curved footprint (an ellipse, a disk or a ring),
+    which slidespin does not integrate yet: give the footprint as a polygon."""
+
+
+class _Pressed:
+    """The wrench about G of one pressure (centroid r_p), and its static-friction set."""
+
+    __slots__ = ("d", "ellipse", "rp", "tw")
+
+    def __init__(self, tw: TwistWrench, rp, d, ellipse: bool) -> None:
+        self.tw, self.rp, self.d, self.ellipse = tw, rp, d, ellipse
+
+    def __call__(self, phi, vx, vy, omega):
+        if not self.ellipse:
+            return self.tw(phi, vx, vy, omega)
+        # the elliptic kernel's G is the law's centroid r_p: its velocity there, its moment
+        # carried back to G
+        c, s = math.cos(phi), math.sin(phi)
+        dx = c * self.d[0] - s * self.d[1]
+        dy = s * self.d[0] + c * self.d[1]
+        fx, fy, m = self.tw(phi, vx - omega * dy, vy + omega * dx, omega)
+        return fx, fy, m + dx * fy - dy * fx
+
+    def support(self, friction, phi):
+        """The support function of C about G for this pressure (natural units)."""
+        sup = static_support(self.tw, friction, phi)
+        if not self.ellipse:
+            return sup
+        c, s = math.cos(phi), math.sin(phi)
+        dx = c * self.d[0] - s * self.d[1]
+        dy = s * self.d[0] + c * self.d[1]
+        return _Sheared(sup, dx, dy)
+
+
+class _Sheared:
+    """C about G from C about r_p: W_G = A W_p, M_G = M_p + d × F (d = r_p − r_G, world)."""
+
+    __slots__ = ("dx", "dy", "sup")
+
+    def __init__(self, sup, dx, dy) -> None:
+        self.sup, self.dx, self.dy = sup, dx, dy
+
+    def __call__(self, d):
+        d = np.asarray(d, dtype=float)
+        dp = np.array([d[0] - self.dy * d[2], d[1] + self.dx * d[2], d[2]])
+        h, grad = self.sup(dp)
+        g = np.array([grad[0], grad[1], grad[2] - self.dy * grad[0] + self.dx * grad[1]])
+        return h, g
+
+
+class TallContact:
+    """The pressure of a tall body at any centroid r_p, its wrench about G, and the hull.
+
+    Parameters
+    ----------
+    body : Body
+        A body with ``height`` ≥ 0 under the uniform or linear law.
+    friction : FrictionTensor
+        Its (constant) friction tensor.
+    tol : float
+        The elliptic kernel's error target (the footprint kernel is exact).
+    """
+
+    def __init__(self, body, friction, tol: float = 1e-13) -> None:
+        base = TwistWrench(body, friction, tol)
+        self.base = base
+        ell = body.length_unit
+        self.h = body.height / ell
+        self.k = base.k
+        self.ellipse = not base.footprint
+        self._cache: dict = {}
+        self._warm: tuple | None = None  # the last lift-off's coefficients (p₀, p₁, p₂)
+        if self.ellipse:
+            bn = float(base.par[P_BN])
+            xg, yg = body.pressure.centroid
+            self.rg = (xg / ell, yg / ell)
+            self.area = math.pi * bn
+            self.rc = (0.0, 0.0)
+            self.jm = np.diag([self.area / 4.0, self.area * bn * bn / 4.0])
+            self._ell: tuple | None = (1.0, bn, 0.0, 0.0)  # semi-axes, centre of the hull
+            self._facets = None
+            self._loops = None
+            return
+        gx, gy = body.mass_centre
+        self.rg = (gx / ell, gy / ell)
+        e, c = base.edges, base.circles
+        ox, oy = float(base.geo[0]), float(base.geo[1])
+        a, mx, my, sxx, sxy, syy = _moments(
+            e - np.array([ox, oy, ox, oy]), c - np.array([ox, oy, 0.0, 0.0])
+        )
+        cx, cy = mx / a, my / a
+        self.area = a
+        self.rc = (ox + cx, oy + cy)
+        self.jm = np.array(
+            [[sxx - a * cx * cx, sxy - a * cx * cy], [sxy - a * cx * cy, syy - a * cy * cy]]
+        )
+        self._loops = _loops(e) if not len(c) else None
+        self._ell = None
+        self._facets = None
+        if not len(c):
+            pts = e[:, 0:2]
+            hull = ConvexHull(pts)
+            self._facets = hull.equations  # n·x + off ≤ 0 inside
+        else:
+            disks = [(float(x), float(y), float(r)) for x, y, r, sg in c if sg > 0.0]
+            same = all(d[:2] == disks[0][:2] for d in disks)
+            if not len(e) and same:
+                r = max(d[2] for d in disks)
+                self._ell = (r, r, disks[0][0], disks[0][1])
+            else:
+                self._mixed = (e[:, 0:2].copy(), np.array(disks))
+
+    # ---- the hull ------------------------------------------------------------------------
+    def tip_gauge(self, rp) -> float:
+        """Gauge of the footprint's convex hull about G at ``rp``: < 1 inside, 1 on the
+        boundary (the body tips), > 1 beyond."""
+        dx, dy = rp[0] - self.rg[0], rp[1] - self.rg[1]
+        if dx == 0.0 and dy == 0.0:
+            return 0.0
+        if self._facets is not None:
+            n = self._facets
+            gxr, gyr = self.rg
+            den = -(n[:, 2] + n[:, 0] * gxr + n[:, 1] * gyr)
+            return float(np.max((n[:, 0] * dx + n[:, 1] * dy) / den))
+        if self._ell is not None:
+            sa, sb, ex, ey = self._ell
+            qx, qy = self.rg[0] - ex, self.rg[1] - ey
+            aa = (dx / sa) ** 2 + (dy / sb) ** 2
+            bb = qx * dx / sa**2 + qy * dy / sb**2
+            cc = (qx / sa) ** 2 + (qy / sb) ** 2 - 1.0  # < 0: G inside
+            s = (-bb + math.sqrt(bb * bb - aa * cc)) / aa  # the positive root of aa s² + 2bb s + cc
+            return 1.0 / s
+        return self._mixed_gauge(dx, dy)
+
+    def _mixed_gauge(self, dx, dy):
+        pts, disks = self._mixed
+        gxr, gyr = self.rg
+
+        def ratio(th):
+            nx, ny = math.cos(th), math.sin(th)
+            hk = -math.inf
+            if len(pts):
+                hk = float(np.max(pts[:, 0] * nx + pts[:, 1] * ny))
+            hk = max(hk, float(np.max(disks[:, 0] * nx + disks[:, 1] * ny + disks[:, 2])))
+            return (nx * dx + ny * dy) / (hk - nx * gxr - ny * gyr)
+
+        th = np.linspace(-math.pi, math.pi, 2049)
+        vals = [ratio(t) for t in th]
+        i = int(np.argmax(vals))
+        lo, hi = th[max(i - 1, 0)], th[min(i + 1, len(th) - 1)]
+        # golden section on the bracket around the best sample
+        gr = (math.sqrt(5.0) - 1.0) / 2.0
+        a, b = lo, hi
+        for _ in range(80):
+            c1, c2 = b - gr * (b - a), a + gr * (b - a)
+            if ratio(c1) > ratio(c2):
+                b = c2
+            else:
+                a = c1
+        return max(float(vals[i]), ratio(0.5 * (a + b)))
+
+    # ---- the pressure at a centroid ------------------------------------------------------
+    def at(self, rp) -> _Pressed:
+        """The pressure with centroid ``rp`` (natural units, body frame), lifted off where
+        the linear law turns negative; beyond the hull, the pressure at gauge 1 − 1e-9 on
+        the ray from G (no pressure exists there: the body tips)."""
+        key = (float(rp[0]), float(rp[1]))
+        got = self._cache.get(key)
+        if got is not None:
+            return got
+        gam = self.tip_gauge(key)
+        r = key
+        if gam > _GAUGE_CAP:
+            f = _GAUGE_CAP / gam
+            r = (self.rg[0] + f * (key[0] - self.rg[0]), self.rg[1] + f * (key[1] - self.rg[1]))
+        got = self._make(r)
+        if len(self._cache) > 64:
+            self._cache.clear()
+        self._cache[key] = got
+        return got
+
+    def _linear(self, r):
+        """(p₀, p₁, p₂) of the linear law of MODEL §10 with centroid r, unit load."""
+        a = self.area
+        g = a * np.linalg.solve(self.jm, np.array([r[0] - self.rc[0], r[1] - self.rc[1]]))
+        p1, p2 = g[0] / a, g[1] / a
+        return (1.0 - p1 * self.rc[0] * a - p2 * self.rc[1] * a) / a, p1, p2
+
+    def _make(self, r) -> _Pressed:
+        d = (r[0] - self.rg[0], r[1] - self.rg[1])
+        p0, p1, p2 = self._linear(r)
+        mean = 1.0 / self.area
+        if self.ellipse:
+            assert self._ell is not None
+            sa, sb = self._ell[0], self._ell[1]
+            low = p0 - math.hypot(p1 * sa, p2 * sb)
+            if low < -LIFT_TOL * mean:
+                raise LiftOffUnsupported(_lift_message(r, "an ellipse"))
+            return _Pressed(_with_pressure(self.base, centroid=r), r, d, True)
+        base = self.base
+        e, c = base.edges, base.circles
+        low = math.inf
+        if len(e):
+            low = float(np.min(p0 + p1 * e[:, 0] + p2 * e[:, 1]))
+        for ox, oy, rad, sg in c:
+            if sg > 0.0:
+                low = min(low, p0 + p1 * ox + p2 * oy - math.hypot(p1, p2) * rad)
+        edges = e
+        if low < -LIFT_TOL * mean:
+            if self._loops is None:
+                raise LiftOffUnsupported(_lift_message(r, "a disk or a ring"))
+            # warm start: the last lift-off's law (the integrator asks for nearby centroids)
+            start = self._warm if self._warm is not None else (p0, p1, p2)
+            edges, (p0, p1, p2) = _lift_off(self._loops, r, start)
+            self._warm = (p0, p1, p2)
+        geo = base.geo.copy()
+        arrays = FootprintArrays(edges, c, geo[0:3])
+        if edges is not e:
+            geo[0:3] = _frame(edges)
+            arrays = FootprintArrays(edges, c, geo[0:3])
+        geo[3:6] = (p0, p1, p2)
+        geo[3:6] /= linear_load(arrays, *geo[3:6])
+        geo[8], geo[9] = r
+        geo[10] = 1.0
+        return _Pressed(_with_pressure(base, edges, geo), r, d, False)
+
+    # ---- the pressure in motion ----------------------------------------------------------
+    def solve(self, phi, vx, vy, omega, sigma):
+        """(Fx, Fy, M about G, r_p) with r_p = r_G − σ − h F_body(r_p) (MODEL §14).
+
+        ``sigma`` = Σ (h − h_Q) Q / P in the body frame (natural units); (vx, vy, ω) the
+        twist of G at angle φ (world frame), as :class:`~slidespin.contact._engine.TwistWrench`.
+        """
+        c, s = math.cos(phi), math.sin(phi)
+        h = self.h
+        x = np.array([self.rg[0] - sigma[0], self.rg[1] - sigma[1]])
+
+        def resid(r):
+            fx, fy, m = self.at(r)(phi, vx, vy, omega)
+            fb = (c * fx + s * fy, -s * fx + c * fy)
+            res = np.array(
+                [r[0] - self.rg[0] + sigma[0] + h * fb[0], r[1] - self.rg[1] + sigma[1] + h * fb[1]]
+            )
+            return res, (fx, fy, m)
+
+        fr, w = resid(x)
+        if h == 0.0:
+            return (*w, (float(x[0]), float(x[1])))
+        jinv = np.eye(2)  # Broyden's method from the fixed-point iteration (J ≈ 1)
+        for _ in range(60):
+            step = -jinv @ fr
+            x_new = x + step
+            f_new, w_new = resid(x_new)
+            x, w = x_new, w_new
+            if float(np.max(np.abs(step))) <= _NEWTON_TOL * max(1.0, float(np.max(np.abs(x)))):
+                break
+            df = f_new - fr
+            jdf = jinv @ df
+            den = float(step @ jdf)
+            if den != 0.0:
+                jinv = jinv + np.outer(step - jdf, step @ jinv) / den
+            fr = f_new
+        return (*w, (float(x[0]), float(x[1])))
+
+
+def tall_factors(body, friction, b, phi, raised, normal_load, load_factor_nat):
+    """(λ*, mode, λ_slide, λ_tip, tall, s, σ) of a tall body at rest (MODEL §14).
+
+    Static friction balances the applied force, so under λ W_a the pressure centroid is
+    r_p(λ) = r_G + λ s, s = [h F_a − Σ (h − h_Q) Q]/P (body frame, natural units): the body
+    tips at λ_tip = 1/γ(r_G + s), γ the gauge of the footprint's hull about G, and slides at
+    the λ where λ W_a leaves C of the pressure at r_p(λ) (Brent's method on λ*(λ) − λ; beyond
+    λ_tip with the pressure held at the hull's edge). σ = the raised forces' part of s.
+
+    ``b``: the applied wrench per unit normal load (natural units, fixed frame, gravity's
+    pull included); ``raised`` = Σ (h − h_Q) Q [N m] (fixed frame); ``normal_load`` = P
+    [N]; ``load_factor_nat(sup, b)`` the load factor of :mod:`slidespin.contact.statics`.
+    """
+    tall = TallContact(body, friction.kinetic)
+    c, sn = math.cos(phi), math.sin(phi)
+    rx, ry = raised
+    scale = body.length_unit * normal_load
+    sig = ((c * rx + sn * ry) / scale, (-sn * rx + c * ry) / scale)
+    fxb, fyb = c * b[0] + sn * b[1], -sn * b[0] + c * b[1]
+    s_vec = (tall.h * fxb - sig[0], tall.h * fyb - sig[1])
+    rg = tall.rg
+    gam = tall.tip_gauge((rg[0] + s_vec[0], rg[1] + s_vec[1]))
+    lam_tip = math.inf if gam == 0.0 else 1.0 / gam
+
+    def lam_star(lam):
+        sup = tall.at((rg[0] + lam * s_vec[0], rg[1] + lam * s_vec[1])).support(friction, phi)
+        return load_factor_nat(sup, b)[0]
+
+    def f(lam):
+        return lam_star(lam) - lam
+
+    if math.isinf(lam_tip):
+        lam_slide = lam_star(0.0)
+    else:
+        lo, f_lo = 0.0, lam_star(0.0)
+        hi = min(lam_tip, f_lo)
+        f_hi = f(hi)
+        while f_hi > 0.0 and hi < 1e12 * max(lam_tip, f_lo):
+            lo, hi = hi, 2.0 * hi
+            f_hi = f(hi)
+        lam_slide = brentq(f, lo, hi, xtol=1e-15 * hi, rtol=1e-15) if f_hi <= 0.0 else math.inf
+    mode = "tip" if lam_tip <= lam_slide else "slide"
+    return min(lam_slide, lam_tip), mode, lam_slide, lam_tip, tall, s_vec, sig
+
+
+class TallTwist:
+    """A tall body's wrench under a fixed load tilt σ, called as a ``TwistWrench``
+    (``k``; ``(phi, vx, vy, omega) -> (Fx, Fy, M about G)``)."""
+
+    __slots__ = ("k", "sigma", "tall")
+
+    def __init__(self, tall: TallContact, sigma) -> None:
+        self.tall, self.sigma, self.k = tall, sigma, tall.k
+
+    def __call__(self, phi, vx, vy, omega):
+        fx, fy, m, _ = self.tall.solve(phi, vx, vy, omega, self.sigma)
+        return fx, fy, m
+
+
+def _with_pressure(tw: TwistWrench, edges=None, geo=None, centroid=None) -> TwistWrench:
+    """A copy of ``tw`` with another pressure on the same body.
+
+    For a footprint: the arrays ``edges`` (the part in contact) and ``geo`` (pressure
+    coefficients, centroid, load), G kept where ``geo`` puts it: the copy's wrench is about
+    G, for G's velocity. For an ellipse: the linear law with its centroid at ``centroid``
+    (units of a); the elliptic kernel takes that centroid as its G, so the copy's wrench is
+    about the pressure centroid, for its velocity (:class:`_Pressed` carries it to G).
+    """
+    new = object.__new__(TwistWrench)
+    for name in TwistWrench.__slots__:
+        if hasattr(tw, name):
+            object.__setattr__(new, name, getattr(tw, name))
+    if tw.footprint:
+        new.edges = np.ascontiguousarray(edges, dtype=np.float64)
+        new.geo = np.ascontiguousarray(geo, dtype=np.float64)
+        new._args = (new.edges, tw._args[1], new.geo, *tw._args[3:])
+    else:
+        par = tw.par.copy()
+        par[P_LAW] = LAW_LINEAR
+        par[P_XG], par[P_YG] = float(centroid[0]), float(centroid[1])
+        new.par = par
+        bn, _law, _xg, _yg, *rest = tw._args
+        new._args = (bn, LAW_LINEAR, float(par[P_XG]), float(par[P_YG]), *rest)
+    return new
+
+
+def _lift_message(r, what):
+    return (
+        f"the pressure centroid of the tall body reached (ξ, η) = ({r[0]:.6g}, {r[1]:.6g}) "
+        f"ℓ, where the linear law turns negative on {what}: the footprint lifts off there, "
+        "which slidespin integrates on footprints of polygons only (MODEL §14); valid here: "
+        "a smaller height or load height, or the footprint as a Polygon"
+    )
+
+
+def _loops(edges: np.ndarray) -> list[np.ndarray]:
+    """The closed loops (vertex arrays) of a list of chained counter-clockwise edges."""
+    loops, cur = [], []
+    start = None
+    for x0, y0, x1, y1 in edges:
+        if start is None:
+            start = (x0, y0)
+            cur = [(x0, y0)]
+        cur.append((x1, y1))
+        if (x1, y1) == start:
+            loops.append(np.array(cur[:-1]))
+            start = None
+    if start is not None:  # pragma: no cover - the shapes' edges always close
+        loops.append(np.array(cur))
+    return loops
+
+
+def _clip(loops, c0, c1, c2) -> np.ndarray:
+    """Edges of the loops clipped to c₀ + c₁ξ + c₂η ≥ 0 (Sutherland–Hodgman per loop)."""
+    out = []
+    for pts in loops:
+        vals = c0 + c1 * pts[:, 0] + c2 * pts[:, 1]
+        kept = []
+        n = len(pts)
+        for i in range(n):
+            p, q = pts[i], pts[(i + 1) % n]
+            vp, vq = vals[i], vals[(i + 1) % n]
+            if vp >= 0.0:
+                kept.append(p)
+            if (vp >= 0.0) != (vq >= 0.0):
+                kept.append(p + (vp / (vp - vq)) * (q - p))
+        if len(kept) >= 3:
+            k = np.array(kept)
+            e = np.hstack((k, np.roll(k, -1, axis=0)))
+            e = e[(e[:, 0] != e[:, 2]) | (e[:, 1] != e[:, 3])]
+            out.append(e)
+    return np.ascontiguousarray(np.vstack(out)) if out else np.zeros((0, 4))
+
+
+def _moment_matrix(edges, o):
+    """∫ (1, ξ', η')ᵀ (1, ξ', η') dS over the polygons of ``edges``, ξ' = ξ − o."""
+    a, sx, sy, sxx, sxy, syy = _moments(
+        edges - np.array([o[0], o[1], o[0], o[1]]), np.zeros((0, 4))
+    )
+    return np.array([[a, sx, sy], [sx, sxx, sxy], [sy, sxy, syy]])
+
+
+def _lift_off(loops, r, coef):
+    """(edges, (p₀, p₁, p₂)): the part of the footprint in contact and the linear law on it,
+    p = max(0, p₀ + p₁ξ + p₂η), with unit load and centroid ``r`` (module notes)."""
+    o = r  # the moments about the centroid: well conditioned
+    p0, p1, p2 = coef
+    c = np.array([p0 + p1 * o[0] + p2 * o[1], p1, p2])  # coefficients in ξ' = ξ − o
+    b = np.array([1.0, 0.0, 0.0])
+
+    def state(cv):
+        e = _clip_shifted(loops, cv, o)
+        mm = _moment_matrix(e, (0.0, 0.0)) if len(e) else np.zeros((3, 3))
+        return e, mm
+
+    e, mm = state(c)
+    for _ in range(60):
+        if float(np.max(np.abs(mm @ c - b))) <= 4e-15:
+            break
+        # Newton's step c − M⁻¹(M c − b) = M⁻¹ b: the linear law fitted on the part in
+        # contact; halved towards c while the new part is empty or degenerate
+        c_new = np.linalg.solve(mm, b)
+        for _k in range(60):
+            e_new, mm_new = state(c_new)
+            if len(e_new) and mm_new[0, 0] > 0.0 and np.linalg.det(mm_new) > 0.0:
+                break
+            c_new = 0.5 * (c + c_new)
+        c, e, mm = c_new, e_new, mm_new
+    edges = e + np.array([o[0], o[1], o[0], o[1]])
+    q0 = c[0] - c[1] * o[0] - c[2] * o[1]
+    return np.ascontiguousarray(edges), (q0, c[1], c[2])
+
+
+def _clip_shifted(loops, cv, o):
+    """:func:`_clip` of the loops shifted by −o (coefficients in the shifted coordinates)."""
+    shifted = [pts - np.asarray(o) for pts in loops]
+    return _clip(shifted, cv[0], cv[1], cv[2])
+
+
+def _frame(edges):
+    """(ξ_o, η_o, extent) of a footprint of polygons: its area centroid and the largest
+    distance from it to a vertex."""
+    o = edges[:, 0:2].mean(axis=0)
+    a, sx, sy, *_ = _moments(edges - np.array([o[0], o[1], o[0], o[1]]), np.zeros((0, 4)))
+    cx, cy = o[0] + sx / a, o[1] + sy / a
+    ext = float(np.max(np.hypot(edges[:, 0] - cx, edges[:, 1] - cy)))
+    return np.array([cx, cy, ext])
