@@ -266,7 +266,7 @@ def test_loaded_statuses_are_partitioned():
     )
     assert conv | flag | unconv == set(outcomes.LOADED_STATUSES)
     assert not (conv & flag or conv & unconv or flag & unconv)
-    assert conv == {"ok"}
+    assert conv == {"ok", "tipping"}  # tipping (MODEL §14): a located, physical end
 
 
 def test_unloaded_vocabulary_is_unchanged():

@@ -377,8 +377,9 @@ def require_constant_law(friction: FrictionTensor, feature: str) -> None:
         raise ValueError(
             f"speed_law = {friction.speed_law!r} is not available in {feature} yet; valid "
             "values: speed_law=None. Speed-dependent laws work with friction_wrench, "
-            "footprint_wrench, simulate (free motion) and the static set (can_stick, "
-            "load_factor, critical_tilt, support_function, which use the static ratio)"
+            "footprint_wrench, simulate (free motion; Stribeck and SpeedTable laws also "
+            "under loads, slopes and springs) and the static set (can_stick, load_factor, "
+            "critical_tilt, support_function, which use the static ratio)"
         )
 
 

@@ -33,9 +33,11 @@ import numpy as np
 
 from slidespin._validate import _short
 from slidespin.contact._engine import TwistWrench
+from slidespin.contact.speed_laws import PowerLaw, law_is_constant
 from slidespin.contact.static_set import static_support
 from slidespin.contact.statics import WRENCH_MAX, _load_factor_nat, _norm, _onset_from_par
 from slidespin.contact.tall import TallContact, TallTwist
+from slidespin.motion._law_motion import _LawFlow
 
 _TOL = 1e-13
 #: ln s beyond which s² overflows (a trial stage the step control must reject)
@@ -111,6 +113,44 @@ def _load_factor(sup, b, d0=None):
     return _load_factor_nat(sup, b, direction(p, q))
 
 
+class _Scaled:
+    """A wrench times a constant factor (a speed law at zero slip speed), called as a
+    ``TwistWrench``."""
+
+    __slots__ = ("factor", "k", "tw")
+
+    def __init__(self, tw, factor) -> None:
+        self.tw, self.factor, self.k = tw, factor, tw.k
+
+    def __call__(self, phi, vx, vy, omega):
+        fx, fy, m = self.tw(phi, vx, vy, omega)
+        return fx * self.factor, fy * self.factor, m * self.factor
+
+
+def _check_law_loaded(body, friction) -> None:
+    """Refuse, before any work, a speed law a loaded run cannot start from rest with."""
+    law = friction.speed_law
+    if isinstance(law, PowerLaw):
+        raise ValueError(
+            f"speed_law = {law!r} is not available under loads, slopes or t_end: its factor "
+            "(|w|/v0)^(-q) is infinite at zero slip speed, so a body at rest could never "
+            "start; valid values here: a Stribeck or SpeedTable law, or no law (free "
+            "motion takes the power law)"
+        )
+    g0 = float(law.factor(0.0))
+    if g0 > friction.static * (1.0 + 1e-12):
+        raise ValueError(
+            f"static = {friction.static!r} is invalid with speed_law = {law!r} under a load: "
+            f"the law's factor at zero speed is {g0!r}, above what static friction holds, "
+            f"so a body could not start from rest; valid values: static >= {g0!r}"
+        )
+    if body.height > 0.0:
+        raise ValueError(
+            f"speed_law = {law!r} is not available for a tall body (height = "
+            f"{body.height!r} m) yet; valid values: no speed law, or height = 0"
+        )
+
+
 class _Problem:
     """Everything in natural units (a = m = g = 1, time √(a/g)) for one loaded run."""
 
@@ -125,7 +165,16 @@ class _Problem:
         self.a = body.length_unit
         self.t_unit = math.sqrt(self.a / g)
         self.v_unit = math.sqrt(self.a * g)
-        self.tw = TwistWrench(body, friction, _TOL)  # the wrench of any patch
+        # a speed-dependent law (MODEL §14): the wrench of the slip speed, g(0) × the kinetic
+        # wrench at the start from rest; the static set is the kinetic one times ``static``
+        self.law = None if law_is_constant(friction.speed_law) else friction.speed_law
+        self.flow = None
+        self.g0 = 1.0
+        if self.law is not None:
+            _check_law_loaded(body, friction)
+            self.flow = _LawFlow(body, friction, g)
+            self.g0 = float(self.law.factor(0.0))
+        self.tw = TwistWrench(body, friction.kinetic, _TOL)  # the wrench of any patch
         self.k = self.tw.k
         # a tall body (MODEL §14): the pressure moves with the friction force and the loads'
         # heights; ``rp`` is the pressure centroid of the last wrench (natural, body frame)
@@ -141,7 +190,7 @@ class _Problem:
             dx, dy = incline.direction
             self.grav = (incline.downhill_factor * dx, incline.downhill_factor * dy)
         self.constant = (load is None or load.is_constant) and self.fixed_tilt and not springs
-        self.python_only = bool(springs) or self.tall is not None
+        self.python_only = bool(springs) or self.tall is not None or self.law is not None
         self.n_rhs = 0
         self.failure = ""
         self._support = {}
@@ -197,8 +246,13 @@ class _Problem:
                 qx, qy, mz = qx + sx, qy + sy, mz + sm
         return qx, qy, mz
 
-    def friction_acc(self, u1, u2, u3, phi, t=0.0):
+    def friction_acc(self, u1, u2, u3, phi, t=0.0, s=0.0):
+        """Friction accelerations (natural units) in the direction u at angle φ, time t and
+        speed s (which only a speed law reads; s = 0: the start from rest, g(0))."""
         nf = self.nf if self.fixed_tilt else self.nf_at(t)
+        if self.flow is not None:
+            a = self.flow.accel((u1, u2, u3), s, phi)
+            return a[0] * nf, a[1] * nf, a[2] * nf
         if self.tall is not None:
             fx, fy, m, self.rp = self.tall.solve(phi, u1, u2, u3 / self.k, self.sigma(t, phi))
         else:
@@ -248,8 +302,8 @@ class _Problem:
         u1 *= inv
         u2 *= inv
         u3 *= inv
-        ax, ay, am = self.friction_acc(u1, u2, u3, y[7], y[4])
         s = math.exp(y[3])
+        ax, ay, am = self.friction_acc(u1, u2, u3, y[7], y[4], s)
         if self.springs:
             self.pose = (y[5], y[6])
             self.vel = (s * u1, s * u2, s * u3)
@@ -363,6 +417,8 @@ class _Problem:
         """
         b = np.array(self.b(t, phi))
         tw = self.tw if self.tall is None else TallTwist(self.tall, self.sigma(t, phi))
+        if self.g0 != 1.0:
+            tw = _Scaled(tw, self.g0)  # the law at zero slip speed
         return _onset_from_par(
             tw,
             self.friction,

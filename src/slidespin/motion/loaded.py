@@ -432,7 +432,7 @@ def simulate_loaded(
         ending = "moving_at_t_end"
         if prob.constant and status == "ok":
             u = arr[-1, 4:7] / speed_end
-            ax, ay, am = prob.friction_acc(u[0], u[1], u[2], arr[-1, 3], arr[-1, 0])
+            ax, ay, am = prob.friction_acc(u[0], u[1], u[2], arr[-1, 3], arr[-1, 0], speed_end)
             bx, by, bm = prob.b(arr[-1, 0], arr[-1, 3])
             acc = math.sqrt((ax + bx) ** 2 + (ay + by) ** 2 + (am + bm) ** 2)
             if acc * arr[-1, 0] < STEADY_TOL * speed_end:
