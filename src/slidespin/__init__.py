@@ -80,6 +80,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.studies.sweep_read import read_sweep
     from slidespin.studies.sweep_spec import SweepError
     from slidespin.viz.animate import animate, frame_states
+    from slidespin.viz.law_plot import plot_speed_law
     from slidespin.viz.sweep_plot import plot_sweep
     from slidespin.viz.trajectory_plot import plot_loaded_trajectory, plot_trajectory
 
@@ -176,6 +177,7 @@ _HOMES = {
     "frame_states": "slidespin.viz.animate",
     "plot_sweep": "slidespin.viz.sweep_plot",
     "plot_loaded_trajectory": "slidespin.viz.trajectory_plot",
+    "plot_speed_law": "slidespin.viz.law_plot",
     "plot_trajectory": "slidespin.viz.trajectory_plot",
 }
 
@@ -274,6 +276,7 @@ __all__ = [
     "SweepError",
     # viz: figures and animations (matplotlib and Pillow imported when drawing)
     "plot_trajectory",
+    "plot_speed_law",
     "plot_loaded_trajectory",
     "plot_sweep",
     "animate",

@@ -220,11 +220,45 @@ def test_lift_off_gives_the_triangular_pressure_of_a_box(e):
     assert edges[:, [0, 2]].min() == pytest.approx(w / 2.0 - 3.0 * (w / 2.0 - e), abs=1e-14)
 
 
-def test_lift_off_on_a_curved_footprint_is_refused_clearly():
-    disk = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=0.5)
+def test_lift_off_on_an_ellipse_patch_is_refused_clearly():
+    ell = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), mass=1.0, height=0.5)
     fr = ss.FrictionTensor(0.3, 0.3)
     with pytest.raises(LiftOffUnsupported, match="lifts off"):
-        ss.pressure_centre(disk, fr, ss.State(vx=1.0, omega=2.0))
+        ss.pressure_centre(ell, fr, ss.State(vx=1.0, omega=2.0))
+
+
+@pytest.mark.parametrize(("h_q", "mode"), [(0.2, "slide"), (0.4, "tip"), (0.3333, "slide")])
+def test_a_disk_pushed_at_height_slides_or_tips_as_the_closed_form(h_q, mode):
+    """A cylinder of radius R pushed at h_Q tips at Q = P R / h_Q, slides at μ P (its base
+    lifts off beyond R/4: the lifted disk is clipped as a polygon of the same area)."""
+    r, mu = 0.1, 0.3
+    disk = ss.Body(ss.Disk(r), ss.UniformPressure(), mass=1.0, height=0.5)
+    got = ss.breakaway(disk, ss.FrictionTensor(mu, mu), ss.Load(force=(1.0, 0.0), height=h_q),
+                       g=G)  # fmt: skip
+    assert got.tip_factor == pytest.approx(G * r / h_q, rel=1e-12)
+    assert got.slide_factor == pytest.approx(mu * G, rel=1e-7)
+    assert got.mode == mode
+
+
+def test_a_lifted_ring_keeps_its_load_and_centroid():
+    ring = ss.Body(ss.Annulus(0.05, 0.1), ss.UniformPressure(), mass=1.0, height=0.5)
+    tall = TallContact(ring, ss.FrictionTensor(0.3, 0.3))
+    r = (0.6, 0.2)  # natural units: well beyond the ring's kern
+    pressed = tall.at(r)
+    tw = pressed.tw
+    from slidespin.contact.footprint_arrays import _moments
+
+    e = tw.edges
+    a, sx, sy, sxx, sxy, syy = _moments(e, np.zeros((0, 4)))
+    p0, p1, p2 = tw.geo[3:6]
+    load = p0 * a + p1 * sx + p2 * sy
+    assert load == pytest.approx(1.0, abs=1e-13)
+    cx = (p0 * sx + p1 * sxx + p2 * sxy) / load
+    cy = (p0 * sy + p1 * sxy + p2 * syy) / load
+    assert (cx, cy) == pytest.approx(r, abs=1e-12)
+    # p ≥ 0 on the part in contact, and 0 on the clipping line
+    vals = p0 + p1 * e[:, 0] + p2 * e[:, 1]
+    assert vals.min() >= -1e-12
 
 
 def test_height_is_validated():

@@ -92,6 +92,7 @@ PUBLIC_MODULES = (
     "slidespin.viz",
     "slidespin.viz.animate",
     "slidespin.viz.fit_plot",
+    "slidespin.viz.law_plot",
     "slidespin.viz.push_plot",
     "slidespin.viz.sweep_plot",
     "slidespin.viz.trajectory_plot",

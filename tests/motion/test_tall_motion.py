@@ -65,10 +65,15 @@ def test_a_box_pushed_low_slides_and_does_not_tip():
     assert tr.x[-1] == pytest.approx(x, abs=1e-9)
 
 
-@pytest.mark.parametrize("patch", [ss.Disk(0.1), Rectangle(0.3, 0.2)], ids=["disk", "box"])
-def test_a_tall_body_sliding_in_translation_stops_as_a_thin_one(patch):
+@pytest.mark.parametrize(
+    ("patch", "h"),
+    [(ss.Disk(0.1), 0.05), (ss.Disk(0.1), 0.15), (Rectangle(0.3, 0.2), 0.05),
+     (ss.Annulus(0.05, 0.1), 0.2)],
+    ids=["disk", "disk-lifted", "box", "ring-lifted"],
+)  # fmt: skip
+def test_a_tall_body_sliding_in_translation_stops_as_a_thin_one(patch, h):
     mu, v0 = 0.3, 1.2
-    body = ss.Body(patch, ss.UniformPressure(), mass=1.0, height=0.05)  # h μ < R/4
+    body = ss.Body(patch, ss.UniformPressure(), mass=1.0, height=h)  # lifted: h μ > R/4
     tr = ss.simulate(body, ss.FrictionTensor(mu, mu), ss.State(vx=v0, vy=0.5 * v0), g=G)
     v = math.hypot(v0, 0.5 * v0)
     assert tr.status == "ok" and tr.ending == "stopped_stuck"
@@ -103,3 +108,48 @@ def test_the_energy_balance_of_a_spinning_tall_body():
     thin = ss.simulate(ss.Body(Rectangle(0.3, 0.2), ss.UniformPressure(), mass=1.0), fr, s0,
                        g=G)  # fmt: skip
     assert abs(tr.phi[-1] - thin.phi[-1]) > 1e-4
+
+
+def test_a_tall_disk_under_a_stribeck_law_translating_stops_as_the_1d_law():
+    # m dv/dt = −μ m g s(v): t_stop = ∫₀^v dv / (μ g s(v)) (quad); the force of a translation
+    # does not depend on the pressure, so the height changes nothing but r_p
+    from scipy.integrate import quad
+
+    mu, ratio, vs, v = 0.2, 1.3, 0.2, 0.8
+    body = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=0.02)
+    fr = ss.FrictionTensor(mu, mu, speed_law=ss.Stribeck(ratio, vs))
+    tr = ss.simulate(body, fr, ss.State(vx=v), g=G)
+    assert tr.status == "stopped"
+    want = quad(lambda w: 1.0 / (mu * G * (1 + (ratio - 1) * math.exp(-((w / vs) ** 2)))),
+                0.0, v, epsabs=1e-14, epsrel=1e-13)[0]  # fmt: skip
+    assert tr.t[-1] == pytest.approx(want, rel=1e-9)
+    assert tr.y[-1] == 0.0
+
+
+def test_a_tall_body_under_a_power_law_is_refused_before_any_work():
+    body = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=0.02)
+    fr = ss.FrictionTensor(0.2, 0.2, speed_law=ss.PowerLaw(0.3))
+    with pytest.raises(ValueError, match="height"):
+        ss.simulate(body, fr, ss.State(vx=1.0))
+
+
+def test_a_tall_spinning_ring_under_a_stribeck_law_keeps_its_moment_balance():
+    """r_p = r_G − h F(r_p)/P with F from the public wrench under the law of the shifted linear
+    law (another Body: not the tall module's arithmetic)."""
+    from slidespin.contact._speed_wrench import law_arrays, speed_tol
+    from slidespin.contact.tall import TallSpeed
+
+    h = 0.03
+    ring = ss.Annulus(0.04, 0.07)
+    body = ss.Body(ring, ss.UniformPressure(), mass=1.0, height=h)
+    fr = ss.FrictionTensor(0.4, 0.3, 0.05, speed_law=ss.Stribeck(1.4, 0.3))
+    ts = TallSpeed(body, fr, law_arrays(fr.speed_law), speed_tol(fr))
+    phi, vx, vy, om = 0.3, 0.5, 0.2, 4.0
+    fx, fy, _, rp = ts(phi, vx, vy, om)
+    shifted = ss.Body(ring, ss.LinearPressure(*rp), mass=1.0)
+    c, s = math.cos(phi), math.sin(phi)
+    dx, dy = c * rp[0] - s * rp[1], s * rp[0] + c * rp[1]
+    wr = ss.friction_wrench(shifted, fr, vx - om * dy, vy + om * dx, om, phi=phi, g=G)
+    assert (wr.force_x / G, wr.force_y / G) == pytest.approx((fx, fy), abs=1e-10)
+    fb = (c * fx + s * fy, -s * fx + c * fy)
+    assert rp == pytest.approx((-h * fb[0], -h * fb[1]), abs=1e-12)

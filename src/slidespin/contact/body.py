@@ -104,7 +104,8 @@ class Body:
         (:mod:`slidespin.contact.tall`). Works with the uniform and the linear law on an
         ellipse or an area footprint (not a ``Blade``: a line contact has no width to resist
         tipping), in the loaded engine (:func:`slidespin.simulate` takes a tall body on its
-        Python path) and the statics; lift-off needs a footprint of polygons.
+        Python path) and the statics; lift-off works on area footprints (a disk's or a
+        ring's circles clipped as polygons of 16384 sides), not on an ``Ellipse`` patch.
 
     Examples
     --------

@@ -28,9 +28,11 @@ known directly: r_p = r_G + [Σ h_Q Q + h Q_gravity]/P.
 Everything is in natural units, as :class:`slidespin.contact._engine.TwistWrench`: lengths in
 ℓ = :attr:`slidespin.Body.length_unit`, unit normal load, body-frame vectors.
 
-Where we depart from MODEL §14: nothing; lift-off is built for footprints of polygons (the
-convex hull then exact); on an ellipse, a disk or a ring the pressure may shift up to where
-its linear law reaches zero (a quarter of the radius for a disk), and a shift beyond raises
+Where we depart from MODEL §14: once a disk or a ring lifts off, each circle is clipped as a
+regular polygon of :data:`CIRCLE_SIDES` sides and the same area (the wrench then to about
+1e-7; the hull, hence the tipping, stays exact). On an :class:`~slidespin.Ellipse` patch (the
+elliptic kernel) and under a speed law the pressure may shift up to where its linear law
+reaches zero (a quarter of the semi-axes on an ellipse), and a shift beyond raises
 :class:`LiftOffUnsupported`.
 """
 
@@ -43,11 +45,14 @@ from scipy.optimize import brentq
 from scipy.spatial import ConvexHull
 
 from slidespin.contact._engine import P_BN, P_LAW, P_XG, P_YG, TwistWrench
+from slidespin.contact._speed_wrench import SpeedPatch, speed_patch, speed_wrench_one
+from slidespin.contact.ellipse import Ellipse
 from slidespin.contact.footprint_arrays import FootprintArrays, _moments, linear_load
-from slidespin.contact.pressure import LAW_LINEAR
+from slidespin.contact.pressure import LAW_LINEAR, LinearPressure
+from slidespin.contact.pressure_map import pressure_coefficients
 from slidespin.contact.static_set import static_support
 
-__all__ = ["LiftOffUnsupported", "TallContact", "TallTwist", "tall_factors"]
+__all__ = ["LiftOffUnsupported", "TallContact", "TallSpeed", "TallTwist", "tall_factors"]
 
 #: a pressure minimum above −LIFT_TOL × the mean pressure counts as ≥ 0 (no lift-off)
 LIFT_TOL = 1e-12
@@ -55,11 +60,17 @@ LIFT_TOL = 1e-12
 #: of the hull, so that the equations stay continuous through the tipping event
 _GAUGE_CAP = 1.0 - 1e-9
 _NEWTON_TOL = 1e-15
+#: sides of the regular polygon of the same area that stands for a circle once a disk or a
+#: ring lifts off: its area and second moments are the circle's to O((2π/n)⁴) (1e-15 here);
+#: the wrench, whose integrand is not a polynomial, to O((2π/n)²) ≈ 1.5e-7 at most
+CIRCLE_SIDES = 16384
+_NO_CIRCLES = np.zeros((0, 4))
 
 
 class LiftOffUnsupported(ValueError):
-    """The pressure would lift off part of a curved footprint (an ellipse, a disk or a ring),
-    which slidespin does not integrate yet: give the footprint as a polygon."""
+    """The pressure would lift off part of an Ellipse patch, or of a footprint under a speed
+    law, which slidespin does not integrate yet (give a circle as a ``Disk``, which lifts
+    off; MODEL §14)."""
 
 
 class _Pressed:
@@ -154,7 +165,9 @@ class TallContact:
         self.jm = np.array(
             [[sxx - a * cx * cx, sxy - a * cx * cy], [sxy - a * cx * cy, syy - a * cy * cy]]
         )
-        self._loops = _loops(e) if not len(c) else None
+        # the loops lift-off clips: the polygons, and each circle as a polygon of CIRCLE_SIDES
+        # sides and the same area (MODEL §14: a lifted disk or ring, module notes)
+        self._loops = _loops(e) + _circle_loops(c)
         self._ell = None
         self._facets = None
         if not len(c):
@@ -189,8 +202,8 @@ class TallContact:
             bb = qx * dx / sa**2 + qy * dy / sb**2
             cc = (qx / sa) ** 2 + (qy / sb) ** 2 - 1.0  # < 0: G inside
             s = (-bb + math.sqrt(bb * bb - aa * cc)) / aa  # the positive root of aa s² + 2bb s + cc
-            return 1.0 / s
-        return self._mixed_gauge(dx, dy)
+            return float(1.0 / s)
+        return float(self._mixed_gauge(dx, dy))
 
     def _mixed_gauge(self, dx, dy):
         pts, disks = self._mixed
@@ -267,8 +280,7 @@ class TallContact:
                 low = min(low, p0 + p1 * ox + p2 * oy - math.hypot(p1, p2) * rad)
         edges = e
         if low < -LIFT_TOL * mean:
-            if self._loops is None:
-                raise LiftOffUnsupported(_lift_message(r, "a disk or a ring"))
+            c = _NO_CIRCLES  # (the circles are among the loops, as polygons)
             # warm start: the last lift-off's law (the integrator asks for nearby centroids)
             start = self._warm if self._warm is not None else (p0, p1, p2)
             edges, (p0, p1, p2) = _lift_off(self._loops, r, start)
@@ -282,7 +294,7 @@ class TallContact:
         geo[3:6] /= linear_load(arrays, *geo[3:6])
         geo[8], geo[9] = r
         geo[10] = 1.0
-        return _Pressed(_with_pressure(base, edges, geo), r, d, False)
+        return _Pressed(_with_pressure(base, edges, geo, circles=c), r, d, False)
 
     # ---- the pressure in motion ----------------------------------------------------------
     def solve(self, phi, vx, vy, omega, sigma):
@@ -382,7 +394,9 @@ class TallTwist:
         return fx, fy, m
 
 
-def _with_pressure(tw: TwistWrench, edges=None, geo=None, centroid=None) -> TwistWrench:
+def _with_pressure(
+    tw: TwistWrench, edges=None, geo=None, centroid=None, circles=None
+) -> TwistWrench:
     """A copy of ``tw`` with another pressure on the same body.
 
     For a footprint: the arrays ``edges`` (the part in contact) and ``geo`` (pressure
@@ -398,7 +412,9 @@ def _with_pressure(tw: TwistWrench, edges=None, geo=None, centroid=None) -> Twis
     if tw.footprint:
         new.edges = np.ascontiguousarray(edges, dtype=np.float64)
         new.geo = np.ascontiguousarray(geo, dtype=np.float64)
-        new._args = (new.edges, tw._args[1], new.geo, *tw._args[3:])
+        if circles is not None:
+            new.circles = np.ascontiguousarray(circles, dtype=np.float64)
+        new._args = (new.edges, new.circles, new.geo, *tw._args[3:])
     else:
         par = tw.par.copy()
         par[P_LAW] = LAW_LINEAR
@@ -409,11 +425,12 @@ def _with_pressure(tw: TwistWrench, edges=None, geo=None, centroid=None) -> Twis
     return new
 
 
-def _lift_message(r, what):
+def _lift_message(r, what, unit="ℓ"):
     return (
         f"the pressure centroid of the tall body reached (ξ, η) = ({r[0]:.6g}, {r[1]:.6g}) "
-        f"ℓ, where the linear law turns negative on {what}: the footprint lifts off there, "
-        "which slidespin integrates on footprints of polygons only (MODEL §14); valid here: "
+        f"{unit}, where the linear law turns negative on {what}: the footprint lifts off there, "
+        "which slidespin integrates on footprints (polygons, disks, rings), not on an Ellipse "
+        "patch or under a speed law (MODEL §14); valid here: "
         "a smaller height or load height, or the footprint as a Polygon"
     )
 
@@ -436,21 +453,23 @@ def _loops(edges: np.ndarray) -> list[np.ndarray]:
 
 
 def _clip(loops, c0, c1, c2) -> np.ndarray:
-    """Edges of the loops clipped to c₀ + c₁ξ + c₂η ≥ 0 (Sutherland–Hodgman per loop)."""
+    """Edges of the loops clipped to c₀ + c₁ξ + c₂η ≥ 0 (Sutherland–Hodgman per loop, on
+    arrays: each vertex inside is kept, and each edge that crosses the line adds its
+    crossing point after it)."""
     out = []
     for pts in loops:
         vals = c0 + c1 * pts[:, 0] + c2 * pts[:, 1]
-        kept = []
-        n = len(pts)
-        for i in range(n):
-            p, q = pts[i], pts[(i + 1) % n]
-            vp, vq = vals[i], vals[(i + 1) % n]
-            if vp >= 0.0:
-                kept.append(p)
-            if (vp >= 0.0) != (vq >= 0.0):
-                kept.append(p + (vp / (vp - vq)) * (q - p))
-        if len(kept) >= 3:
-            k = np.array(kept)
+        nxt = np.roll(pts, -1, axis=0)
+        vn = np.roll(vals, -1)
+        inside = vals >= 0.0
+        cross = inside != (vn >= 0.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            frac = np.where(cross, vals / (vals - vn), 0.0)
+        xpt = pts + frac[:, None] * (nxt - pts)
+        both = np.stack((pts, xpt), axis=1).reshape(-1, 2)
+        keep = np.stack((inside, cross), axis=1).reshape(-1)
+        k = both[keep]
+        if len(k) >= 3:
             e = np.hstack((k, np.roll(k, -1, axis=0)))
             e = e[(e[:, 0] != e[:, 2]) | (e[:, 1] != e[:, 3])]
             out.append(e)
@@ -496,6 +515,19 @@ def _lift_off(loops, r, coef):
     return np.ascontiguousarray(edges), (q0, c[1], c[2])
 
 
+def _circle_loops(circles) -> list[np.ndarray]:
+    """Each circle row (ξ_o, η_o, R, sign) as a regular polygon of :data:`CIRCLE_SIDES`
+    sides with the circle's area, counter-clockwise for a disk, clockwise for a hole."""
+    n = CIRCLE_SIDES
+    th = 2.0 * np.pi * np.arange(n) / n
+    grow = math.sqrt(2.0 * math.pi / (n * math.sin(2.0 * math.pi / n)))  # same area
+    loops = []
+    for ox, oy, rad, sg in circles:
+        t = th if sg > 0.0 else th[::-1]
+        loops.append(np.column_stack((ox + rad * grow * np.cos(t), oy + rad * grow * np.sin(t))))
+    return loops
+
+
 def _clip_shifted(loops, cv, o):
     """:func:`_clip` of the loops shifted by −o (coefficients in the shifted coordinates)."""
     shifted = [pts - np.asarray(o) for pts in loops]
@@ -510,3 +542,101 @@ def _frame(edges):
     cx, cy = o[0] + sx / a, o[1] + sy / a
     ext = float(np.max(np.hypot(edges[:, 0] - cx, edges[:, 1] - cy)))
     return np.array([cx, cy, ext])
+
+
+class TallSpeed:
+    """A tall body's wrench under a speed-dependent law (MODEL §14), for free motion.
+
+    The speed-law kernel (:mod:`slidespin.contact._speed_wrench`) takes the pressure's
+    coefficients and G apart, so the pressure at r_p is the same patch with the linear law
+    of centroid r_p (G kept); r_p = r_G − h F(r_p)/P is solved by Broyden's method as in
+    :meth:`TallContact.solve`. SI lengths (m) and unit load. The law's wrench at a pure
+    translation does not depend on the pressure's shape (g(|v|) times the constant law's
+    force), so there r_p follows directly. Lift-off under a speed law is not integrated: a
+    centroid where the linear law turns negative raises :class:`LiftOffUnsupported`.
+    """
+
+    def __init__(self, body, friction, law_args, tol) -> None:
+        self.base = speed_patch(body.patch, body.pressure)
+        self.patch = body.patch
+        self.h = body.height
+        self.rg = self.base.g
+        self.tensor = friction.matrix
+        self.body_frame = friction.frame == "body"
+        self.args = law_args
+        self.tol = tol
+        self.law = friction.speed_law
+        self.kinetic = friction.kinetic.matrix
+        self._dens = _density(self.base.pp, self.base.far_pts)
+        self.worst = 0.0
+
+    def _patch_at(self, r) -> SpeedPatch:
+        patch = self.patch
+        if isinstance(patch, Ellipse):
+            a, b = patch.a, patch.b
+            area = math.pi * a * b
+            pp = np.array([1.0, 4.0 * r[0] / a**2, 4.0 * r[1] / b**2]) / area
+            if 4.0 * math.hypot(r[0] / a, r[1] / b) > 1.0 + LIFT_TOL:
+                raise LiftOffUnsupported(_lift_message(r, "an ellipse", "m"))
+        else:
+            try:
+                pp = np.array(pressure_coefficients(patch, LinearPressure(*r), 1.0))
+            except ValueError:
+                raise LiftOffUnsupported(
+                    _lift_message(r, "this footprint under a speed law", "m")
+                ) from None
+        base = self.base
+        dens = _density(pp, base.far_pts)
+        return SpeedPatch(base.edges, base.conics, base.pcode, pp, base.g, base.frame,
+                          base.far_pts, base.far_w / self._dens * dens)  # fmt: skip
+
+    def __call__(self, phi, vx, vy, omega):
+        """(Fx, Fy, M about G) per unit load [1, 1, m] and the pressure centroid r_p [m]."""
+        c, s = math.cos(phi), math.sin(phi)
+        if omega == 0.0:
+            sp = math.hypot(vx, vy)
+            fw = self.tensor if not self.body_frame else _to_world(self.tensor, c, s)
+            gv = float(self.law.factor(sp))
+            fx = -gv * (fw[0, 0] * vx + fw[0, 1] * vy) / sp
+            fy = -gv * (fw[1, 0] * vx + fw[1, 1] * vy) / sp
+            fb = (c * fx + s * fy, -s * fx + c * fy)
+            d = (-self.h * fb[0], -self.h * fb[1])
+            self._patch_at((self.rg[0] + d[0], self.rg[1] + d[1]))  # (the lift-off check)
+            dx, dy = c * d[0] - s * d[1], s * d[0] + c * d[1]
+            return fx, fy, dx * fy - dy * fx, (self.rg[0] + d[0], self.rg[1] + d[1])
+
+        def resid(r):
+            fx, fy, m, err = speed_wrench_one(self._patch_at(r), self.tensor, self.body_frame,
+                                              self.args, phi, vx, vy, omega, self.tol)  # fmt: skip
+            self.worst = max(self.worst, err)
+            fb = (c * fx + s * fy, -s * fx + c * fy)
+            res = np.array([r[0] - self.rg[0] + self.h * fb[0], r[1] - self.rg[1] + self.h * fb[1]])
+            return res, (fx, fy, m)
+
+        x = np.array(self.rg, dtype=float)
+        fr, w = resid(x)
+        jinv = np.eye(2)
+        for _ in range(60):
+            step = -jinv @ fr
+            x = x + step
+            f_new, w = resid(x)
+            # converged to the kernel's own accuracy (tol of the load, times h)
+            scale = max(abs(self.rg[0]), abs(self.rg[1]), self.h)
+            if float(np.max(np.abs(step))) <= max(1e-14 * scale, 10.0 * self.tol * self.h):
+                break
+            df = f_new - fr
+            jdf = jinv @ df
+            den = float(step @ jdf)
+            if den != 0.0:
+                jinv = jinv + np.outer(step - jdf, step @ jinv) / den
+            fr = f_new
+        return (*w, (float(x[0]), float(x[1])))
+
+
+def _density(pp, pts):
+    return pp[0] + pp[1] * pts[:, 0] + pp[2] * pts[:, 1]
+
+
+def _to_world(tb, c, s):
+    rot = np.array([[c, -s], [s, c]])
+    return rot @ tb @ rot.T

@@ -48,6 +48,7 @@ from slidespin.contact._speed_wrench import (
     speed_wrench_one,
 )
 from slidespin.contact.speed_laws import PowerLaw
+from slidespin.contact.tall import TallSpeed
 from slidespin.motion.state import State
 from slidespin.motion.trajectory import Trajectory
 
@@ -88,11 +89,22 @@ class _LawFlow:
         self.tol = speed_tol(friction)
         self.n_wrench = 0
         self.worst = 0.0
+        # a tall body (MODEL §14): the pressure moves with the friction force
+        self.tall = None
+        if body.height > 0.0:
+            if self.q > 0.0:
+                raise ValueError(
+                    f"height = {body.height!r} m is not available with speed_law = "
+                    f"{self.law!r}: its friction, and so the load shift h F/P, grows without "
+                    "bound as the body stops, and the footprint would lift off and tip; valid "
+                    "values: height = 0, or a Stribeck or SpeedTable law"
+                )
+            self.tall = TallSpeed(body, friction, self.args, self.tol)
 
     def accel(self, u, s, phi):
         """Ã = h(s) a(s u) (module notes) as (Ã₁, Ã₂, Ã₃)."""
-        if self.q > 0.0:
-            scale = 1.0  # homogeneous: Ã = a(u)
+        if self.q > 0.0 and self.tall is None:
+            scale = 1.0  # homogeneous: Ã = a(u) (not for a tall body: its r_p moves with s)
         else:
             unit = max(abs(u[0]), abs(u[1]), abs(u[2]) / self.k) * self.v_unit
             scale = s if s * unit >= SPEED_FLOOR else SPEED_FLOOR / unit
@@ -100,6 +112,11 @@ class _LawFlow:
         vy = scale * u[1] * self.v_unit
         om = scale * u[2] / self.k / self.t_unit
         self.n_wrench += 1
+        if self.tall is not None:
+            fx, fy, m, _ = self.tall(phi, vx, vy, om)
+            self.worst = max(self.worst, self.tall.worst)
+            hq = s**self.q if self.q > 0.0 else 1.0  # Ã = h(s) a(s u), h = s^q
+            return np.array([fx * hq, fy * hq, m * hq / self.a / self.k])
         if om == 0.0:
             fx, fy, m = self.tw(phi, u[0], u[1], 0.0)
             gv = float(self.law.factor(math.hypot(vx, vy))) if (vx or vy) else 1.0

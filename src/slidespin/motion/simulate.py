@@ -332,7 +332,7 @@ def simulate(
             f"outline = {v._short(outline)} is invalid without a pusher (it is the outline a "
             "pusher touches); valid values: None"
         )
-    if load is not None or incline is not None or t_end is not None or _tall(body):
+    if load is not None or incline is not None or t_end is not None or _tall(body, friction):
         # applied loads, a tilted plane, a time bound or a tall body (its pressure moves
         # with the friction force, MODEL §14): the stick-slip engine (MODEL §11),
         # imported when first needed (a free run's first demo need not load it: ~0.1 s)
@@ -524,6 +524,8 @@ def _pushed(body, friction, state, g, rtol, max_steps, max_step, load, incline, 
     )  # fmt: skip
 
 
-def _tall(body) -> bool:
-    """A tall body (MODEL §14): it runs on the stick-slip engine's Python path."""
-    return isinstance(body, Body) and body.height > 0.0
+def _tall(body, friction) -> bool:
+    """A tall body (MODEL §14) under a constant law: it runs on the stick-slip engine's
+    Python path (under a speed law, free motion runs on the law's integrator)."""
+    law = getattr(friction, "speed_law", None)
+    return isinstance(body, Body) and body.height > 0.0 and law_is_constant(law)

@@ -369,6 +369,8 @@ def plot_loaded_trajectory(traj, title: str | None = None, n_outlines: int = 9):
     from matplotlib.patches import Patch  # lazy: matplotlib is imported only to draw
 
     head = f"ending: {traj.ending}, status: {traj.status}"
+    if getattr(traj, "tip_time", None) is not None:  # a tall body tipped (MODEL §14)
+        head += f" at t = {traj.tip_time:.6g} s"
     suptitle = f"{title}\n{head}" if title else head
     fig = _figure(12.0, 7.4)  # resized below, once the extent of the path is known
     ax_path = fig.add_axes((0.1, 0.1, 0.8, 0.8))
