@@ -73,4 +73,10 @@ fig.tight_layout()
 # of the band carries a little more than the back (:func:`slidespin.pressure_centre`).
 tall = ss.Body(band, ss.UniformPressure(), mass=m, moment_of_inertia=inertia, height=0.06)
 xi, eta = ss.pressure_centre(tall, ss.FrictionTensor(mu, mu), start)
-print(f"pressure centroid of the tall stone at release: ({1000 * xi:.4f}, {1000 * eta:.4f}) mm")
+print(f"pressure shift = {1000 * math.hypot(xi, eta):.12f} mm ahead of the centre")
+
+# %%
+# The three offsets at the stop, for the record (+: to the right of the line)
+print(f"coulomb curl = {1000 * paths['Coulomb μ = 0.0068'].x[-1]:.6e} mm")
+print(f"law curl = {1000 * paths['μ (v / 1 m/s)^(−1/2)'].x[-1]:.6e} mm")
+print(f"tall curl = {1000 * paths['Coulomb, tall stone h = 0.06 m'].x[-1]:.6f} mm")

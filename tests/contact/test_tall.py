@@ -223,7 +223,7 @@ def test_lift_off_gives_the_triangular_pressure_of_a_box(e):
 def test_lift_off_on_an_ellipse_patch_is_refused_clearly():
     ell = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), mass=1.0, height=0.5)
     fr = ss.FrictionTensor(0.3, 0.3)
-    with pytest.raises(LiftOffUnsupported, match="lifts off"):
+    with pytest.raises(LiftOffUnsupported, match="would lift off"):
         ss.pressure_centre(ell, fr, ss.State(vx=1.0, omega=2.0))
 
 
@@ -272,3 +272,23 @@ def test_height_is_validated():
         ss.Load(force=(1.0, 0.0), height=-1.0)
     with pytest.raises(ValueError, match="height"):
         ss.simulate_many(_box(), ss.FrictionTensor(0.3, 0.3), [ss.State(vx=1.0)])
+
+
+@pytest.mark.parametrize(
+    "law", [ss.Stribeck(1.48, 0.01), ss.PowerLaw(0.5, 1.0), ss.SpeedTable([0, 1], [1.3, 1.0])]
+)
+def test_the_pressure_centre_under_a_speed_law_reads_the_slip_speed(law):
+    # a translation at speed v: F = −P μ g(v) v̂ whatever the pressure, r_p = h μ g(v) v̂
+    h, mu, v = 0.05, 0.3, 0.01
+    disk = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=h)
+    static = max(1.0, float(law.factor(0.0))) if not isinstance(law, ss.PowerLaw) else 1.0
+    kw = {} if isinstance(law, ss.Stribeck) else {"static": static}
+    fr = ss.FrictionTensor(mu, mu, speed_law=law, **kw)
+    got = ss.pressure_centre(disk, fr, ss.State(vx=v))
+    assert got == pytest.approx((h * mu * float(law.factor(v)), 0.0), abs=1e-15)
+
+
+def test_pressure_centre_refuses_a_state_that_is_not_one():
+    disk = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=0.05)
+    with pytest.raises(ValueError, match="state = "):
+        ss.pressure_centre(disk, ss.FrictionTensor(0.3, 0.3), (0.0, 1.0, 0.0))

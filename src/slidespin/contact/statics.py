@@ -311,7 +311,10 @@ def critical_tilt(
 
     On a plane tilted by α the applied wrench is m g sin α (d, 0) and C scales by cos α, so
     the body holds iff tan α ≤ λ*(m g d) on the level plane: α_c = atan λ*(m g (cos δ, sin δ), 0).
-    For isotropic friction α_c = atan μ whatever the patch and pressure law.
+    For isotropic friction α_c = atan μ whatever the patch and pressure law. A tall body
+    (``Body(..., height=h)``, MODEL §14) tips first where its pressure centroid, moved
+    downhill by h tan α, reaches the footprint's hull: α_c is then the smaller of the two
+    (a box of base width w: atan((w/2)/h)).
 
     Parameters
     ----------

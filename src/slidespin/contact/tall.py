@@ -29,7 +29,7 @@ Everything is in natural units, as :class:`slidespin.contact._engine.TwistWrench
 ℓ = :attr:`slidespin.Body.length_unit`, unit normal load, body-frame vectors.
 
 Where we depart from MODEL §14: once a disk or a ring lifts off, each circle is clipped as a
-regular polygon of :data:`CIRCLE_SIDES` sides and the same area (the wrench then to about
+regular polygon of ``CIRCLE_SIDES`` sides and the same area (the wrench then to about
 1e-7; the hull, hence the tipping, stays exact). On an :class:`~slidespin.Ellipse` patch (the
 elliptic kernel) and under a speed law the pressure may shift up to where its linear law
 reaches zero (a quarter of the semi-axes on an ellipse), and a shift beyond raises
@@ -136,6 +136,7 @@ class TallContact:
         base = TwistWrench(body, friction, tol)
         self.base = base
         ell = body.length_unit
+        self.ell = ell
         self.h = body.height / ell
         self.k = base.k
         self.ellipse = not base.footprint
@@ -268,7 +269,9 @@ class TallContact:
             sa, sb = self._ell[0], self._ell[1]
             low = p0 - math.hypot(p1 * sa, p2 * sb)
             if low < -LIFT_TOL * mean:
-                raise LiftOffUnsupported(_lift_message(r, "an ellipse"))
+                raise LiftOffUnsupported(
+                    _lift_message((r[0] * self.ell, r[1] * self.ell), "this ellipse")
+                )
             return _Pressed(_with_pressure(self.base, centroid=r), r, d, True)
         base = self.base
         e, c = base.edges, base.circles
@@ -425,13 +428,14 @@ def _with_pressure(
     return new
 
 
-def _lift_message(r, what, unit="ℓ"):
+def _lift_message(r, what):
+    """The message of :class:`LiftOffUnsupported` for a centroid ``r`` [m, body frame]."""
     return (
-        f"the pressure centroid of the tall body reached (ξ, η) = ({r[0]:.6g}, {r[1]:.6g}) "
-        f"{unit}, where the linear law turns negative on {what}: the footprint lifts off there, "
-        "which slidespin integrates on footprints (polygons, disks, rings), not on an Ellipse "
-        "patch or under a speed law (MODEL §14); valid here: "
-        "a smaller height or load height, or the footprint as a Polygon"
+        f"the pressure centroid of the tall body would move to (ξ, η) = ({r[0]:.6g}, "
+        f"{r[1]:.6g}) m, beyond where the linear pressure stays >= 0 on {what}: the patch "
+        "would lift off there, which slidespin does not integrate on an Ellipse patch or "
+        "under a speed law yet (MODEL §14); valid here: a smaller height or load height, "
+        "or the patch as a Disk or a Polygon footprint with a constant law"
     )
 
 
@@ -458,6 +462,11 @@ def _clip(loops, c0, c1, c2) -> np.ndarray:
     crossing point after it)."""
     out = []
     for pts in loops:
+        if len(pts) <= 32:  # a few vertices: the plain loop is faster than the arrays
+            e = _clip_small(pts, c0, c1, c2)
+            if e is not None:
+                out.append(e)
+            continue
         vals = c0 + c1 * pts[:, 0] + c2 * pts[:, 1]
         nxt = np.roll(pts, -1, axis=0)
         vn = np.roll(vals, -1)
@@ -474,6 +483,29 @@ def _clip(loops, c0, c1, c2) -> np.ndarray:
             e = e[(e[:, 0] != e[:, 2]) | (e[:, 1] != e[:, 3])]
             out.append(e)
     return np.ascontiguousarray(np.vstack(out)) if out else np.zeros((0, 4))
+
+
+def _clip_small(pts, c0, c1, c2):
+    """:func:`_clip` of one loop of a few vertices, vertex by vertex (None if nothing is
+    left)."""
+    kept = []
+    n = len(pts)
+    vals = [c0 + c1 * x + c2 * y for x, y in pts.tolist()]
+    pl = pts.tolist()
+    for i in range(n):
+        j = (i + 1) % n
+        (px, py), (qx, qy) = pl[i], pl[j]
+        vp, vq = vals[i], vals[j]
+        if vp >= 0.0:
+            kept.append((px, py))
+        if (vp >= 0.0) != (vq >= 0.0):
+            f = vp / (vp - vq)
+            kept.append((px + f * (qx - px), py + f * (qy - py)))
+    if len(kept) < 3:
+        return None
+    e = [(*kept[i], *kept[(i + 1) % len(kept)]) for i in range(len(kept))]
+    e = [row for row in e if row[0] != row[2] or row[1] != row[3]]
+    return np.array(e)
 
 
 def _moment_matrix(edges, o):
@@ -552,7 +584,8 @@ class TallSpeed:
     of centroid r_p (G kept); r_p = r_G − h F(r_p)/P is solved by Broyden's method as in
     :meth:`TallContact.solve`. SI lengths (m) and unit load. The law's wrench at a pure
     translation does not depend on the pressure's shape (g(|v|) times the constant law's
-    force), so there r_p follows directly. Lift-off under a speed law is not integrated: a
+    force, and the moment about G is (r_p − r_G) × F), so there r_p follows directly, lifted
+    off or not. Lift-off under a speed law is not integrated: a
     centroid where the linear law turns negative raises :class:`LiftOffUnsupported`.
     """
 
@@ -577,22 +610,24 @@ class TallSpeed:
             area = math.pi * a * b
             pp = np.array([1.0, 4.0 * r[0] / a**2, 4.0 * r[1] / b**2]) / area
             if 4.0 * math.hypot(r[0] / a, r[1] / b) > 1.0 + LIFT_TOL:
-                raise LiftOffUnsupported(_lift_message(r, "an ellipse", "m"))
+                raise LiftOffUnsupported(_lift_message(r, "this ellipse"))
         else:
             try:
                 pp = np.array(pressure_coefficients(patch, LinearPressure(*r), 1.0))
             except ValueError:
                 raise LiftOffUnsupported(
-                    _lift_message(r, "this footprint under a speed law", "m")
+                    _lift_message(r, "this footprint under a speed law")
                 ) from None
         base = self.base
         dens = _density(pp, base.far_pts)
         return SpeedPatch(base.edges, base.conics, base.pcode, pp, base.g, base.frame,
                           base.far_pts, base.far_w / self._dens * dens)  # fmt: skip
 
-    def __call__(self, phi, vx, vy, omega):
-        """(Fx, Fy, M about G) per unit load [1, 1, m] and the pressure centroid r_p [m]."""
+    def __call__(self, phi, vx, vy, omega, sigma=(0.0, 0.0)):
+        """(Fx, Fy, M about G) per unit load [1, 1, m] and the pressure centroid r_p [m];
+        ``sigma`` = Σ (h − h_Q) Q / P [m, body frame], the loads' tilt."""
         c, s = math.cos(phi), math.sin(phi)
+        rg = (self.rg[0] - sigma[0], self.rg[1] - sigma[1])  # (where r_p sits without F)
         if omega == 0.0:
             sp = math.hypot(vx, vy)
             fw = self.tensor if not self.body_frame else _to_world(self.tensor, c, s)
@@ -600,8 +635,8 @@ class TallSpeed:
             fx = -gv * (fw[0, 0] * vx + fw[0, 1] * vy) / sp
             fy = -gv * (fw[1, 0] * vx + fw[1, 1] * vy) / sp
             fb = (c * fx + s * fy, -s * fx + c * fy)
-            d = (-self.h * fb[0], -self.h * fb[1])
-            self._patch_at((self.rg[0] + d[0], self.rg[1] + d[1]))  # (the lift-off check)
+            # (a translation's wrench about G needs only the centroid: lifted off or not)
+            d = (rg[0] - self.h * fb[0] - self.rg[0], rg[1] - self.h * fb[1] - self.rg[1])
             dx, dy = c * d[0] - s * d[1], s * d[0] + c * d[1]
             return fx, fy, dx * fy - dy * fx, (self.rg[0] + d[0], self.rg[1] + d[1])
 
@@ -610,10 +645,10 @@ class TallSpeed:
                                               self.args, phi, vx, vy, omega, self.tol)  # fmt: skip
             self.worst = max(self.worst, err)
             fb = (c * fx + s * fy, -s * fx + c * fy)
-            res = np.array([r[0] - self.rg[0] + self.h * fb[0], r[1] - self.rg[1] + self.h * fb[1]])
+            res = np.array([r[0] - rg[0] + self.h * fb[0], r[1] - rg[1] + self.h * fb[1]])
             return res, (fx, fy, m)
 
-        x = np.array(self.rg, dtype=float)
+        x = np.array(rg, dtype=float)
         fr, w = resid(x)
         jinv = np.eye(2)
         for _ in range(60):

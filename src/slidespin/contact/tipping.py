@@ -19,9 +19,11 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.contact._engine import TwistWrench
+from slidespin.contact._speed_wrench import law_arrays, speed_tol
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
+from slidespin.contact.speed_laws import law_is_constant
 from slidespin.contact.static_set import _check, _normal, static_support
 from slidespin.contact.statics import (
     _applied,
@@ -32,7 +34,7 @@ from slidespin.contact.statics import (
     _tall,
     _with_pull,
 )
-from slidespin.contact.tall import TallContact
+from slidespin.contact.tall import TallContact, TallSpeed
 
 __all__ = ["Breakaway", "breakaway", "pressure_centre"]
 
@@ -132,7 +134,8 @@ def pressure_centre(
     """The pressure centroid r_p of a body in ``state`` [m, body frame] (MODEL §14).
 
     Sliding (v or ω ≠ 0): r_p = r_G − [h F + Σ (h − h_Q) Q]/P, solved together with the
-    friction force F of the moved pressure (lift-off included). At rest, static friction
+    friction force F of the moved pressure (lift-off included; under a speed law, F of the
+    actual slip speeds, without lift-off). At rest, static friction
     balances the applied force: r_p = r_G + [Σ h_Q Q + h Q_gravity]/P (the body may then
     be past tipping: compare with the footprint, or ask :func:`breakaway`). For a body of
     height 0 it is G.
@@ -160,6 +163,11 @@ def pressure_centre(
     [0.015, 0.0]
     """
     _check(body, friction)
+    if not all(hasattr(state, n) for n in ("phi", "vx", "vy", "omega")):
+        raise ValueError(
+            f"state = {v._short(state)} is invalid; valid values: a slidespin.State (its "
+            "phi, vx, vy and omega are used)"
+        )
     phi = v.finite("state.phi", getattr(state, "phi", math.nan))
     vx, vy, om = (
         v.finite(f"state.{n}", getattr(state, n, math.nan)) for n in ("vx", "vy", "omega")
@@ -176,6 +184,11 @@ def pressure_centre(
     rx, ry = (0.0, 0.0) if load is None else _raised(body, load, phi, t)
     c, s = math.cos(phi), math.sin(phi)
     sig = ((c * rx + s * ry) / (normal_load * ell), (-s * rx + c * ry) / (normal_load * ell))
+    if (vx, vy, om) != (0.0, 0.0, 0.0) and not law_is_constant(friction.speed_law):
+        # under a speed law the friction, hence the shift, depends on the slip speeds
+        fast = TallSpeed(body, friction, law_arrays(friction.speed_law), speed_tol(friction))
+        rp = fast(phi, vx, vy, om, (sig[0] * ell, sig[1] * ell))[3]
+        return (float(rp[0]), float(rp[1]))
     tall = TallContact(body, friction.kinetic)
     if (vx, vy, om) != (0.0, 0.0, 0.0):
         rp = tall.solve(phi, vx / ell, vy / ell, om, sig)[3]

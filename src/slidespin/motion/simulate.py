@@ -288,9 +288,11 @@ def simulate(
     -------
     Trajectory, LoadedTrajectory or PushedTrajectory
         A :class:`~slidespin.motion.loaded_trajectory.LoadedTrajectory` (with stick and slip
-        phases and the energy balance) when ``load``, ``incline`` or ``t_end`` is given: see
-        :func:`slidespin.motion.loaded.simulate_loaded` (every patch that runs without a
-        load, the ``Blade`` included). Otherwise a :class:`Trajectory`, whose last row is
+        phases and the energy balance) when ``load``, ``incline`` or ``t_end`` is given, and
+        for a tall body (``Body(..., height=h)`` under a constant law, MODEL §14: its status
+        is ``ok`` or ``tipping``, its ending ``stopped_stuck`` where a thin body's run says
+        ``stopped``): see :func:`slidespin.motion.loaded.simulate_loaded` (every patch that
+        runs without a load, the ``Blade`` included). Otherwise a :class:`Trajectory`, whose last row is
         the stop and holds the terminal values (ϑ*, β*) as limits along the motion. A
         :class:`~slidespin.motion.pushed_trajectory.PushedTrajectory` (the pusher's force,
         the contact point and mode over time, the energy balance) when ``pusher`` is given.
