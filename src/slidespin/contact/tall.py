@@ -142,6 +142,9 @@ class TallContact:
         self.ellipse = not base.footprint
         self._cache: dict = {}
         self._warm: tuple | None = None  # the last lift-off's coefficients (p₀, p₁, p₂)
+        self._probes: tuple | None = None  # the centroids of :meth:`_affine`'s differences
+        self._delta = 0.0
+        self._probe_cache: dict = {}
         if self.ellipse:
             bn = float(base.par[P_BN])
             xg, yg = body.pressure.centroid
@@ -309,6 +312,13 @@ class TallContact:
         c, s = math.cos(phi), math.sin(phi)
         h = self.h
         x = np.array([self.rg[0] - sigma[0], self.rg[1] - sigma[1]])
+        jinv = np.eye(2)  # Broyden's method from the fixed-point iteration (J ≈ 1) ...
+        if h > 0.0:
+            got, jac = self._affine(phi, vx, vy, omega, sigma, c, s)
+            if got is not None:
+                return got
+            if jac is not None:  # ... or from the Jacobian without lift-off
+                jinv = np.linalg.inv(jac)
 
         def resid(r):
             fx, fy, m = self.at(r)(phi, vx, vy, omega)
@@ -321,7 +331,6 @@ class TallContact:
         fr, w = resid(x)
         if h == 0.0:
             return (*w, (float(x[0]), float(x[1])))
-        jinv = np.eye(2)  # Broyden's method from the fixed-point iteration (J ≈ 1)
         for _ in range(60):
             step = -jinv @ fr
             x_new = x + step
@@ -336,6 +345,65 @@ class TallContact:
                 jinv = jinv + np.outer(step - jdf, step @ jinv) / den
             fr = f_new
         return (*w, (float(x[0]), float(x[1])))
+
+    def _lifts(self, r) -> bool:
+        """True if the linear law with centroid r turns negative on the patch."""
+        p0, p1, p2 = self._linear(r)
+        tol = -LIFT_TOL / self.area
+        if self.ellipse:
+            assert self._ell is not None
+            return p0 - math.hypot(p1 * self._ell[0], p2 * self._ell[1]) < tol
+        e, c = self.base.edges, self.base.circles
+        if len(e) and float(np.min(p0 + p1 * e[:, 0] + p2 * e[:, 1])) < tol:
+            return True
+        return any(
+            sg > 0.0 and p0 + p1 * ox + p2 * oy - math.hypot(p1, p2) * rad < tol
+            for ox, oy, rad, sg in c
+        )
+
+    def _affine(self, phi, vx, vy, omega, sigma, c, s):
+        """:meth:`solve` without lift-off, in one step: the wrench is affine in r_p (the
+        linear law's coefficients are), W(r) = W(r_G) + D (r − r_G) with D from the pressures
+        centred at r_G + δ e_x, r_G + δ e_y (kept: their kernels are built once), so
+        (1 + h D_F) (r − r_G) = −σ − h F(r_G) is solved exactly. Returns (the wrench and r_p,
+        the Jacobian 1 + h D_F); the wrench is None where the solution would lift off (then
+        :meth:`solve` iterates, from that Jacobian), and both where a probe would."""
+        probes = self._probes
+        if probes is None:
+            gx, gy = self.rg
+            delta = 0.01
+            while delta > 1e-6 and (self._lifts((gx + delta, gy)) or self._lifts((gx, gy + delta))):
+                delta *= 0.1
+            probes = () if delta <= 1e-6 else ((gx, gy), (gx + delta, gy), (gx, gy + delta))
+            self._probes = probes
+            self._delta = delta
+        if not probes:
+            return None, None
+        w0, wx, wy = (np.array(self._at_probe(k)(phi, vx, vy, omega)) for k in range(3))
+        dx, dy = (wx - w0) / self._delta, (wy - w0) / self._delta
+
+        def body(f):
+            return np.array([c * f[0] + s * f[1], -s * f[0] + c * f[1]])
+
+        fb0, dbx, dby = body(w0), body(dx), body(dy)
+        h = self.h
+        mat = np.array([[1.0 + h * dbx[0], h * dby[0]], [h * dbx[1], 1.0 + h * dby[1]]])
+        rhs = np.array([-sigma[0] - h * fb0[0], -sigma[1] - h * fb0[1]])
+        d = np.linalg.solve(mat, rhs)
+        r = (self.rg[0] + float(d[0]), self.rg[1] + float(d[1]))
+        if self._lifts(r):
+            return None, mat
+        w = w0 + dx * d[0] + dy * d[1]
+        return (float(w[0]), float(w[1]), float(w[2]), r), mat
+
+    def _at_probe(self, k) -> _Pressed:
+        """The pressure at the k-th probe of :meth:`_affine`, built once."""
+        got = self._probe_cache.get(k)
+        if got is None:
+            assert self._probes is not None
+            got = self._make(self._probes[k])
+            self._probe_cache[k] = got
+        return got
 
 
 def tall_factors(body, friction, b, phi, raised, normal_load, load_factor_nat):
