@@ -236,13 +236,7 @@ def load_factor(
     ...                   incline=Incline(math.atan(0.25))), 12)
     1.4
     """
-    _check(body, friction)
-    phi = v.finite("phi", phi)
-    w = _applied(body, applied_wrench, phi, t)
-    nf = _normal(incline, 1.0)
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    w = _with_pull(body, w, incline, g)
-    b = _natural_wrench(body, w, nf, g)
+    phi, w, nf, g, b = _inputs(body, friction, applied_wrench, phi, g, incline, t)
     if not _check_load("applied_wrench", b, incline):
         return math.inf
     if body.height > 0.0:
@@ -265,6 +259,19 @@ def _tall(body, friction, applied_wrench, b, phi, t, normal_load):
     wrench ``b``, normal load P [N]) on a tall body at rest at angle φ, time t."""
     raised = _raised(body, applied_wrench, phi, t)
     return tall_factors(body, friction, b, phi, raised, normal_load, _load_factor_nat)
+
+
+def _inputs(body, friction, applied_wrench, phi, g, incline, t):
+    """The checked inputs of :func:`load_factor`, :func:`onset` and
+    :func:`slidespin.breakaway`: (φ, W_a with gravity's pull [N, N, N m], cos α, g, W_a per
+    unit normal load in natural units)."""
+    _check(body, friction)
+    phi = v.finite("phi", phi)
+    w = _applied(body, applied_wrench, phi, t)
+    nf = _normal(incline, 1.0)
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    w = _with_pull(body, w, incline, g)
+    return phi, w, nf, g, _natural_wrench(body, w, nf, g)
 
 
 def _natural_wrench(body, w, nf, g):
@@ -514,14 +521,8 @@ def onset(
     >>> [round(float(x), 9) for x in o.direction], round(o.acceleration, 9)  # (5 − 3) N / 1 kg
     ([1.0, 0.0, 0.0], 2.0)
     """
-    _check(body, friction)
-    phi = v.finite("phi", phi)
-    w = _applied(body, applied_wrench, phi, t)
-    nf = _normal(incline, 1.0)
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    w = _with_pull(body, w, incline, g)
+    phi, w, nf, g, wn = _inputs(body, friction, applied_wrench, phi, g, incline, t)
     tw: TwistWrench | TallTwist
-    wn = _natural_wrench(body, w, nf, g)
     if not _check_load("applied_wrench", wn, incline):
         return None
     if body.height > 0.0:

@@ -328,23 +328,12 @@ class TallContact:
             )
             return res, (fx, fy, m)
 
-        fr, w = resid(x)
         if h == 0.0:
+            w = resid(x)[1]
             return (*w, (float(x[0]), float(x[1])))
-        for _ in range(60):
-            step = -jinv @ fr
-            x_new = x + step
-            f_new, w_new = resid(x_new)
-            x, w = x_new, w_new
-            if float(np.max(np.abs(step))) <= _NEWTON_TOL * max(1.0, float(np.max(np.abs(x)))):
-                break
-            df = f_new - fr
-            jdf = jinv @ df
-            den = float(step @ jdf)
-            if den != 0.0:
-                jinv = jinv + np.outer(step - jdf, step @ jinv) / den
-            fr = f_new
-        return (*w, (float(x[0]), float(x[1])))
+        return _broyden(
+            resid, x, jinv, lambda xv: _NEWTON_TOL * max(1.0, float(np.max(np.abs(xv))))
+        )
 
     def _lifts(self, r) -> bool:
         """True if the linear law with centroid r turns negative on the patch."""
@@ -494,6 +483,26 @@ def _with_pressure(
         bn, _law, _xg, _yg, *rest = tw._args
         new._args = (bn, LAW_LINEAR, float(par[P_XG]), float(par[P_YG]), *rest)
     return new
+
+
+def _broyden(resid, x, jinv, step_tol):
+    """Broyden's ("good") method on the 2×2 equation ``resid(x)[0] = 0`` from x with the
+    inverse Jacobian ``jinv``, until a step is below ``step_tol(x)``; returns (*w, x) with
+    w = ``resid(x)[1]`` (the wrench) at the last x."""
+    fr, w = resid(x)
+    for _ in range(60):
+        step = -jinv @ fr
+        x = x + step
+        f_new, w = resid(x)
+        if float(np.max(np.abs(step))) <= step_tol(x):
+            break
+        df = f_new - fr
+        jdf = jinv @ df
+        den = float(step @ jdf)
+        if den != 0.0:
+            jinv = jinv + np.outer(step - jdf, step @ jinv) / den
+        fr = f_new
+    return (*w, (float(x[0]), float(x[1])))
 
 
 def _lift_message(r, what):
@@ -716,24 +725,10 @@ class TallSpeed:
             res = np.array([r[0] - rg[0] + self.h * fb[0], r[1] - rg[1] + self.h * fb[1]])
             return res, (fx, fy, m)
 
-        x = np.array(rg, dtype=float)
-        fr, w = resid(x)
-        jinv = np.eye(2)
-        for _ in range(60):
-            step = -jinv @ fr
-            x = x + step
-            f_new, w = resid(x)
-            # converged to the kernel's own accuracy (tol of the load, times h)
-            scale = max(abs(self.rg[0]), abs(self.rg[1]), self.h)
-            if float(np.max(np.abs(step))) <= max(1e-14 * scale, 10.0 * self.tol * self.h):
-                break
-            df = f_new - fr
-            jdf = jinv @ df
-            den = float(step @ jdf)
-            if den != 0.0:
-                jinv = jinv + np.outer(step - jdf, step @ jinv) / den
-            fr = f_new
-        return (*w, (float(x[0]), float(x[1])))
+        # converged to the kernel's own accuracy (tol of the load, times h)
+        scale = max(abs(self.rg[0]), abs(self.rg[1]), self.h)
+        step_tol = max(1e-14 * scale, 10.0 * self.tol * self.h)
+        return _broyden(resid, np.array(rg, dtype=float), np.eye(2), lambda xv: step_tol)
 
 
 def _density(pp, pts):

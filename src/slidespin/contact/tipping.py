@@ -28,8 +28,8 @@ from slidespin.contact.static_set import _check, _normal, static_support
 from slidespin.contact.statics import (
     _applied,
     _check_load,
+    _inputs,
     _load_factor_nat,
-    _natural_wrench,
     _raised,
     _tall,
     _with_pull,
@@ -102,13 +102,7 @@ def breakaway(
     >>> breakaway(box, fr, Load(force=(1.0, 0.0), height=0.3), g=10.0).mode
     'slide'
     """
-    _check(body, friction)
-    phi = v.finite("phi", phi)
-    w = _applied(body, applied_wrench, phi, t)
-    nf = _normal(incline, 1.0)
-    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
-    w = _with_pull(body, w, incline, g)
-    b = _natural_wrench(body, w, nf, g)
+    phi, _w, nf, g, b = _inputs(body, friction, applied_wrench, phi, g, incline, t)
     if not _check_load("applied_wrench", b, incline):
         return Breakaway("hold", math.inf, math.inf, math.inf)
     if body.height > 0.0:
