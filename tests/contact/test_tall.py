@@ -292,3 +292,32 @@ def test_pressure_centre_refuses_a_state_that_is_not_one():
     disk = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=0.05)
     with pytest.raises(ValueError, match="state = "):
         ss.pressure_centre(disk, ss.FrictionTensor(0.3, 0.3), (0.0, 1.0, 0.0))
+
+
+def test_the_slide_factor_is_the_first_root_not_the_hull_edge():
+    """Review cases: a box whose load with a torque slides before it could tip (the slide
+    root lies below the tip factor, where the pressure is far from the hull), and pads pushed
+    sideways that tip first (at the hull's exact factor). The statics' answer agrees with the
+    loaded engine's stick exit under a ramp of the same load (another path: its gauge at each
+    time)."""
+    box = _box(w=0.4, d=0.3, h=0.5)
+    fr = ss.FrictionTensor(0.5, 0.5)
+    got = ss.breakaway(box, fr, ss.Load(force=(1.0, 0.3), torque=0.03, height=0.5), g=G)
+    assert got.mode == "slide" and got.tip_factor == pytest.approx(8.0, rel=1e-12)
+    # the load grows from 7 to 8 times (1, 0.3, 0.03) over 1 s: the stick ends at λ − 7
+    ramp = ss.Load.piecewise_linear([0.0, 1.0], [7.0, 8.0], [2.1, 2.4], [0.21, 0.24],
+                                    height=0.5)  # fmt: skip
+    t_exit = got.slide_factor - 7.0
+    tr = ss.simulate(box, fr, ss.State(), load=ramp, t_end=t_exit + 1e-6, g=G,
+                     scan_step=0.05)  # fmt: skip
+    assert tr.phases[0][0] == "stick"
+    assert tr.phases[0][2] == pytest.approx(t_exit, abs=1e-8)
+    pads = ss.Body(
+        ss.Pads([Rectangle(0.05, 0.2, centre=(-0.1, 0.0)), Rectangle(0.05, 0.2, centre=(0.1, 0.0))]),
+        ss.UniformPressure(), mass=2.0, height=0.5,
+    )  # fmt: skip
+    got = ss.breakaway(pads, fr, ss.Load(force=(0.3, 1.0), torque=0.01, height=0.5), g=G)
+    assert got.mode == "tip" and got.load_factor == pytest.approx(4.0, rel=1e-12)
+    assert got.slide_factor > 4.0
+    over = ss.Load(force=(0.3 * 4.1, 4.1), torque=0.041, height=0.5)
+    assert ss.onset(pads, fr, over, g=G).mode == "tip"

@@ -56,10 +56,15 @@ __all__ = ["LiftOffUnsupported", "TallContact", "TallSpeed", "TallTwist", "tall_
 
 #: a pressure minimum above −LIFT_TOL × the mean pressure counts as ≥ 0 (no lift-off)
 LIFT_TOL = 1e-12
-#: the pressure of a state beyond the hull (no pressure exists there) is taken at this gauge
-#: of the hull, so that the equations stay continuous through the tipping event
-_GAUGE_CAP = 1.0 - 1e-9
+#: a centroid closer to the hull than this gauge (or beyond it, where no pressure exists) is
+#: taken at this gauge on its ray from G, so that the equations stay continuous through the
+#: tipping event: the part in contact is then a sliver ~3e-6 of the footprint wide, which the
+#: footprint kernel integrates to ~2e-11 of the load (measured on a box; at 1 − 1e-9 the
+#: sliver's round-off reaches 4e-8 and worse near the ICR)
+_GAUGE_CAP = 1.0 - 1e-6
 _NEWTON_TOL = 1e-15
+#: points of the scan for the first slide root in :func:`tall_factors`
+_SCAN = 8
 #: sides of the regular polygon of the same area that stands for a circle once a disk or a
 #: ring lifts off: its area and second moments are the circle's to O((2π/n)⁴) (1e-15 here);
 #: the wrench, whose integrand is not a polynomial, to O((2π/n)²) ≈ 1.5e-7 at most
@@ -429,9 +434,19 @@ def tall_factors(body, friction, b, phi, raised, normal_load, load_factor_nat):
     if math.isinf(lam_tip):
         lam_slide = lam_star(0.0)
     else:
-        lo, f_lo = 0.0, lam_star(0.0)
-        hi = min(lam_tip, f_lo)
-        f_hi = f(hi)
+        # f need not be monotone (C moves with the pressure): the first sign change on a
+        # scan of [0, hi], then Brent's method in it; beyond the hull (the pressure held at
+        # its edge) by doubling
+        f_lo = lam_star(0.0)
+        hi = min(lam_tip * _GAUGE_CAP, f_lo)
+        grid = np.linspace(0.0, hi, _SCAN + 1)[1:]
+        lo, f_hi = 0.0, f_lo
+        for lam in grid:
+            f_hi = f(lam)
+            if f_hi <= 0.0:
+                hi = lam
+                break
+            lo = lam
         while f_hi > 0.0 and hi < 1e12 * max(lam_tip, f_lo):
             lo, hi = hi, 2.0 * hi
             f_hi = f(hi)
