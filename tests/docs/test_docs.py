@@ -44,6 +44,7 @@ PUBLIC_MODULES = (
     "slidespin.contact.shapes",
     "slidespin.contact.speed_laws",
     "slidespin.contact.tall",
+    "slidespin.contact.tall_speed",
     "slidespin.contact.tipping",
     "slidespin.contact.static_set",
     "slidespin.contact.statics",

@@ -137,7 +137,7 @@ def test_a_tall_spinning_ring_under_a_stribeck_law_keeps_its_moment_balance():
     """r_p = r_G − h F(r_p)/P with F from the public wrench under the law of the shifted linear
     law (another Body: not the tall module's arithmetic)."""
     from slidespin.contact._speed_wrench import law_arrays, speed_tol
-    from slidespin.contact.tall import TallSpeed
+    from slidespin.contact.tall_speed import TallSpeed
 
     h = 0.03
     ring = ss.Annulus(0.04, 0.07)

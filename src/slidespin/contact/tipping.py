@@ -34,7 +34,8 @@ from slidespin.contact.statics import (
     _tall,
     _with_pull,
 )
-from slidespin.contact.tall import TallContact, TallSpeed
+from slidespin.contact.tall import TallContact
+from slidespin.contact.tall_speed import TallSpeed
 
 __all__ = ["Breakaway", "breakaway", "pressure_centre"]
 

@@ -48,7 +48,7 @@ from slidespin.contact._speed_wrench import (
     speed_wrench_one,
 )
 from slidespin.contact.speed_laws import PowerLaw
-from slidespin.contact.tall import TallSpeed
+from slidespin.contact.tall_speed import TallSpeed
 from slidespin.motion.state import State
 from slidespin.motion.trajectory import Trajectory
 

@@ -23,6 +23,14 @@ Every patch: the ellipses and circles of the paper and the footprints of MODEL ย
 :class:`slidespin.contact._engine.TwistWrench` (the elliptic or the exact footprint kernel)
 and the static-friction set C from ``slidespin.contact.static_set.static_support``. Natural
 units use the body's length unit (:attr:`slidespin.Body.length_unit`).
+
+MODEL ยง14 on this path: a Stribeck or table speed law (A then depends on s as well: the
+wrench of the actual slip speeds, through :mod:`slidespin.motion._law_motion`; g(0) times the
+kinetic wrench at the start from rest); and a tall body, whose pressure centroid moves with
+the friction force and the loads' heights (:class:`slidespin.contact.tall.TallContact`): at
+rest C is that of the pressure the applied force makes, and the hull's gauge at the centroid
+decides tipping (at rest in :meth:`_Problem.gauge_normal`, in slip by an event on
+:meth:`_Problem.tip_gauge`).
 """
 
 from __future__ import annotations
