@@ -29,10 +29,10 @@ class TallSpeed:
     The speed-law kernel (:mod:`slidespin.contact._speed_wrench`) takes the pressure's
     coefficients and G apart, so the pressure at r_p is the same patch with the linear law
     of centroid r_p (G kept); r_p = r_G − h F(r_p)/P is solved by Broyden's method as in
-    :meth:`TallContact.solve`. SI lengths (m) and unit load. The law's wrench at a pure
-    translation does not depend on the pressure's shape (g(|v|) times the constant law's
-    force, and the moment about G is (r_p − r_G) × F), so there r_p follows directly, lifted
-    off or not. Lift-off under a speed law is not integrated: a
+    :meth:`slidespin.contact.tall.TallContact.solve`. SI lengths (m) and unit load. The
+    law's wrench at a pure translation does not depend on the pressure's shape (g(|v|) times
+    the constant law's force, and the moment about G is (r_p − r_G) × F), so there r_p
+    follows directly, lifted off or not. Lift-off under a speed law is not integrated: a
     centroid where the linear law turns negative raises :class:`LiftOffUnsupported`.
     """
 
