@@ -18,6 +18,7 @@ import pytest
 from scipy import integrate
 
 import slidespin as ss
+from slidespin.contact.footprint_arrays import _moments
 from slidespin.contact.shapes import Polygon, Rectangle
 from slidespin.contact.tall import LiftOffUnsupported, TallContact
 
@@ -246,8 +247,6 @@ def test_a_lifted_ring_keeps_its_load_and_centroid():
     r = (0.6, 0.2)  # natural units: well beyond the ring's kern
     pressed = tall.at(r)
     tw = pressed.tw
-    from slidespin.contact.footprint_arrays import _moments
-
     e = tw.edges
     a, sx, sy, sxx, sxy, syy = _moments(e, np.zeros((0, 4)))
     p0, p1, p2 = tw.geo[3:6]

@@ -8,9 +8,12 @@ from __future__ import annotations
 import math
 
 import pytest
+from scipy.integrate import quad
 
 import slidespin as ss
+from slidespin.contact._speed_wrench import law_arrays, speed_tol
 from slidespin.contact.shapes import Rectangle
+from slidespin.contact.tall_speed import TallSpeed
 
 G = 10.0
 pytestmark = pytest.mark.xdist_group("tall_motion")
@@ -113,8 +116,6 @@ def test_the_energy_balance_of_a_spinning_tall_body():
 def test_a_tall_disk_under_a_stribeck_law_translating_stops_as_the_1d_law():
     # m dv/dt = −μ m g s(v): t_stop = ∫₀^v dv / (μ g s(v)) (quad); the force of a translation
     # does not depend on the pressure, so the height changes nothing but r_p
-    from scipy.integrate import quad
-
     mu, ratio, vs, v = 0.2, 1.3, 0.2, 0.8
     body = ss.Body(ss.Disk(0.1), ss.UniformPressure(), mass=1.0, height=0.02)
     fr = ss.FrictionTensor(mu, mu, speed_law=ss.Stribeck(ratio, vs))
@@ -136,9 +137,6 @@ def test_a_tall_body_under_a_power_law_is_refused_before_any_work():
 def test_a_tall_spinning_ring_under_a_stribeck_law_keeps_its_moment_balance():
     """r_p = r_G − h F(r_p)/P with F from the public wrench under the law of the shifted linear
     law (another Body: not the tall module's arithmetic)."""
-    from slidespin.contact._speed_wrench import law_arrays, speed_tol
-    from slidespin.contact.tall_speed import TallSpeed
-
     h = 0.03
     ring = ss.Annulus(0.04, 0.07)
     body = ss.Body(ring, ss.UniformPressure(), mass=1.0, height=h)

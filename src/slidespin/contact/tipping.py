@@ -163,10 +163,8 @@ def pressure_centre(
             f"state = {v._short(state)} is invalid; valid values: a slidespin.State (its "
             "phi, vx, vy and omega are used)"
         )
-    phi = v.finite("state.phi", getattr(state, "phi", math.nan))
-    vx, vy, om = (
-        v.finite(f"state.{n}", getattr(state, n, math.nan)) for n in ("vx", "vy", "omega")
-    )
+    phi = v.finite("state.phi", state.phi)
+    vx, vy, om = (v.finite(f"state.{n}", getattr(state, n)) for n in ("vx", "vy", "omega"))
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     gx, gy = body.mass_centre
     if body.height == 0.0:

@@ -69,7 +69,7 @@ LN_S_SPAN = 720.0
 LN_S_AFTER = 150.0
 
 
-class _LawFlow:
+class LawFlow:
     """Ã(s, u) at angle φ for one body, tensor and law (natural units; module notes)."""
 
     def __init__(self, body, friction, g: float) -> None:
@@ -151,7 +151,7 @@ def simulate_law(body, friction, initial_state: State, g: float, rtol: float, ma
     """:func:`slidespin.simulate` of a free body under ``friction.speed_law`` (module
     notes); the initial state is not at rest. ``classify(u12, u3)`` names the ending
     (:func:`slidespin.motion.simulate.classify_ending`)."""
-    flow = _LawFlow(body, friction, g)
+    flow = LawFlow(body, friction, g)
     a, k = flow.a, flow.k
     s0 = initial_state
     vxn, vyn, wn = s0.vx / flow.v_unit, s0.vy / flow.v_unit, s0.omega * flow.t_unit

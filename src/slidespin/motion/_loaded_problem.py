@@ -45,7 +45,7 @@ from slidespin.contact.speed_laws import PowerLaw, law_is_constant
 from slidespin.contact.static_set import static_support
 from slidespin.contact.statics import WRENCH_MAX, _load_factor_nat, _norm, _onset_from_par
 from slidespin.contact.tall import TallContact, TallTwist
-from slidespin.motion._law_motion import _LawFlow
+from slidespin.motion._law_motion import LawFlow
 
 _TOL = 1e-13
 #: ln s beyond which s² overflows (a trial stage the step control must reject)
@@ -180,7 +180,7 @@ class _Problem:
         self.g0 = 1.0
         if self.law is not None:
             _check_law_loaded(body, friction)
-            self.flow = _LawFlow(body, friction, g)
+            self.flow = LawFlow(body, friction, g)
             self.g0 = float(self.law.factor(0.0))
         self.tw = TwistWrench(body, friction.kinetic, _TOL)  # the wrench of any patch
         self.k = self.tw.k
