@@ -1,0 +1,335 @@
+"""The engine-independent core of a coupling: the planar friction wrench of one body for one
+engine step, with stick–slip by a discrete projection (MODEL §16).
+
+An engine integrates the body in 3-D and resolves the normal contact; :class:`SteppedFriction`
+turns the body's planar twist ν = (vx, vy, ω) relative to its support (in the support's plane
+frame: two axes in the plane, ω about the normal), its angle φ in that plane and the engine's
+normal force N into the wrench (Fx, Fy, M about the normal through G) that the engine applies
+for the step:
+
+* **slip**: W(ν) = N w(ν), the exact wrench of the patch (the compiled kernel of
+  :class:`slidespin.contact._engine.TwistWrench`, per unit load);
+* **stick or stop**, where the slip would reverse within the step (the predicted twist
+  ν + h M⁻¹(f + W(ν)) has ν⁺·Mν ≤ 0) or the body is at rest: the wrench that brings the
+  planar twist to zero at the end of the step, w_req = −M ν/h − f, if it lies in the static
+  set C (N × the set of :mod:`slidespin.contact.static_set`, times μs/μk), else W(ν) (at rest,
+  ν = 0: the point of the kinetic set's boundary on the ray of w_req). A projection onto C,
+  not a smoothed law, so a body at rest under a load inside C does not creep.
+
+Here M = diag(m, m, I) and f is the planar wrench of everything else on the body (gravity on a
+slope, springs, a finger, actuators): the engine resolves it in the same step, so it is
+estimated from the previous step, f = M (ν_k − ν_{k−1})/h − W_{k−1} (exact for loads constant
+over a step; an error of the load's change over one step otherwise), or given by the engine's
+adapter (``load``) when it knows it (the first step of a contact).
+
+Whether w_req ∈ C is decided from bounds first: the gauge γ of C is at least (d·w)/h(d) for the
+last outward normal d, and at most γ_ref + |w − w_ref|/r_in from the last exact evaluation
+(γ is subadditive; r_in, the radius of a ball inside C, is σ_min(𝔽) × the static ratio × the
+inradius of the isotropic unit set, found once). Only in between is the exact load factor of
+:mod:`slidespin.contact.statics` computed (an optimisation of a few milliseconds).
+
+May import: :mod:`slidespin.contact` (and below). Works on plain floats; the engines'
+adapters (:mod:`slidespin.engines.mujoco`, :mod:`slidespin.engines.drake`) own the frames.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from slidespin.contact._engine import TwistWrench
+from slidespin.contact.body import Body
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.outline import body_outline
+from slidespin.contact.static_set import check_anisotropy, static_support
+from slidespin.contact.statics import _load_factor_nat
+
+__all__ = ["SteppedFriction", "check_coupled"]
+
+#: a load jumping by this many times the friction's capacity within a step is an impulse
+JUMP = 5.0
+#: safety factor on the inner ball of C (the bound only decides when to compute exactly)
+_INNER_MARGIN = 0.98
+
+
+def check_coupled(body: Body, friction: FrictionTensor) -> None:
+    """Raise ValueError naming the parameter unless the body and friction can be coupled:
+    a thin body (``height`` 0: the engine resolves the tilt itself) and a constant law
+    (``static`` ≥ 1 allowed; a speed law is refused)."""
+    if not isinstance(body, Body):
+        raise TypeError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
+    if not isinstance(friction, FrictionTensor):
+        raise TypeError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    if body.height != 0.0:
+        raise ValueError(
+            f"body.height = {body.height!r} is invalid for an engine coupling; valid values: 0 "
+            "(the engine integrates the body in 3-D and shifts its own normal load: give the "
+            "thin body, whose pressure law slidespin integrates, with height=0)"
+        )
+    if friction.speed_law is not None and not friction.speed_law.is_constant:
+        raise ValueError(
+            f"friction.speed_law = {friction.speed_law!r} is invalid for an engine coupling; "
+            "valid values: None (the constant law, with static >= 1); speed laws run in "
+            "slidespin.simulate"
+        )
+    if friction.static != 1.0:
+        check_anisotropy(body, friction)
+
+
+def _unit_inradius(tw: TwistWrench) -> float:
+    """min over unit d of the isotropic unit support function h(d) = −W(d)·d (natural units):
+    the radius of the largest ball about 0 inside the isotropic unit static set."""
+
+    def h(x):
+        d = np.array(
+            [math.cos(x[0]) * math.cos(x[1]), math.sin(x[0]) * math.cos(x[1]), math.sin(x[1])]
+        )
+        fx, fy, m = tw(0.0, *d)
+        return -(fx * d[0] + fy * d[1] + m * d[2])
+
+    # a grid over the sphere, then a local refinement from its best points
+    best = []
+    for lat in np.linspace(-1.5, 1.5, 13):
+        for lon in np.linspace(0.0, 2.0 * math.pi, 24, endpoint=False):
+            best.append((h((lon, lat)), lon, lat))
+    for pole in (-math.pi / 2, math.pi / 2):
+        best.append((h((0.0, pole)), 0.0, pole))
+    best.sort()
+    from scipy.optimize import minimize  # lazy: scipy.optimize costs ~0.8 s to import
+
+    value = best[0][0]
+    for _, lon, lat in best[:4]:
+        r = minimize(h, np.array([lon, lat]), method="Nelder-Mead", options={"xatol": 1e-8})
+        value = min(value, float(r.fun))
+    return value
+
+
+class SteppedFriction:
+    """The friction of one body for an engine, step by step (MODEL §16).
+
+    Parameters
+    ----------
+    body : Body
+        The thin body (footprint or ellipse and pressure law; ``height`` 0).
+    friction : FrictionTensor
+        Its tensor (constant law; ``static`` ≥ 1 allowed). A plane-frame tensor's axes are
+        the support frame's axes.
+    mass, inertia : float
+        The mass [kg] and the moment of inertia about the normal through G [kg m²] that the
+        engine integrates with (M = diag(m, m, I) of the discrete projection).
+    dt : float
+        The engine's time step h [s].
+
+    Attributes
+    ----------
+    state : str
+        ``"slip"``, ``"stick"`` or ``"free"`` (no contact) after the last step.
+    stop_time : float
+        The time [s] at which the last slip stopped, interpolated within its step (the
+        twist, half a step after the positions in a kick-drift engine, followed under the
+        step's acceleration); NaN before any stop.
+    exact_checks : int
+        How many exact static-set tests the bounds could not spare (a counter).
+    """
+
+    def __init__(
+        self, body: Body, friction: FrictionTensor, mass: float, inertia: float, dt: float
+    ) -> None:
+        check_coupled(body, friction)
+        self.body = body
+        self.friction = friction
+        self.ell = float(body.length_unit)
+        self.tw = TwistWrench(body, friction.kinetic)
+        self.m = float(mass)
+        self.inertia = float(inertia)
+        if not (self.m > 0.0 and self.inertia > 0.0 and math.isfinite(self.m * self.inertia)):
+            raise ValueError(
+                f"mass = {mass!r}, inertia = {inertia!r} are invalid; valid range: > 0 "
+                "(the engine's mass and moment of inertia about the normal)"
+            )
+        self.dt = float(dt)
+        if not (self.dt > 0.0 and math.isfinite(self.dt)):
+            raise ValueError(f"dt = {dt!r} is invalid; valid range: > 0 s (the engine's step)")
+        iso = TwistWrench(body, FrictionTensor(1.0, 1.0))
+        smin = float(np.linalg.svd(friction.matrix, compute_uv=False)[-1])
+        # the force friction can hold per unit normal load: a load that jumps by JUMP times
+        # more within one step is an impulse
+        self.capacity = friction.static * friction.norm
+        self.r_in = _INNER_MARGIN * smin * friction.static * _unit_inradius(iso)
+        # C lies in the ball |W| ≤ μs σ_max √(1 + ρ²) per unit load (|F| ≤ σ_max P and
+        # |M| ≤ σ_max P ρ ℓ, ρ ℓ the farthest point of the footprint from G)
+        outline = body_outline(body)
+        rho = max(
+            float(np.hypot(*outline.support((math.cos(a), math.sin(a)))))
+            for a in np.linspace(0.0, 2.0 * math.pi, 720, endpoint=False)
+        )
+        rho = 1.001 * rho / self.ell
+        smax = float(np.linalg.svd(friction.matrix, compute_uv=False)[0])
+        self.r_out = friction.static * smax * math.sqrt(1.0 + rho * rho)
+        self.state = "free"
+        self._slipping = False
+        self.stop_time = math.nan
+        self.exact_checks = 0
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget the previous step (a new contact, a reset engine): the next step's load is
+        then the one given to :meth:`step`, or 0."""
+        self._t: float | None = None
+        self._nu = (0.0, 0.0, 0.0)
+        self._w = np.zeros(3)
+        self._key: tuple | None = None
+        self._ref: tuple | None = None  # (phi, b natural, gamma) of the last exact test
+        self._d: np.ndarray | None = None  # the last outward normal of C
+        self._f: tuple | None = None  # the last step's load of everything else
+
+    # -- the wrench of the patch --------------------------------------------------------
+    def kinetic(self, nu, phi: float, normal: float) -> np.ndarray:
+        """W(ν) = N w(ν) [N, N, N m] of a twist ν ≠ 0 (support frame) at angle φ."""
+        ell = self.ell
+        fx, fy, m = self.tw(float(phi), nu[0] / ell, nu[1] / ell, float(nu[2]))
+        return normal * np.array([fx, fy, m * ell])
+
+    def _gauge(self, b: np.ndarray, phi: float) -> float:
+        """γ(b) for a wrench b in natural units (per unit load, M per ℓ): b ∈ C iff γ ≤ 1."""
+        nb = float(np.linalg.norm(b))
+        if nb == 0.0:
+            return 0.0
+        body_frame = self.friction.frame == "body" or (
+            self.friction.fx == self.friction.fy and self.friction.f == 0.0
+        )
+        c, s = math.cos(phi), math.sin(phi)
+        bb = np.array([c * b[0] + s * b[1], -s * b[0] + c * b[1], b[2]])  # body frame
+        if self._ref is not None:
+            phi_r, b_ref, g_ref = self._ref
+            if body_frame or abs(phi - phi_r) <= 1e-12:
+                upper = g_ref + float(np.linalg.norm(bb - b_ref)) / self.r_in
+                if upper <= 1.0:
+                    return upper
+        sup = static_support(self.tw, self.friction, phi)
+        if self._d is not None:
+            h, _ = sup(self._d)
+            lower = float(np.dot(self._d, b)) / h
+            if lower > 1.0:
+                return lower
+        self.exact_checks += 1
+        lam, d = _load_factor_nat(sup, b, self._d)
+        gamma = 1.0 / lam if lam > 0.0 else math.inf
+        self._ref = (phi, bb, gamma)
+        self._d = d
+        return gamma
+
+    # -- one step -----------------------------------------------------------------------
+    def step(self, t: float, nu, phi: float, normal: float, load=None) -> np.ndarray:
+        """The wrench (Fx, Fy, M about the normal through G) [N, N, N m] to apply over the
+        step starting at time ``t`` [s].
+
+        Parameters
+        ----------
+        t : float
+            The engine's time at the start of the step [s]; a second call at the same time
+            and twist returns the same wrench (engines evaluate their inputs more than once).
+        nu : (3,) array_like
+            Planar twist relative to the support (vx, vy [m/s] in the support frame, ω
+            [rad/s] about its normal).
+        phi : float
+            Body angle in the support frame [rad].
+        normal : float
+            The normal force N [N] (≤ 0: no contact, no friction).
+        load : (3,) array_like or None
+            The planar wrench of everything else on the body over this step, when the
+            adapter knows it; None: estimated from the previous step if it was the step
+            just before (t − h), else 0.
+        """
+        n0, n1, n2 = (float(c) for c in nu)
+        key = (t, n0, n1, n2, phi, normal)
+        if key == self._key:
+            return self._w
+        if not normal > 0.0:
+            self.reset()
+            self.state = "free"
+            self._key = key
+            return self._w
+        h = self.dt
+        m, inertia, ell = self.m, self.inertia, self.ell
+        consecutive = self._t is not None and abs(t - self._t - h) <= 1e-9 * max(h, abs(t))
+        moving = n0 != 0.0 or n1 != 0.0 or n2 != 0.0
+        launch = False
+        if load is not None:
+            f0, f1, f2 = (float(c) for c in load)
+            launch = moving and not consecutive
+        elif consecutive:
+            p0, p1, p2 = self._nu
+            w0, w1, w2 = self._w
+            f0 = m * (n0 - p0) / h - w0
+            f1 = m * (n1 - p1) / h - w1
+            f2 = inertia * (n2 - p2) / h - w2
+            if self._f is not None:
+                # an impulse (a launch, a kick): the load jumps by far more than friction
+                # can hold; the loads are then those of the step before
+                g0, g1, g2 = self._f
+                jump = math.sqrt((f0 - g0) ** 2 + (f1 - g1) ** 2 + ((f2 - g2) / ell) ** 2)
+                if jump > JUMP * normal * self.capacity:
+                    f0, f1, f2 = g0, g1, g2
+                    launch = moving
+        else:
+            f0 = f1 = f2 = 0.0
+            launch = moving
+        self._slipping = self.state == "slip" and consecutive
+        self._t_now = t
+        w = self._decide(n0, n1, n2, phi, normal, f0, f1, f2, h, launch)
+        self._t, self._nu, self._w, self._key = t, (n0, n1, n2), w, key
+        self._f = (f0, f1, f2)
+        return w
+
+    def _stop_time(self, n0, n1, n2, f0, f1, f2, h) -> float:
+        """The time at which the slip stops within the step at ``self._t`` + h: the twist,
+        which a kick-drift engine holds half a step after its positions, continues under the
+        last step's acceleration to its smallest kinetic energy."""
+        m, inertia = self.m, self.inertia
+        w0, w1, w2 = self._w
+        a0, a1, a2 = (f0 + w0) / m, (f1 + w1) / m, (f2 + w2) / inertia
+        aa = m * (a0 * a0 + a1 * a1) + inertia * a2 * a2
+        if not aa > 0.0:
+            return self._t_now
+        tau = -(m * (n0 * a0 + n1 * a1) + inertia * n2 * a2) / aa
+        return self._t_now - 0.5 * h + min(max(tau, 0.0), h)
+
+    def _decide(self, n0, n1, n2, phi, normal, f0, f1, f2, h, launch) -> np.ndarray:
+        m, inertia, ell = self.m, self.inertia, self.ell
+        moving = n0 != 0.0 or n1 != 0.0 or n2 != 0.0
+        # the wrench that brings the twist to zero at the end of the step: if friction can
+        # hold it (it lies in C), the slip stops within the step, or the body stays at rest
+        r0 = -m * n0 / h - f0
+        r1 = -m * n1 / h - f1
+        r2 = -inertia * n2 / h - f2
+        b = np.array([r0 / normal, r1 / normal, r2 / (ell * normal)])
+        gamma = math.inf
+        if float(np.dot(b, b)) <= self.r_out**2:  # else outside C for sure
+            gamma = self._gauge(b, phi)
+            if gamma <= 1.0:
+                if self._slipping:  # a stop within this step: when, by the step's trend
+                    self.stop_time = self._stop_time(n0, n1, n2, f0, f1, f2, h)
+                self.state = "stick"
+                return np.array([r0, r1, r2])
+        self.state = "slip"
+        if not moving:  # breaking away from rest: the kinetic set's boundary on that ray
+            if not math.isfinite(gamma):
+                gamma = self._gauge(b, phi)
+            s = 1.0 / (gamma * self.friction.static)
+            return np.array([r0 * s, r1 * s, r2 * s])
+        # the engine's velocities (kick-drift) lie half a step after its positions: W is
+        # evaluated at the twist extrapolated to the step's time while the body slips (right
+        # after a launch the twist is the launch's, at that time)
+        e0, e1, e2 = n0, n1, n2
+        if self._slipping and not launch:
+            w0, w1, w2 = self._w
+            e0 += 0.5 * h * (f0 + w0) / m
+            e1 += 0.5 * h * (f1 + w1) / m
+            e2 += 0.5 * h * (f2 + w2) / inertia
+        k0, k1, k2 = self.tw(float(phi), e0 / ell, e1 / ell, e2)
+        k0, k1, k2 = normal * k0, normal * k1, normal * k2 * ell
+        if launch:  # the leapfrog start: half the step's impulse of every load
+            return np.array([0.5 * (k0 - f0), 0.5 * (k1 - f1), 0.5 * (k2 - f2)])
+        return np.array([k0, k1, k2])

@@ -1,0 +1,433 @@
+"""slidespin's exact patch friction inside MuJoCo (MODEL §16): ``attach`` and ``detach``.
+
+After ``attach(model, data, "box", body, friction)`` a plain ``mujoco.mj_step(model, data)``
+steps the scene with slidespin's friction on that body's flat contact with its support:
+
+* **The engine's own friction is switched off for that pair**: the body's geoms get condim 1
+  and the support's geoms a priority below theirs, so the body–support contacts are
+  frictionless normal contacts; contacts of the body with anything else (a finger, another
+  body) keep their condim and friction (equal priorities: MuJoCo's max rule). ``detach``
+  restores both. (The support's contacts with other geoms then take the other geom's
+  condim and friction instead of the maximum of the two: the same whenever the support's
+  friction is not above theirs.)
+* **Each step** a passive-force callback (``mujoco.set_mjcb_passive``; a callback already set
+  is chained, called first) reads the body's planar twist relative to its support, its angle
+  and the normal force, asks :class:`slidespin.engines._coupling.SteppedFriction` for the
+  wrench (the exact W(ν) in slip; the discrete projection onto the static set where the slip
+  would stop within the step) and adds it to ``data.qfrc_passive`` with ``mj_applyFT``: the
+  force at the point of the contact plane below the mass centre (so the engine sees the right
+  tipping moment), the moment about the plane's normal.
+
+Why a passive callback: ``xfrc_applied`` is the user's (a push, a controller) and would have
+to be re-set before every step by the user; an engine plugin would need a compiled C++ build
+against each MuJoCo release; the passive callback runs inside ``mj_step`` (and ``mj_forward``)
+after the collision and before the constraint solve, which is when the wrench is known, and
+costs one Python call per step.
+
+**The normal force** N is the engine's: the normal component of the constraint force on the
+body in the previous step (``data.qfrc_constraint`` of its free joint, along the support's
+normal; a push with a component along the normal adds to it, as it loads the contact). At the
+first step of a contact (and after a reset) there is no previous step: the callback runs one
+``mj_forward`` on a copy of ``data`` without the friction, which gives that step's normal force
+and the planar load of everything else (gravity, pushes, actuators, other contacts), so the
+first step already sticks or slips correctly.
+
+**Frames.** The support's plane frame: its normal n from the contacts (from the support to the
+body), its x axis the support geom's x axis projected on the plane; a plane-frame friction
+tensor's axes are those. The body's footprint is in the MuJoCo body's frame: its ξ axis is the
+body's local x axis (projected on the plane), its pressure centroid under the body's centre
+of mass. The mass and the moment of inertia about the normal are MuJoCo's (those it
+integrates with); the footprint and the pressure law are the :class:`slidespin.Body`'s.
+
+Requirements: a free body (a ``freejoint``), the Euler or implicit integrators (RK4 evaluates
+the forces at intermediate states, which the discrete projection does not allow: refused),
+and a thin ``Body`` with a constant friction law (``static`` ≥ 1 allowed).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+from pathlib import Path
+
+import numpy as np
+
+from slidespin import _validate as v
+from slidespin.contact.body import Body
+from slidespin.contact.friction import FrictionTensor
+from slidespin.engines._coupling import SteppedFriction, check_coupled
+from slidespin.studies.case import Case, load_case
+
+try:
+    import mujoco
+except ImportError as exc:  # pragma: no cover - the extra is installed in CI
+    raise ImportError(
+        'slidespin.mujoco needs MuJoCo: pip install "slidespin[mujoco]" (or pip install mujoco)'
+    ) from exc
+
+__all__ = ["Coupling", "attach", "attached", "detach"]
+
+#: data address → {body id → Coupling}
+_ATTACHED: dict[int, dict[int, Coupling]] = {}
+#: model address → {geom id → (condim, priority) before the first attach}
+_SAVED: dict[int, dict[int, tuple[int, int]]] = {}
+_CHAINED: list = []  # the passive callback that was set before ours (at most one)
+
+
+def _passive(m, d) -> None:
+    if _CHAINED and _CHAINED[0] is not None:
+        _CHAINED[0](m, d)
+    couplings = _ATTACHED.get(d._address)
+    if couplings:
+        for c in couplings.values():
+            c._apply(m, d)
+
+
+class Coupling:
+    """One body coupled to slidespin's friction in one ``(model, data)`` (returned by
+    :func:`attach`).
+
+    Attributes
+    ----------
+    body_name : str
+        The MuJoCo body.
+    friction : SteppedFriction
+        The step's core: its ``state`` (``"slip"``, ``"stick"`` or ``"free"``) and its
+        counters.
+    wrench : ndarray
+        The last wrench (Fx, Fy [N] along the support's axes, M [N m] about its normal).
+    normal_force : float
+        The last normal force N [N].
+    """
+
+    def __init__(self, model, data, body_id: int, body: Body, friction: FrictionTensor, support):
+        self.body_name = model.body(body_id).name
+        self.body_id = body_id
+        self._model_address = model._address
+        self.dof = int(model.jnt_dofadr[model.body_jntadr[body_id]])
+        self.geoms = np.arange(
+            model.body_geomadr[body_id], model.body_geomadr[body_id] + model.body_geomnum[body_id]
+        )
+        self.support = np.asarray(support, dtype=int)
+        mujoco.mj_kinematics(model, data)
+        mass = float(model.body_mass[body_id])
+        # the moment of inertia about the support normal (the body's local z at attach)
+        rot = data.ximat[body_id].reshape(3, 3)
+        inertia_world = rot @ np.diag(model.body_inertia[body_id]) @ rot.T
+        zb = data.xmat[body_id].reshape(3, 3)[:, 2]
+        izz = float(zb @ inertia_world @ zb)
+        self.friction = SteppedFriction(body, friction, mass, izz, float(model.opt.timestep))
+        self.wrench = np.zeros(3)
+        self.normal_force = 0.0
+        self._last: tuple | None = None  # (time, N) of the last step with contact
+        self._bset = {int(g) for g in self.geoms}
+        self._sset = {int(g) for g in self.support}
+        self._frames: dict[int, tuple] = {}
+        self._force, self._torque, self._point = np.zeros(3), np.zeros(3), np.zeros(3)
+        self._res = np.zeros(6)
+
+    def _frame(self, m, d, i: int, sg: int, sign: float):
+        """(n, e1, e2, point on the plane) of the support at contact ``i`` (support geom
+        ``sg``; ``sign`` turns the contact normal to point from the support to the body).
+        Kept for a static support (its plane does not move)."""
+        cached = self._frames.get(sg)
+        if cached is not None:
+            return cached
+        con = d.contact
+        n = sign * np.array(con.frame[i, :3])
+        n /= np.linalg.norm(n)
+        ax = d.geom_xmat[sg].reshape(3, 3)
+        e1 = ax[:, 0] - (ax[:, 0] @ n) * n
+        if np.linalg.norm(e1) < 1e-6:  # the support's x axis along the normal: its y axis
+            e1 = ax[:, 1] - (ax[:, 1] @ n) * n
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(n, e1)
+        out = (tuple(n.tolist()), tuple(e1.tolist()), tuple(e2.tolist()), tuple(con.pos[i]))
+        if m.geom_bodyid[sg] == 0:
+            self._frames[sg] = out
+        return out
+
+    def _free(self, d) -> None:
+        self.friction.step(d.time, (0.0, 0.0, 0.0), 0.0, 0.0)
+        self.wrench = np.zeros(3)
+        self.normal_force = 0.0
+        self._last = None
+
+    def _apply(self, m, d) -> None:
+        if d.ncon == 0:
+            return self._free(d)
+        bset, sset = self._bset, self._sset
+        found = -1
+        for i, (g1, g2) in enumerate(d.contact.geom.tolist()):
+            if g1 in sset and g2 in bset:
+                found, sg, sign = i, g1, 1.0
+                break
+            if g1 in bset and g2 in sset:
+                found, sg, sign = i, g2, -1.0
+                break
+        if found < 0:
+            return self._free(d)
+        (n0, n1, n2), (a0, a1, a2), (c0, c1, c2), pc = self._frame(m, d, found, sg, sign)
+        b, a = self.body_id, self.dof
+        gx, gy, gz = d.xipos[b].tolist()
+        ox, oy, oz = d.xpos[b].tolist()
+        r00, r01, r02, r10, r11, r12, r20, r21, r22 = d.xmat[b].tolist()
+        vx, vy, vz, u0, u1, u2 = d.qvel[a : a + 6].tolist()
+        # ω in the world frame, and the velocity of G = that of the frame origin + ω × (G − O)
+        wx = r00 * u0 + r01 * u1 + r02 * u2
+        wy = r10 * u0 + r11 * u1 + r12 * u2
+        wz = r20 * u0 + r21 * u1 + r22 * u2
+        rx, ry, rz = gx - ox, gy - oy, gz - oz
+        vx += wy * rz - wz * ry
+        vy += wz * rx - wx * rz
+        vz += wx * ry - wy * rx
+        sb = self._support_body(m, sg)
+        if sb:  # a moving support: the twist relative to it
+            res = self._res
+            mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_BODY, sb, res, 0)
+            sx, sy, sz = (d.xipos[sb]).tolist()
+            p0, p1, p2, q0, q1, q2 = res.tolist()
+            dx, dy, dz = gx - sx, gy - sy, gz - sz
+            vx -= q0 + p1 * dz - p2 * dy
+            vy -= q1 + p2 * dx - p0 * dz
+            vz -= q2 + p0 * dy - p1 * dx
+            wx, wy, wz = wx - p0, wy - p1, wz - p2
+        nu = (
+            vx * a0 + vy * a1 + vz * a2,
+            vx * c0 + vy * c1 + vz * c2,
+            wx * n0 + wy * n1 + wz * n2,
+        )
+        phi = math.atan2(r00 * c0 + r10 * c1 + r20 * c2, r00 * a0 + r10 * a1 + r20 * a2)
+        t = d.time
+        h = self.friction.dt
+        load = None
+        last = self._last
+        if last is not None and last[0] == t:
+            normal = last[1]  # the same step evaluated again (mj_forward, then mj_step)
+        elif last is not None and abs(t - last[0] - h) <= 1e-9 * max(h, t):
+            f0, f1, f2 = d.qfrc_constraint[a : a + 3].tolist()
+            normal = f0 * n0 + f1 * n1 + f2 * n2
+        else:
+            normal, load = self._dry_run(m, d, (n0, n1, n2), (a0, a1, a2), (c0, c1, c2))
+        self._last = (t, normal)
+        w = self.friction.step(t, nu, phi, normal, load)
+        self.wrench = w
+        self.normal_force = normal
+        if not normal > 0.0:
+            return None
+        fw, tq, pt = self._force, self._torque, self._point
+        w0, w1, w2 = w.tolist()
+        fw[0] = w0 * a0 + w1 * c0
+        fw[1] = w0 * a1 + w1 * c1
+        fw[2] = w0 * a2 + w1 * c2
+        tq[0], tq[1], tq[2] = w2 * n0, w2 * n1, w2 * n2
+        # the point of the contact plane below G
+        depth = (gx - pc[0]) * n0 + (gy - pc[1]) * n1 + (gz - pc[2]) * n2
+        pt[0], pt[1], pt[2] = gx - depth * n0, gy - depth * n1, gz - depth * n2
+        mujoco.mj_applyFT(m, d, fw, tq, pt, b, d.qfrc_passive)
+        if sb:
+            mujoco.mj_applyFT(m, d, -fw, -tq, pt, sb, d.qfrc_passive)
+        return None
+
+    def _support_body(self, m, sg: int) -> int:
+        """The support geom's body if it moves (0 for the world and static bodies)."""
+        sb = int(m.geom_bodyid[sg])
+        return sb if sb and m.body_dofnum[sb] > 0 else 0
+
+    def _dry_run(self, m, d, n, e1, e2):
+        """(N, planar load) of this step without the friction: ``mj_forward`` on a copy."""
+        d2 = copy.copy(d)  # a new MjData: the callback does not know it, adds nothing
+        mujoco.mj_forward(m, d2)
+        b, a = self.body_id, self.dof
+        n, e1, e2 = np.array(n), np.array(e1), np.array(e2)
+        normal = float(d2.qfrc_constraint[a : a + 3] @ n)
+        rot = d2.xmat[b].reshape(3, 3)
+        omega = rot @ d2.qvel[a + 3 : a + 6]
+        alpha = rot @ d2.qacc[a + 3 : a + 6]
+        r = d2.xipos[b] - d2.xpos[b]
+        acc = d2.qacc[a : a + 3] + np.cross(alpha, r) + np.cross(omega, np.cross(omega, r))
+        fr = self.friction
+        load = (fr.m * float(acc @ e1), fr.m * float(acc @ e2), fr.inertia * float(alpha @ n))
+        return normal, load
+
+
+def _body_id(model, body_name) -> int:
+    if not isinstance(body_name, str):
+        raise TypeError(f"body_name = {body_name!r} is invalid; valid values: a body's name")
+    bid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, body_name)
+    if bid < 0:
+        names = [model.body(i).name for i in range(1, model.nbody)]
+        raise ValueError(
+            f"body_name = {body_name!r} is invalid; valid values: a body of the model, one of "
+            f"{v._short(names, 200)}"
+        )
+    jnt = model.body_jntadr[bid]
+    if model.body_jntnum[bid] != 1 or model.jnt_type[jnt] != mujoco.mjtJoint.mjJNT_FREE:
+        raise ValueError(
+            f"body_name = {body_name!r} is invalid: the body has no free joint (a "
+            "<freejoint/> alone); valid values: a free body resting on its support"
+        )
+    if model.body_geomnum[bid] == 0:
+        raise ValueError(f"body_name = {body_name!r} is invalid: the body has no geom")
+    return bid
+
+
+def _support_ids(model, support) -> list[int]:
+    if support is None:
+        ids = [i for i in range(model.ngeom) if model.geom_bodyid[i] == 0]
+        if not ids:
+            raise ValueError(
+                "support = None is invalid for this model: the world body has no geom; valid "
+                "values: the names of the support's geoms"
+            )
+        return ids
+    names = [support] if isinstance(support, str) else list(support)
+    ids = []
+    for name in names:
+        gid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, str(name))
+        if gid < 0:
+            raise ValueError(
+                f"support = {support!r} is invalid: no geom named {name!r}; valid values: "
+                "names of the model's geoms"
+            )
+        ids.append(gid)
+    return ids
+
+
+def _save(model, gid: int) -> None:
+    saved = _SAVED.setdefault(model._address, {})
+    if gid not in saved:
+        saved[gid] = (int(model.geom_condim[gid]), int(model.geom_priority[gid]))
+
+
+def _inputs(body, friction):
+    if isinstance(body, (str, Path)):
+        body = load_case(body)
+    if isinstance(body, Case):
+        if friction is not None:
+            raise ValueError(
+                "friction is invalid with a case: valid values: None (the case's friction)"
+            )
+        return body.body, body.friction
+    if friction is None:
+        raise ValueError("friction = None is invalid; valid values: a FrictionTensor")
+    return body, friction
+
+
+def attach(
+    model, data, body_name: str, body, friction: FrictionTensor | None = None, *, support=None
+) -> Coupling:
+    """Apply slidespin's exact friction to a free body of a MuJoCo model (MODEL §16).
+
+    After this call a plain ``mujoco.mj_step(model, data)`` steps with slidespin's friction on
+    the contact of that body with its support (see the module docstring for how).
+
+    Parameters
+    ----------
+    model, data : mujoco.MjModel, mujoco.MjData
+        The scene (its integrator Euler, implicit or implicitfast).
+    body_name : str
+        The free body (a ``<freejoint/>``) whose flat contact slidespin supplies.
+    body : Body, Case, str or Path
+        The slidespin body (footprint and pressure law; its frame is the MuJoCo body's, its
+        pressure centroid under the body's centre of mass), or a case (a :class:`Case` or a
+        case file's path) giving the body and its friction.
+    friction : FrictionTensor or None
+        Its friction tensor (None with a case).
+    support : str, sequence of str or None
+        The geoms the body rests on; None: every geom of the world body (a floor, a plane, a
+        static table).
+
+    Returns
+    -------
+    Coupling
+        The handle: its last wrench, normal force and state (slip, stick, free).
+
+    Raises
+    ------
+    ValueError
+        An unknown or non-free body, an unknown support geom, the RK4 integrator, a body
+        already attached in this ``data``, a tall body or a speed law (see
+        :func:`slidespin.engines._coupling.check_coupled`).
+    """
+    if not isinstance(model, mujoco.MjModel) or not isinstance(data, mujoco.MjData):
+        raise TypeError(
+            f"model, data = {type(model).__name__}, {type(data).__name__} are invalid; valid "
+            "values: a mujoco.MjModel and its mujoco.MjData"
+        )
+    body, friction = _inputs(body, friction)
+    check_coupled(body, friction)
+    if model.opt.integrator == mujoco.mjtIntegrator.mjINT_RK4:
+        raise ValueError(
+            "model.opt.integrator = RK4 is invalid for a coupling; valid values: Euler, "
+            "implicit, implicitfast (the discrete projection acts once per step)"
+        )
+    bid = _body_id(model, body_name)
+    couplings = _ATTACHED.setdefault(data._address, {})
+    if bid in couplings:
+        raise ValueError(
+            f"body_name = {body_name!r} is invalid: already attached in this data; detach it "
+            "first"
+        )
+    support_ids = _support_ids(model, support)
+    geoms = range(model.body_geomadr[bid], model.body_geomadr[bid] + model.body_geomnum[bid])
+    if set(geoms) & set(support_ids):
+        raise ValueError(
+            f"support = {support!r} is invalid: it names a geom of {body_name!r} itself"
+        )
+    top = max(int(model.geom_priority[g]) for g in geoms)
+    for g in geoms:
+        _save(model, g)
+        model.geom_condim[g] = 1
+    for g in support_ids:
+        _save(model, g)
+        model.geom_priority[g] = min(int(model.geom_priority[g]), top - 1)
+    coupling = Coupling(model, data, bid, body, friction, support_ids)
+    couplings[bid] = coupling
+    current = mujoco.get_mjcb_passive()
+    if current is not _passive:
+        _CHAINED[:] = [current]
+        mujoco.set_mjcb_passive(_passive)
+    return coupling
+
+
+def attached(data) -> list[str]:
+    """The names of the bodies coupled in ``data``."""
+    return [c.body_name for c in _ATTACHED.get(data._address, {}).values()]
+
+
+def detach(model, data, body_name: str | None = None) -> None:
+    """Undo :func:`attach` for one body (``body_name``) or for every body of ``data`` (None):
+    the geoms' condim and priority come back, and the passive callback chained before is
+    restored when no coupling is left."""
+    couplings = _ATTACHED.get(data._address, {})
+    if body_name is None:
+        ids = list(couplings)
+    else:
+        bid = _body_id(model, body_name)
+        if bid not in couplings:
+            raise ValueError(
+                f"body_name = {body_name!r} is invalid: not attached in this data; attached: "
+                f"{attached(data)}"
+            )
+        ids = [bid]
+    for bid in ids:
+        del couplings[bid]
+    if not couplings:
+        _ATTACHED.pop(data._address, None)
+    still = {
+        g
+        for cs in _ATTACHED.values()
+        for c in cs.values()
+        if c._model_address == model._address
+        for g in (*c.geoms, *c.support)
+    }
+    saved = _SAVED.get(model._address, {})
+    for g in list(saved):
+        if g not in still:
+            model.geom_condim[g], model.geom_priority[g] = saved.pop(g)
+    if not saved:
+        _SAVED.pop(model._address, None)
+    if not _ATTACHED and mujoco.get_mjcb_passive() is _passive:
+        mujoco.set_mjcb_passive(_CHAINED[0] if _CHAINED else None)
+        _CHAINED.clear()
