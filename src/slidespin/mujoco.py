@@ -6,6 +6,7 @@ The implementation lives in :mod:`slidespin.engines.mujoco` (the engines layer);
 is the name users import. Needs the extra: ``pip install "slidespin[mujoco]"``.
 """
 
-from slidespin.engines.mujoco import Coupling, attach, attached, detach
+from slidespin.engines.mujoco import Coupling, attach, attached, detach, set_twist
+from slidespin.engines.scenes import mujoco_xml
 
-__all__ = ["Coupling", "attach", "attached", "detach"]
+__all__ = ["Coupling", "attach", "attached", "detach", "mujoco_xml", "set_twist"]

@@ -43,12 +43,16 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
 from slidespin.contact.static_set import check_anisotropy, static_support
-from slidespin.contact.statics import _load_factor_nat
+from slidespin.contact.statics import _load_factor_nat, _onset_nat
 
 __all__ = ["SteppedFriction", "check_coupled"]
 
 #: a load jumping by this many times the friction's capacity within a step is an impulse
 JUMP = 5.0
+#: fixed-point iterations of the implicit step before the onset solver takes over
+_FIXED_POINT_ITERATIONS = 8
+#: … to this change of the twist's direction (the engine's own errors are far larger)
+_FIXED_POINT_TOL = 1e-11
 #: safety factor on the inner ball of C (the bound only decides when to compute exactly)
 _INNER_MARGIN = 0.98
 
@@ -148,6 +152,7 @@ class SteppedFriction:
                 f"mass = {mass!r}, inertia = {inertia!r} are invalid; valid range: > 0 "
                 "(the engine's mass and moment of inertia about the normal)"
             )
+        self.k = math.sqrt(self.inertia / self.m)
         self.dt = float(dt)
         if not (self.dt > 0.0 and math.isfinite(self.dt)):
             raise ValueError(f"dt = {dt!r} is invalid; valid range: > 0 s (the engine's step)")
@@ -183,6 +188,7 @@ class SteppedFriction:
         self._ref: tuple | None = None  # (phi, b natural, gamma) of the last exact test
         self._d: np.ndarray | None = None  # the last outward normal of C
         self._f: tuple | None = None  # the last step's load of everything else
+        self._known: tuple | None = None  # the part of it the adapter knew
 
     # -- the wrench of the patch --------------------------------------------------------
     def kinetic(self, nu, phi: float, normal: float) -> np.ndarray:
@@ -221,7 +227,7 @@ class SteppedFriction:
         return gamma
 
     # -- one step -----------------------------------------------------------------------
-    def step(self, t: float, nu, phi: float, normal: float, load=None) -> np.ndarray:
+    def step(self, t: float, nu, phi: float, normal: float, load=None, known=None) -> np.ndarray:
         """The wrench (Fx, Fy, M about the normal through G) [N, N, N m] to apply over the
         step starting at time ``t`` [s].
 
@@ -241,6 +247,10 @@ class SteppedFriction:
             The planar wrench of everything else on the body over this step, when the
             adapter knows it; None: estimated from the previous step if it was the step
             just before (t − h), else 0.
+        known : (3,) array_like or None
+            The part of that load the adapter knows for this step (a push it reads, gravity):
+            the estimate from the previous step then lags only in the rest (a contact, an
+            actuator), so that a push applied suddenly is held from its first step.
         """
         n0, n1, n2 = (float(c) for c in nu)
         key = (t, n0, n1, n2, phi, normal)
@@ -273,6 +283,11 @@ class SteppedFriction:
                 if jump > JUMP * normal * self.capacity:
                     f0, f1, f2 = g0, g1, g2
                     launch = moving
+            if known is not None and self._known is not None:
+                # the known part now, the rest as in the step before
+                k0, k1, k2 = self._known
+                c0, c1, c2 = (float(c) for c in known)
+                f0, f1, f2 = f0 - k0 + c0, f1 - k1 + c1, f2 - k2 + c2
         else:
             f0 = f1 = f2 = 0.0
             launch = moving
@@ -281,6 +296,7 @@ class SteppedFriction:
         w = self._decide(n0, n1, n2, phi, normal, f0, f1, f2, h, launch)
         self._t, self._nu, self._w, self._key = t, (n0, n1, n2), w, key
         self._f = (f0, f1, f2)
+        self._known = None if known is None else tuple(float(c) for c in known)
         return w
 
     def _stop_time(self, n0, n1, n2, f0, f1, f2, h) -> float:
@@ -296,8 +312,52 @@ class SteppedFriction:
         tau = -(m * (n0 * a0 + n1 * a1) + inertia * n2 * a2) / aa
         return self._t_now - 0.5 * h + min(max(tau, 0.0), h)
 
+    def _acc(self, phi, normal):
+        """u ↦ A(u): the friction accelerations (Fx/m, Fy/m, M/(m k)) [m/s²] of a twist in
+        the scaled coordinates (vx, vy, k ω) (k = √(I/m), kinetic energy ½ m |x|²)."""
+        ell, k = self.ell, self.k
+        tw, c = self.tw, normal / self.m
+
+        def acc(u):
+            fx, fy, mo = tw(phi, u[0] / ell, u[1] / ell, u[2] / k)
+            return np.array([c * fx, c * fy, c * mo * ell / k])
+
+        return acc
+
+    def _implicit(self, x, a, tau, phi, normal):
+        """The twist z ≠ 0 (scaled) with z = x + τ (a + A(z/|z|)) (an implicit step of
+        length τ from x under the loads a and friction), or None if friction holds the step
+        (no such z: the twist would stop within it)."""
+        ell, k, tw, c = self.ell, self.k, self.tw, normal / self.m
+        x0, x1, x2 = x.tolist()
+        a0, a1, a2 = a.tolist()
+        nx = math.sqrt(x0 * x0 + x1 * x1 + x2 * x2)
+        u0, u1, u2 = x0 / nx, x1 / nx, x2 / nx
+        for _ in range(_FIXED_POINT_ITERATIONS):  # a contraction while |τ A| ≪ |x|
+            fx, fy, mo = tw(phi, u0 / ell, u1 / ell, u2 / k)
+            z0 = x0 + tau * (a0 + c * fx)
+            z1 = x1 + tau * (a1 + c * fy)
+            z2 = x2 + tau * (a2 + c * mo * ell / k)
+            nz = math.sqrt(z0 * z0 + z1 * z1 + z2 * z2)
+            if nz == 0.0:
+                break
+            v0, v1, v2 = z0 / nz, z1 / nz, z2 / nz
+            moved = abs(v0 - u0) + abs(v1 - u1) + abs(v2 - u2)
+            u0, u1, u2 = v0, v1, v2
+            if moved <= _FIXED_POINT_TOL:
+                return np.array([z0, z1, z2])
+        acc = self._acc(phi, normal)
+        u = np.array([u0, u1, u2])
+        # near a stop: b + A(u) = λ u with b = x/τ + a, λ = |z|/τ > 0 (the onset problem of
+        # MODEL §11; natural units: accelerations per N/m)
+        gn = normal / self.m
+        got = _onset_nat(lambda v: acc(v) / gn, (x / tau + a) / gn, u)
+        if got is None or not got[1] > 0.0:
+            return None
+        return got[0] * got[1] * gn * tau
+
     def _decide(self, n0, n1, n2, phi, normal, f0, f1, f2, h, launch) -> np.ndarray:
-        m, inertia, ell = self.m, self.inertia, self.ell
+        m, inertia, ell, k = self.m, self.inertia, self.ell, self.k
         moving = n0 != 0.0 or n1 != 0.0 or n2 != 0.0
         # the wrench that brings the twist to zero at the end of the step: if friction can
         # hold it (it lies in C), the slip stops within the step, or the body stays at rest
@@ -305,31 +365,35 @@ class SteppedFriction:
         r1 = -m * n1 / h - f1
         r2 = -inertia * n2 / h - f2
         b = np.array([r0 / normal, r1 / normal, r2 / (ell * normal)])
-        gamma = math.inf
         if float(np.dot(b, b)) <= self.r_out**2:  # else outside C for sure
-            gamma = self._gauge(b, phi)
-            if gamma <= 1.0:
+            if self._gauge(b, phi) <= 1.0:
                 if self._slipping:  # a stop within this step: when, by the step's trend
                     self.stop_time = self._stop_time(n0, n1, n2, f0, f1, f2, h)
                 self.state = "stick"
                 return np.array([r0, r1, r2])
         self.state = "slip"
-        if not moving:  # breaking away from rest: the kinetic set's boundary on that ray
-            if not math.isfinite(gamma):
-                gamma = self._gauge(b, phi)
-            s = 1.0 / (gamma * self.friction.static)
-            return np.array([r0 * s, r1 * s, r2 * s])
-        # the engine's velocities (kick-drift) lie half a step after its positions: W is
-        # evaluated at the twist extrapolated to the step's time while the body slips (right
-        # after a launch the twist is the launch's, at that time)
-        e0, e1, e2 = n0, n1, n2
-        if self._slipping and not launch:
-            w0, w1, w2 = self._w
-            e0 += 0.5 * h * (f0 + w0) / m
-            e1 += 0.5 * h * (f1 + w1) / m
-            e2 += 0.5 * h * (f2 + w2) / inertia
-        k0, k1, k2 = self.tw(float(phi), e0 / ell, e1 / ell, e2)
-        k0, k1, k2 = normal * k0, normal * k1, normal * k2 * ell
-        if launch:  # the leapfrog start: half the step's impulse of every load
-            return np.array([0.5 * (k0 - f0), 0.5 * (k1 - f1), 0.5 * (k2 - f2)])
-        return np.array([k0, k1, k2])
+        x = np.array([n0, n1, k * n2])  # scaled twist and loads
+        a = np.array([f0 / m, f1 / m, f2 / (m * k)])
+        if launch:
+            # the leapfrog start: the twist is the launch's, at the positions' time; half
+            # the step's impulse of every load
+            fx, fy, mo = self.tw(float(phi), n0 / ell, n1 / ell, n2)
+            c = 0.5 * normal
+            return np.array([c * fx - 0.5 * f0, c * fy - 0.5 * f1, c * mo * ell - 0.5 * f2])
+        # kick-drift: the engine's twist lies half a step before the positions' time, and
+        # the friction is that of the twist z at that time, z = x + (h/2)(a + A(z)) (the
+        # implicit midpoint: second order, and stable where the twist nears zero); if the
+        # twist would stop by then and cannot stick at the end, the implicit Euler step
+        z = self._implicit(x, a, 0.5 * h, phi, normal) if moving else None
+        if z is None:
+            z = self._implicit(x, a, h, phi, normal) if moving else None
+        if z is None:  # at rest, breaking away: the onset direction (MODEL §11)
+            gn = normal / m
+            got = _onset_nat(
+                lambda v: self._acc(phi, normal)(v) / gn, a / gn, a / np.linalg.norm(a)
+            )
+            if got is None:  # pragma: no cover - the load lies beyond C (tested above)
+                raise RuntimeError("the coupling found no slip direction from rest")
+            z = got[0]
+        fx, fy, mo = self.tw(float(phi), z[0] / ell, z[1] / ell, z[2] / k)
+        return np.array([normal * fx, normal * fy, normal * mo * ell])

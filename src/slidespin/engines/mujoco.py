@@ -48,6 +48,7 @@ from __future__ import annotations
 
 import copy
 import math
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -65,21 +66,22 @@ except ImportError as exc:  # pragma: no cover - the extra is installed in CI
         'slidespin.mujoco needs MuJoCo: pip install "slidespin[mujoco]" (or pip install mujoco)'
     ) from exc
 
-__all__ = ["Coupling", "attach", "attached", "detach"]
+__all__ = ["Coupling", "attach", "attached", "detach", "set_twist"]
 
-#: data address → {body id → Coupling}
-_ATTACHED: dict[int, dict[int, Coupling]] = {}
+#: data address → (weak reference to the data, {body id → Coupling}); the reference tells a
+#: data freed without ``detach`` from a new one at the same address
+_ATTACHED: dict[int, tuple[weakref.ref, dict[int, Coupling]]] = {}
 #: model address → {geom id → (condim, priority) before the first attach}
-_SAVED: dict[int, dict[int, tuple[int, int]]] = {}
+_SAVED: dict[int, tuple[weakref.ref, dict[int, tuple[int, int]]]] = {}
 _CHAINED: list = []  # the passive callback that was set before ours (at most one)
 
 
 def _passive(m, d) -> None:
     if _CHAINED and _CHAINED[0] is not None:
         _CHAINED[0](m, d)
-    couplings = _ATTACHED.get(d._address)
-    if couplings:
-        for c in couplings.values():
+    entry = _ATTACHED.get(d._address)
+    if entry is not None and entry[0]() is d:
+        for c in entry[1].values():
             c._apply(m, d)
 
 
@@ -125,6 +127,7 @@ class Coupling:
         self._frames: dict[int, tuple] = {}
         self._force, self._torque, self._point = np.zeros(3), np.zeros(3), np.zeros(3)
         self._res = np.zeros(6)
+        self._weight = tuple((mass * model.opt.gravity).tolist())
 
     def _frame(self, m, d, i: int, sg: int, sign: float):
         """(n, e1, e2, point on the plane) of the support at contact ``i`` (support geom
@@ -210,7 +213,22 @@ class Coupling:
         else:
             normal, load = self._dry_run(m, d, (n0, n1, n2), (a0, a1, a2), (c0, c1, c2))
         self._last = (t, normal)
-        w = self.friction.step(t, nu, phi, normal, load)
+        # the loads known before the solve: gravity, xfrc_applied, qfrc_applied (the rest,
+        # contacts and actuators, the coupling takes from the step before)
+        q0, q1, q2, s0, s1, s2 = (d.qfrc_applied[a : a + 6]).tolist()
+        x0, x1, x2, y0, y1, y2 = d.xfrc_applied[b].tolist()
+        mg0, mg1, mg2 = self._weight
+        px, py, pz = q0 + x0 + mg0, q1 + x1 + mg1, q2 + x2 + mg2
+        # qfrc_applied's torque: body frame, about the frame origin; to G: + (O − G) × F
+        t0 = r00 * s0 + r01 * s1 + r02 * s2 + y0 - (ry * q2 - rz * q1)
+        t1 = r10 * s0 + r11 * s1 + r12 * s2 + y1 - (rz * q0 - rx * q2)
+        t2 = r20 * s0 + r21 * s1 + r22 * s2 + y2 - (rx * q1 - ry * q0)
+        known = (
+            px * a0 + py * a1 + pz * a2,
+            px * c0 + py * c1 + pz * c2,
+            t0 * n0 + t1 * n1 + t2 * n2,
+        )
+        w = self.friction.step(t, nu, phi, normal, load, known)
         self.wrench = w
         self.normal_force = normal
         if not normal > 0.0:
@@ -294,8 +312,17 @@ def _support_ids(model, support) -> list[int]:
     return ids
 
 
+def _saved(model) -> dict[int, tuple[int, int]]:
+    """The saved (condim, priority) of ``model``'s geoms (not those of a freed model)."""
+    entry = _SAVED.get(model._address)
+    if entry is None or entry[0]() is not model:
+        entry = (weakref.ref(model), {})
+        _SAVED[model._address] = entry
+    return entry[1]
+
+
 def _save(model, gid: int) -> None:
-    saved = _SAVED.setdefault(model._address, {})
+    saved = _saved(model)
     if gid not in saved:
         saved[gid] = (int(model.geom_condim[gid]), int(model.geom_priority[gid]))
 
@@ -363,11 +390,10 @@ def attach(
             "implicit, implicitfast (the discrete projection acts once per step)"
         )
     bid = _body_id(model, body_name)
-    couplings = _ATTACHED.setdefault(data._address, {})
+    couplings = _couplings(data, create=True)
     if bid in couplings:
         raise ValueError(
-            f"body_name = {body_name!r} is invalid: already attached in this data; detach it "
-            "first"
+            f"body_name = {body_name!r} is invalid: already attached in this data; detach it first"
         )
     support_ids = _support_ids(model, support)
     geoms = range(model.body_geomadr[bid], model.body_geomadr[bid] + model.body_geomnum[bid])
@@ -391,16 +417,28 @@ def attach(
     return coupling
 
 
+def _couplings(data, create: bool = False) -> dict[int, Coupling]:
+    """The couplings of ``data`` (forgetting those of a freed data at its address)."""
+    entry = _ATTACHED.get(data._address)
+    if entry is None or entry[0]() is not data:
+        _ATTACHED.pop(data._address, None)
+        if not create:
+            return {}
+        entry = (weakref.ref(data), {})
+        _ATTACHED[data._address] = entry
+    return entry[1]
+
+
 def attached(data) -> list[str]:
     """The names of the bodies coupled in ``data``."""
-    return [c.body_name for c in _ATTACHED.get(data._address, {}).values()]
+    return [c.body_name for c in _couplings(data).values()]
 
 
 def detach(model, data, body_name: str | None = None) -> None:
     """Undo :func:`attach` for one body (``body_name``) or for every body of ``data`` (None):
     the geoms' condim and priority come back, and the passive callback chained before is
     restored when no coupling is left."""
-    couplings = _ATTACHED.get(data._address, {})
+    couplings = _couplings(data)
     if body_name is None:
         ids = list(couplings)
     else:
@@ -417,12 +455,12 @@ def detach(model, data, body_name: str | None = None) -> None:
         _ATTACHED.pop(data._address, None)
     still = {
         g
-        for cs in _ATTACHED.values()
+        for _, cs in _ATTACHED.values()
         for c in cs.values()
         if c._model_address == model._address
         for g in (*c.geoms, *c.support)
     }
-    saved = _SAVED.get(model._address, {})
+    saved = _saved(model)
     for g in list(saved):
         if g not in still:
             model.geom_condim[g], model.geom_priority[g] = saved.pop(g)
@@ -431,3 +469,22 @@ def detach(model, data, body_name: str | None = None) -> None:
     if not _ATTACHED and mujoco.get_mjcb_passive() is _passive:
         mujoco.set_mjcb_passive(_CHAINED[0] if _CHAINED else None)
         _CHAINED.clear()
+
+
+def set_twist(model, data, body_name: str, vx: float, vy: float, omega: float) -> None:
+    """Launch a free body: set its planar twist (vx, vy [m/s] of its mass centre along the
+    world x and y axes, ω [rad/s] about the world z axis; the other three components 0).
+
+    MuJoCo's free joint holds the velocity of the body frame's origin (world frame) and the
+    angular velocity in the body frame; this converts, so that the mass centre moves as
+    given even when it is not at the body frame's origin.
+    """
+    bid = _body_id(model, body_name)
+    for name, value in (("vx", vx), ("vy", vy), ("omega", omega)):
+        v.finite(name, value)
+    mujoco.mj_kinematics(model, data)
+    a = int(model.jnt_dofadr[model.body_jntadr[bid]])
+    w = np.array([0.0, 0.0, float(omega)])
+    r = data.xipos[bid] - data.xpos[bid]
+    data.qvel[a : a + 3] = np.array([float(vx), float(vy), 0.0]) - np.cross(w, r)
+    data.qvel[a + 3 : a + 6] = data.xmat[bid].reshape(3, 3).T @ w
