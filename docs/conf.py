@@ -304,7 +304,7 @@ def _process_docstring(app, what, name, obj, options, lines) -> None:
 #   function re-exported by ``slidespin.cli``), which cannot be declared under that name a
 #   second time: the module docstring and its members one by one.
 # Private modules (``_*.py``) are not documented; references to them are ignored above.
-LAYERS = ("contact", "motion", "analysis", "studies", "viz", "paper", "cli")
+LAYERS = ("contact", "motion", "analysis", "studies", "engines", "viz", "paper", "cli")
 
 
 def layer_modules(layer: str) -> list[str]:

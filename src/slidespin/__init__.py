@@ -11,8 +11,10 @@ Every public name is importable from here (``import slidespin as ss``), each imp
 defining module on first use, so that importing slidespin costs little until a name is used. The sub-packages are
 the layers of the code, each importing only those below it (docs/development.md, "Where
 things live"): :mod:`slidespin.contact` < :mod:`slidespin.motion` < :mod:`slidespin.analysis`
-< :mod:`slidespin.studies` < :mod:`slidespin.viz` < :mod:`slidespin.paper` <
-:mod:`slidespin.cli`.
+< :mod:`slidespin.studies` < :mod:`slidespin.engines` < :mod:`slidespin.viz` <
+:mod:`slidespin.paper` < :mod:`slidespin.cli`. The engine couplings (MODEL §16) are the modules
+:mod:`slidespin.mujoco` and :mod:`slidespin.drake` (``ss.mujoco``, ``ss.drake``; optional
+extras ``slidespin[mujoco]``, ``slidespin[drake]``).
 """
 
 from __future__ import annotations
@@ -62,6 +64,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.contact.statics import Onset, can_stick, critical_tilt, load_factor, onset
     from slidespin.contact.tipping import Breakaway, breakaway, pressure_centre
     from slidespin.contact.wrench import Wrench, friction_wrench
+    from slidespin.engines.parameters import EngineParameters, engine_parameters
     from slidespin.motion.batch import StopResults, simulate_bodies, simulate_cases, simulate_many
     from slidespin.motion.loaded import simulate_loaded
     from slidespin.motion.loaded_trajectory import LoadedTrajectory
@@ -88,6 +91,11 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
 #: ``import slidespin`` and ``slidespin --version`` do not load the numerical stack
 _HOMES = {
     "paper": "slidespin.paper",
+    # the engine couplings (optional extras; not in __all__, so that ``import *`` needs none)
+    "mujoco": "slidespin.mujoco",
+    "drake": "slidespin.drake",
+    "EngineParameters": "slidespin.engines.parameters",
+    "engine_parameters": "slidespin.engines.parameters",
     "FitWarning": "slidespin.analysis.fit",
     "IdentifiabilityWarning": "slidespin.analysis.fit",
     "compare_frames": "slidespin.analysis.fit",
@@ -281,6 +289,10 @@ __all__ = [
     "plot_sweep",
     "animate",
     "frame_states",
+    # engines: their own contact parameters fitted to the exact model (MODEL §16); the
+    # couplings are the modules slidespin.mujoco and slidespin.drake
+    "engine_parameters",
+    "EngineParameters",
     # the paper's tables and figures (slidespin.paper.table1, ...)
     "paper",
 ]

@@ -108,6 +108,14 @@ PUBLIC_MODULES = (
     "slidespin.paper.semianalytic",
     "slidespin.paper.table1",
     "slidespin.paper.table2",
+    # engines (and the names users import them by)
+    "slidespin.engines",
+    "slidespin.engines.drake",
+    "slidespin.engines.mujoco",
+    "slidespin.engines.parameters",
+    "slidespin.engines.scenes",
+    "slidespin.mujoco",
+    "slidespin.drake",
     # cli
     "slidespin.cli",
     "slidespin.cli.animate",
@@ -207,7 +215,9 @@ def test_every_public_name_is_in_the_api_reference(site):
     missing = [m for m in PUBLIC_MODULES if not _hidden(m) and m not in documented]
     assert not missing, f"modules not in the API reference: {missing}"
     # one page for the top-level names and one per layer
-    for page in ("slidespin", "contact", "motion", "analysis", "studies", "viz", "paper", "cli"):
+    for page in (
+        "slidespin", "contact", "motion", "analysis", "studies", "engines", "viz", "paper", "cli"
+    ):  # fmt: skip
         assert (site / "api" / f"{page}.html").is_file(), page
 
 

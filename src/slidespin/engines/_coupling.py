@@ -49,12 +49,19 @@ __all__ = ["SteppedFriction", "check_coupled"]
 
 #: a load jumping by this many times the friction's capacity within a step is an impulse
 JUMP = 5.0
+#: a twist below this fraction of one step's change by friction is rest
+_REST = 1e-9
 #: fixed-point iterations of the implicit step before the onset solver takes over
 _FIXED_POINT_ITERATIONS = 8
 #: … to this change of the twist's direction (the engine's own errors are far larger)
 _FIXED_POINT_TOL = 1e-11
 #: safety factor on the inner ball of C (the bound only decides when to compute exactly)
 _INNER_MARGIN = 0.98
+
+
+def _dist(a, b, ell: float) -> float:
+    """|a − b| for wrenches (F, F, M), the moment per ℓ."""
+    return math.sqrt((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2 + ((a[2] - b[2]) / ell) ** 2)
 
 
 def check_coupled(body: Body, friction: FrictionTensor) -> None:
@@ -187,8 +194,9 @@ class SteppedFriction:
         self._key: tuple | None = None
         self._ref: tuple | None = None  # (phi, b natural, gamma) of the last exact test
         self._d: np.ndarray | None = None  # the last outward normal of C
-        self._f: tuple | None = None  # the last step's load of everything else
-        self._known: tuple | None = None  # the part of it the adapter knew
+        self._u: tuple | None = None  # the last accepted unknown part of the load
+        self._u_raw: tuple | None = None  # … and the last estimate of it
+        self._known: tuple | None = None  # the part of the load the adapter knew
 
     # -- the wrench of the patch --------------------------------------------------------
     def kinetic(self, nu, phi: float, normal: float) -> np.ndarray:
@@ -264,39 +272,50 @@ class SteppedFriction:
         h = self.dt
         m, inertia, ell = self.m, self.inertia, self.ell
         consecutive = self._t is not None and abs(t - self._t - h) <= 1e-9 * max(h, abs(t))
-        moving = n0 != 0.0 or n1 != 0.0 or n2 != 0.0
+        # a twist below round-off of one step's change is rest (engines leave ~1e-19 m/s)
+        tol = _REST * h * normal * self.capacity / m
+        moving = n0 * n0 + n1 * n1 + (ell * n2) ** 2 > tol * tol
+        if not moving:
+            n0 = n1 = n2 = 0.0
+        kn = None if known is None else tuple(float(c) for c in known)
         launch = False
         if load is not None:
             f0, f1, f2 = (float(c) for c in load)
             launch = moving and not consecutive
         elif consecutive:
+            # the load of the step before, from the change of the twist; its unknown part
+            # (less what the adapter knew then) carries over to this step
             p0, p1, p2 = self._nu
             w0, w1, w2 = self._w
-            f0 = m * (n0 - p0) / h - w0
-            f1 = m * (n1 - p1) / h - w1
-            f2 = inertia * (n2 - p2) / h - w2
-            if self._f is not None:
-                # an impulse (a launch, a kick): the load jumps by far more than friction
-                # can hold; the loads are then those of the step before
-                g0, g1, g2 = self._f
-                jump = math.sqrt((f0 - g0) ** 2 + (f1 - g1) ** 2 + ((f2 - g2) / ell) ** 2)
-                if jump > JUMP * normal * self.capacity:
-                    f0, f1, f2 = g0, g1, g2
-                    launch = moving
-            if known is not None and self._known is not None:
-                # the known part now, the rest as in the step before
+            u0 = m * (n0 - p0) / h - w0
+            u1 = m * (n1 - p1) / h - w1
+            u2 = inertia * (n2 - p2) / h - w2
+            if self._known is not None:
                 k0, k1, k2 = self._known
-                c0, c1, c2 = (float(c) for c in known)
-                f0, f1, f2 = f0 - k0 + c0, f1 - k1 + c1, f2 - k2 + c2
+                u0, u1, u2 = u0 - k0, u1 - k1, u2 - k2
+            raw = (u0, u1, u2)
+            if self._u is not None:
+                # an impulse (a launch, a kick): the load jumps by far more than friction can
+                # hold, from the last accepted one and from the last estimate; the step then
+                # keeps the last accepted load (a lasting change is accepted a step later)
+                thr = JUMP * normal * self.capacity
+                if _dist(raw, self._u, ell) > thr and _dist(raw, self._u_raw, ell) > thr:
+                    u0, u1, u2 = self._u
+                    launch = moving
+            self._u_raw = raw
+            self._u = (u0, u1, u2)
+            f0, f1, f2 = u0, u1, u2
+            if kn is not None:
+                f0, f1, f2 = f0 + kn[0], f1 + kn[1], f2 + kn[2]
         else:
-            f0 = f1 = f2 = 0.0
+            f0, f1, f2 = kn if kn is not None else (0.0, 0.0, 0.0)
             launch = moving
+            self._u = self._u_raw = (0.0, 0.0, 0.0)
         self._slipping = self.state == "slip" and consecutive
         self._t_now = t
         w = self._decide(n0, n1, n2, phi, normal, f0, f1, f2, h, launch)
         self._t, self._nu, self._w, self._key = t, (n0, n1, n2), w, key
-        self._f = (f0, f1, f2)
-        self._known = None if known is None else tuple(float(c) for c in known)
+        self._known = kn
         return w
 
     def _stop_time(self, n0, n1, n2, f0, f1, f2, h) -> float:

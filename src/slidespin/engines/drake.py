@@ -36,11 +36,11 @@ the sampled results are still empty; N is then ``initial_normal``, by default m 
 ``initial_normal=0`` for a body that starts off the support.
 
 Loads. ``SteppedFriction`` needs the planar wrench f of everything else on the body over the
-step (for the stick decision). This adapter gives it as the known part (gravity's tangential
-component and the forces of the ``applied_spatial_force`` input, exact for the current step)
-plus the unknown rest (other contacts, generalized forces) estimated from the previous step,
-M (ν_k − ν_{k−1})/h − W_{k−1} − f_known,k−1: exact for loads the adapter sees, one step late
-for the others.
+step (for the stick decision). This adapter gives its known part (gravity's tangential
+component and the forces of the ``applied_spatial_force`` input, exact for the current step);
+``SteppedFriction`` estimates the rest (other contacts, generalized forces) from the previous
+step, M (ν_k − ν_{k−1})/h − W_{k−1} − f_known,k−1: exact for loads the adapter sees, one
+step late for the others.
 
 The body's own tangential friction in Drake must be zero (slidespin supplies it): give its
 collision geometries ``CoulombFriction(0, 0)`` (Drake combines friction coefficients
@@ -95,12 +95,8 @@ except ImportError as exc:  # pragma: no cover - exercised only without the extr
 from slidespin import _validate as v
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
-from slidespin.engines import _coupling
 from slidespin.engines._coupling import SteppedFriction, check_coupled
 from slidespin.engines.scenes import prism_parts
-
-#: an unseen load jumping by this many times friction's capacity within a step is an impulse
-_JUMP = float(getattr(_coupling, "JUMP", 5.0))
 
 __all__ = [
     "ExampleDiagram",
@@ -128,11 +124,9 @@ def _find_body(plant: MultibodyPlant, body) -> RigidBody:
             f"body = {body!r} is invalid; valid values: a RigidBody of the plant or its name"
         )
     index = body.index()
-    if int(index) >= plant.num_bodies() or plant.get_body(index).name() != body.name() or (
-        plant.get_body(index).model_instance() != body.model_instance()
-    ):
+    if body.GetParentPlant() is not plant:
         raise ValueError(
-            f"body = {body.name()!r} is invalid: it is not a body of this plant; valid "
+            f"body = {body.name()!r} is invalid: it is a body of another plant; valid "
             "values: a RigidBody of the plant given as ``plant`` (or its name)"
         )
     if index == plant.world_body().index():
@@ -272,6 +266,7 @@ class PatchFriction(LeafSystem):
         self.plant = plant
         self.body = body
         self.body_index = body.index()
+        self._i = int(self.body_index)
         self.slidespin_body = slidespin_body
         self.friction = friction
         R = support.rotation().matrix()
@@ -291,8 +286,6 @@ class PatchFriction(LeafSystem):
         self.coupling = SteppedFriction(
             slidespin_body, friction, self.mass, self.inertia, float(plant.time_step())
         )
-        self._mdiag = np.array([self.mass, self.mass, self.inertia])
-        self._capacity = float(friction.static * friction.norm)
         gvec = np.asarray(plant.gravity_field().gravity_vector(), dtype=float)
         self._gravity = m * np.array([gvec @ self._S[:, 0], gvec @ self._S[:, 1], 0.0])
         if initial_normal is None:
@@ -301,8 +294,10 @@ class PatchFriction(LeafSystem):
         self._fixed_normal = None if normal_force is None else _nonneg("normal_force", normal_force)
         self._geometries = set(plant.GetCollisionGeometriesForBody(body))
 
-        self.DeclareAbstractInputPort("body_poses", plant.get_body_poses_output_port().Allocate())
-        self.DeclareAbstractInputPort(
+        self._poses = self.DeclareAbstractInputPort(
+            "body_poses", plant.get_body_poses_output_port().Allocate()
+        )
+        self._velocities = self.DeclareAbstractInputPort(
             "body_spatial_velocities", plant.get_body_spatial_velocities_output_port().Allocate()
         )
         if self._fixed_normal is None:
@@ -314,10 +309,10 @@ class PatchFriction(LeafSystem):
                     "MultibodyPlantConfig(use_sampled_output_ports=True) (Drake's default), "
                     "or a constant normal_force [N]"
                 )
-            self.DeclareAbstractInputPort(
+            self._contacts = self.DeclareAbstractInputPort(
                 "contact_results", AbstractValue.Make(ContactResults())
             )
-        self.DeclareAbstractInputPort(
+        self._applied = self.DeclareAbstractInputPort(
             "applied_spatial_force", AbstractValue.Make([ExternallyAppliedSpatialForce()])
         )
         self.DeclareAbstractOutputPort(
@@ -329,19 +324,27 @@ class PatchFriction(LeafSystem):
         self.normal = 0.0
         self.wrench = np.zeros(3)
         self.reset()
+        self._first = True
 
     # -- state kept outside the context ------------------------------------------------
     def reset(self) -> None:
-        """Forget the previous step (call it after changing the context's state by hand);
-        the next step's normal force, if the sampled contact results are empty, is then
-        ``initial_normal``."""
+        """Forget the previous step: call it after changing the context's state by hand (a
+        launch velocity), so that the change is not read as a load. The normal force still
+        comes from the contact results (``initial_normal`` serves only the first step after
+        ``Simulator.Initialize()``, which calls this too)."""
         self.coupling.reset()
-        self._first = True
-        self._cur: tuple | None = None  # (t, nu, w, known, rest, raw estimate)
-        self._prev: tuple | None = None
+        self._first = False
+        self._cur: tuple | None = None  # (t, nu, w) of the last step
 
     def _on_init(self, context) -> None:
         self.reset()
+        self._first = True
+
+    @property
+    def stop_time(self) -> float:
+        """The time [s] at which the last slip stopped, interpolated within its step by
+        :class:`SteppedFriction` (NaN before any stop)."""
+        return float(getattr(self.coupling, "stop_time", math.nan))
 
     # -- ports --------------------------------------------------------------------------
     def get_body_poses_input_port(self):
@@ -368,7 +371,7 @@ class PatchFriction(LeafSystem):
     def _normal_force(self, context) -> float:
         if self._fixed_normal is not None:
             return self._fixed_normal
-        cr = self.get_contact_results_input_port().Eval(context)
+        cr = self._contacts.Eval(context)
         n, total, seen = self._n, 0.0, False
         mine = self._geometries
         for i in range(cr.num_hydroelastic_contacts()):
@@ -395,15 +398,15 @@ class PatchFriction(LeafSystem):
 
     def _calc(self, context, output) -> None:
         t = float(context.get_time())
-        X_WB = self.get_body_poses_input_port().Eval(context)[int(self.body_index)]
-        V_WB = self.get_body_spatial_velocities_input_port().Eval(context)[int(self.body_index)]
-        port = self.get_applied_spatial_force_input_port()
+        X_WB = self._poses.Eval(context)[self._i]
+        V_WB = self._velocities.Eval(context)[self._i]
+        port = self._applied
         applied = list(port.Eval(context)) if port.HasValue(context) else []
         R_WB = X_WB.rotation().matrix()
         p_BoG_W = R_WB @ self._p_com
         p_WG = X_WB.translation() + p_BoG_W
         w_W = np.asarray(V_WB.rotational())
-        v_WG = np.asarray(V_WB.translational()) + np.cross(w_W, p_BoG_W)
+        v_WG = np.asarray(V_WB.translational()) + _cross(w_W, p_BoG_W)
         S, n = self._S, self._n
         nu = np.array([v_WG @ S[:, 0], v_WG @ S[:, 1], w_W @ n])
         xb = R_WB[:, 0]
@@ -416,31 +419,18 @@ class PatchFriction(LeafSystem):
             F = f.F_Bq_W
             p_WQ = X_WB.translation() + R_WB @ np.asarray(f.p_BoBq_B)
             force = np.asarray(F.translational())
-            moment = np.asarray(F.rotational()) + np.cross(p_WQ - p_WG, force)
+            moment = np.asarray(F.rotational()) + _cross(p_WQ - p_WG, force)
             known += np.array([force @ S[:, 0], force @ S[:, 1], moment @ n])
-        cur = self._cur
-        if cur is not None and cur[0] == t and np.array_equal(cur[1], nu):
+        cur, h = self._cur, self.coupling.dt
+        off_grid = abs(t / h - round(t / h)) > 1e-6  # not a plant step: a publish, a monitor
+        if cur is not None and (off_grid or (cur[0] == t and np.array_equal(cur[1], nu))):
             w = cur[2]
         else:
-            if cur is not None and cur[0] != t:
-                self._prev = cur
             normal = self._normal_force(context)
-            prev, h = self._prev, self.coupling.dt
-            rest = raw = np.zeros(3)  # the loads this system does not see, from the last step
-            if prev is not None and abs(t - prev[0] - h) <= 1e-9 * max(h, abs(t)):
-                rest = raw = self._mdiag * (nu - prev[1]) / h - prev[2] - prev[3]
-                if prev[5] is not None and normal > 0.0:
-                    # an impulse (a collision, a kick): the estimate jumps by far more than
-                    # friction can hold within a step; keep the step before's, as
-                    # SteppedFriction does (a lasting change is accepted a step later)
-                    d = raw - prev[5]
-                    jump = math.hypot(d[0], d[1], d[2] / self.coupling.ell)
-                    if jump > _JUMP * normal * self._capacity:
-                        rest = prev[4]
-            else:
-                raw = None
-            w = self.coupling.step(t, nu, phi, normal, load=known + rest)
-            self._cur = (t, nu, np.array(w, dtype=float), known, rest, raw)
+            # the loads this system does not see (other contacts) the coupling takes from
+            # the step before; gravity and the applied forces are known now
+            w = self.coupling.step(t, nu, phi, normal, known=known)
+            self._cur = (t, nu, np.array(w, dtype=float))
             self._first = False
             self.normal, self.wrench = normal, np.array(w, dtype=float)
         out = list(applied)
@@ -454,6 +444,13 @@ class PatchFriction(LeafSystem):
             f.F_Bq_W = SpatialForce(tau=n * w[2], f=force)
             out.append(f)
         output.set_value(out)
+
+
+def _cross(a, b) -> np.ndarray:
+    """a × b of two 3-vectors (np.cross costs ten times more for one pair)."""
+    return np.array(
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    )
 
 
 def _nonneg(name: str, value) -> float:
@@ -510,7 +507,8 @@ def add_patch_friction(
 # -- the example scene ------------------------------------------------------------------
 class ExampleDiagram(NamedTuple):
     """What :func:`example_diagram` returns: the built diagram, its plant, scene graph, the
-    sliding body, the coupling system and the prisms' thickness [m]."""
+    sliding body, the coupling system, the prisms' thickness [m] and the support plane X_WS
+    (for :func:`set_planar_state`)."""
 
     diagram: Diagram
     plant: MultibodyPlant
@@ -518,6 +516,7 @@ class ExampleDiagram(NamedTuple):
     body: RigidBody
     patch: PatchFriction
     thickness: float
+    support: RigidTransform
 
 
 def example_diagram(
@@ -539,7 +538,20 @@ def example_diagram(
     hydroelastic with zero Drake friction; its frame origin is G, its inertia the slidespin
     body's mass and moment of inertia about the normal (and a plate's about the horizontal
     axes). The plant uses Drake's defaults otherwise (SAP "lagged", sampled output ports).
-    Start it with :func:`set_planar_state` and ``Simulator(result.diagram)``.
+    Start it with :func:`set_planar_state`::
+
+        ex = example_diagram(body, friction)
+        sim = Simulator(ex.diagram)
+        pc = ex.plant.GetMyMutableContextFromRoot(sim.get_mutable_context())
+        set_planar_state(ex.plant, pc, ex.body, ss.State(), height=ex.thickness / 2,
+                         support=ex.support)
+        sim.Initialize()
+        sim.AdvanceTo(0.05)  # settle into the soft contact
+        z = ex.support.inverse().multiply(ex.plant.GetFreeBodyPose(pc, ex.body).translation())[2]
+        set_planar_state(ex.plant, pc, ex.body, ss.State(vx=1.0, omega=20.0), height=z,
+                         support=ex.support)
+        ex.patch.reset()  # the launch is a change of state, not a load
+        sim.AdvanceTo(1.0)
 
     Parameters
     ----------
@@ -592,21 +604,15 @@ def example_diagram(
     AddCompliantHydroelasticProperties(
         resolution_hint=ell / 2.0, hydroelastic_modulus=modulus, properties=props
     )
-    AddContactMaterial(
-        dissipation=hc, friction=CoulombFriction(0.0, 0.0), properties=props
-    )
+    AddContactMaterial(dissipation=hc, friction=CoulombFriction(0.0, 0.0), properties=props)
     for k, (kind, c, ang, size) in enumerate(parts):
         X_BP = RigidTransform(RollPitchYaw(0.0, 0.0, ang), [c[0], c[1], 0.0])
-        shape = (
-            Box(2 * size[0], 2 * size[1], t) if kind == "box" else Cylinder(size[0], t)
-        )
+        shape = Box(2 * size[0], 2 * size[1], t) if kind == "box" else Cylinder(size[0], t)
         plant.RegisterCollisionGeometry(body, X_BP, shape, f"{name}_{k}", props)
     plant.Finalize()
-    patch = add_patch_friction(
-        builder, plant, body, slidespin_body, friction, support=X_WS
-    )
+    patch = add_patch_friction(builder, plant, body, slidespin_body, friction, support=X_WS)
     diagram = builder.Build()
-    return ExampleDiagram(diagram, plant, scene_graph, body, patch, t)
+    return ExampleDiagram(diagram, plant, scene_graph, body, patch, t, X_WS)
 
 
 def _nonneg_s(name: str, value) -> float:
