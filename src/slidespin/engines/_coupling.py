@@ -54,7 +54,7 @@ _REST = 1e-9
 #: fixed-point iterations of the implicit step before the onset solver takes over
 _FIXED_POINT_ITERATIONS = 8
 #: … to this change of the twist's direction (the engine's own errors are far larger)
-_FIXED_POINT_TOL = 1e-11
+_FIXED_POINT_TOL = 1e-10
 #: safety factor on the inner ball of C (the bound only decides when to compute exactly)
 _INNER_MARGIN = 0.98
 
@@ -183,6 +183,7 @@ class SteppedFriction:
         self._slipping = False
         self.stop_time = math.nan
         self.exact_checks = 0
+        self._w_last: tuple | None = None
         self.reset()
 
     def reset(self) -> None:
@@ -190,7 +191,7 @@ class SteppedFriction:
         then the one given to :meth:`step`, or 0."""
         self._t: float | None = None
         self._nu = (0.0, 0.0, 0.0)
-        self._w = np.zeros(3)
+        self._w: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self._key: tuple | None = None
         self._ref: tuple | None = None  # (phi, b natural, gamma) of the last exact test
         self._d: np.ndarray | None = None  # the last outward normal of C
@@ -199,11 +200,11 @@ class SteppedFriction:
         self._known: tuple | None = None  # the part of the load the adapter knew
 
     # -- the wrench of the patch --------------------------------------------------------
-    def kinetic(self, nu, phi: float, normal: float) -> np.ndarray:
+    def kinetic(self, nu, phi: float, normal: float) -> tuple[float, float, float]:
         """W(ν) = N w(ν) [N, N, N m] of a twist ν ≠ 0 (support frame) at angle φ."""
         ell = self.ell
         fx, fy, m = self.tw(float(phi), nu[0] / ell, nu[1] / ell, float(nu[2]))
-        return normal * np.array([fx, fy, m * ell])
+        return (normal * fx, normal * fy, normal * m * ell)
 
     def _gauge(self, b: np.ndarray, phi: float) -> float:
         """γ(b) for a wrench b in natural units (per unit load, M per ℓ): b ∈ C iff γ ≤ 1."""
@@ -235,9 +236,11 @@ class SteppedFriction:
         return gamma
 
     # -- one step -----------------------------------------------------------------------
-    def step(self, t: float, nu, phi: float, normal: float, load=None, known=None) -> np.ndarray:
+    def step(
+        self, t: float, nu, phi: float, normal: float, load=None, known=None
+    ) -> tuple[float, float, float]:
         """The wrench (Fx, Fy, M about the normal through G) [N, N, N m] to apply over the
-        step starting at time ``t`` [s].
+        step starting at time ``t`` [s], as a tuple of floats.
 
         Parameters
         ----------
@@ -260,7 +263,7 @@ class SteppedFriction:
             the estimate from the previous step then lags only in the rest (a contact, an
             actuator), so that a push applied suddenly is held from its first step.
         """
-        n0, n1, n2 = (float(c) for c in nu)
+        n0, n1, n2 = float(nu[0]), float(nu[1]), float(nu[2])
         key = (t, n0, n1, n2, phi, normal)
         if key == self._key:
             return self._w
@@ -277,7 +280,7 @@ class SteppedFriction:
         moving = n0 * n0 + n1 * n1 + (ell * n2) ** 2 > tol * tol
         if not moving:
             n0 = n1 = n2 = 0.0
-        kn = None if known is None else tuple(float(c) for c in known)
+        kn = None if known is None else (float(known[0]), float(known[1]), float(known[2]))
         launch = False
         if load is not None:
             f0, f1, f2 = (float(c) for c in load)
@@ -346,10 +349,12 @@ class SteppedFriction:
     def _implicit(self, x, a, tau, phi, normal):
         """The twist z ≠ 0 (scaled) with z = x + τ (a + A(z/|z|)) (an implicit step of
         length τ from x under the loads a and friction), or None if friction holds the step
-        (no such z: the twist would stop within it)."""
+        (no such z: the twist would stop within it). ``self._w_last`` is then W(z), or None
+        when the onset solver found z."""
+        self._w_last = None
         ell, k, tw, c = self.ell, self.k, self.tw, normal / self.m
-        x0, x1, x2 = x.tolist()
-        a0, a1, a2 = a.tolist()
+        x0, x1, x2 = x
+        a0, a1, a2 = a
         nx = math.sqrt(x0 * x0 + x1 * x1 + x2 * x2)
         u0, u1, u2 = x0 / nx, x1 / nx, x2 / nx
         for _ in range(_FIXED_POINT_ITERATIONS):  # a contraction while |τ A| ≪ |x|
@@ -364,18 +369,21 @@ class SteppedFriction:
             moved = abs(v0 - u0) + abs(v1 - u1) + abs(v2 - u2)
             u0, u1, u2 = v0, v1, v2
             if moved <= _FIXED_POINT_TOL:
-                return np.array([z0, z1, z2])
+                # W of the direction before the last update: within the tolerance of z's
+                self._w_last = (normal * fx, normal * fy, normal * mo * ell)
+                return (z0, z1, z2)
         acc = self._acc(phi, normal)
         u = np.array([u0, u1, u2])
         # near a stop: b + A(u) = λ u with b = x/τ + a, λ = |z|/τ > 0 (the onset problem of
         # MODEL §11; natural units: accelerations per N/m)
         gn = normal / self.m
-        got = _onset_nat(lambda v: acc(v) / gn, (x / tau + a) / gn, u)
+        b = (np.array(x) / tau + np.array(a)) / gn
+        got = _onset_nat(lambda v: acc(v) / gn, b, u)
         if got is None or not got[1] > 0.0:
             return None
-        return got[0] * got[1] * gn * tau
+        return tuple((got[0] * got[1] * gn * tau).tolist())
 
-    def _decide(self, n0, n1, n2, phi, normal, f0, f1, f2, h, launch) -> np.ndarray:
+    def _decide(self, n0, n1, n2, phi, normal, f0, f1, f2, h, launch) -> tuple:
         m, inertia, ell, k = self.m, self.inertia, self.ell, self.k
         moving = n0 != 0.0 or n1 != 0.0 or n2 != 0.0
         # the wrench that brings the twist to zero at the end of the step: if friction can
@@ -383,22 +391,22 @@ class SteppedFriction:
         r0 = -m * n0 / h - f0
         r1 = -m * n1 / h - f1
         r2 = -inertia * n2 / h - f2
-        b = np.array([r0 / normal, r1 / normal, r2 / (ell * normal)])
-        if float(np.dot(b, b)) <= self.r_out**2:  # else outside C for sure
-            if self._gauge(b, phi) <= 1.0:
+        b0, b1, b2 = r0 / normal, r1 / normal, r2 / (ell * normal)
+        if b0 * b0 + b1 * b1 + b2 * b2 <= self.r_out**2:  # else outside C for sure
+            if self._gauge(np.array([b0, b1, b2]), phi) <= 1.0:
                 if self._slipping:  # a stop within this step: when, by the step's trend
                     self.stop_time = self._stop_time(n0, n1, n2, f0, f1, f2, h)
                 self.state = "stick"
-                return np.array([r0, r1, r2])
+                return (r0, r1, r2)
         self.state = "slip"
-        x = np.array([n0, n1, k * n2])  # scaled twist and loads
-        a = np.array([f0 / m, f1 / m, f2 / (m * k)])
+        x = (n0, n1, k * n2)  # scaled twist and loads
+        a = (f0 / m, f1 / m, f2 / (m * k))
         if launch:
             # the leapfrog start: the twist is the launch's, at the positions' time; half
             # the step's impulse of every load
             fx, fy, mo = self.tw(float(phi), n0 / ell, n1 / ell, n2)
             c = 0.5 * normal
-            return np.array([c * fx - 0.5 * f0, c * fy - 0.5 * f1, c * mo * ell - 0.5 * f2])
+            return (c * fx - 0.5 * f0, c * fy - 0.5 * f1, c * mo * ell - 0.5 * f2)
         # kick-drift: the engine's twist lies half a step before the positions' time, and
         # the friction is that of the twist z at that time, z = x + (h/2)(a + A(z)) (the
         # implicit midpoint: second order, and stable where the twist nears zero); if the
@@ -407,12 +415,15 @@ class SteppedFriction:
         if z is None:
             z = self._implicit(x, a, h, phi, normal) if moving else None
         if z is None:  # at rest, breaking away: the onset direction (MODEL §11)
+            self._w_last = None
             gn = normal / m
-            got = _onset_nat(
-                lambda v: self._acc(phi, normal)(v) / gn, a / gn, a / np.linalg.norm(a)
-            )
+            av = np.array(a)
+            acc = self._acc(phi, normal)
+            got = _onset_nat(lambda v: acc(v) / gn, av / gn, av / np.linalg.norm(av))
             if got is None:  # pragma: no cover - the load lies beyond C (tested above)
                 raise RuntimeError("the coupling found no slip direction from rest")
             z = got[0]
+        if self._w_last is not None:
+            return self._w_last
         fx, fy, mo = self.tw(float(phi), z[0] / ell, z[1] / ell, z[2] / k)
-        return np.array([normal * fx, normal * fy, normal * mo * ell])
+        return (normal * fx, normal * fy, normal * mo * ell)

@@ -96,7 +96,7 @@ class Coupling:
     friction : SteppedFriction
         The step's core: its ``state`` (``"slip"``, ``"stick"`` or ``"free"``) and its
         counters.
-    wrench : ndarray
+    wrench : (float, float, float)
         The last wrench (Fx, Fy [N] along the support's axes, M [N m] about its normal).
     normal_force : float
         The last normal force N [N].
@@ -119,12 +119,13 @@ class Coupling:
         zb = data.xmat[body_id].reshape(3, 3)[:, 2]
         izz = float(zb @ inertia_world @ zb)
         self.friction = SteppedFriction(body, friction, mass, izz, float(model.opt.timestep))
-        self.wrench = np.zeros(3)
+        self.wrench: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
         self._last: tuple | None = None  # (time, N) of the last step with contact
         self._bset = {int(g) for g in self.geoms}
         self._sset = {int(g) for g in self.support}
         self._frames: dict[int, tuple] = {}
+        self._movers: dict[int, int] = {}
         self._force, self._torque, self._point = np.zeros(3), np.zeros(3), np.zeros(3)
         self._res = np.zeros(6)
         self._weight = tuple((mass * model.opt.gravity).tolist())
@@ -152,7 +153,7 @@ class Coupling:
 
     def _free(self, d) -> None:
         self.friction.step(d.time, (0.0, 0.0, 0.0), 0.0, 0.0)
-        self.wrench = np.zeros(3)
+        self.wrench = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
         self._last = None
 
@@ -234,7 +235,7 @@ class Coupling:
         if not normal > 0.0:
             return None
         fw, tq, pt = self._force, self._torque, self._point
-        w0, w1, w2 = w.tolist()
+        w0, w1, w2 = w
         fw[0] = w0 * a0 + w1 * c0
         fw[1] = w0 * a1 + w1 * c1
         fw[2] = w0 * a2 + w1 * c2
@@ -249,8 +250,12 @@ class Coupling:
 
     def _support_body(self, m, sg: int) -> int:
         """The support geom's body if it moves (0 for the world and static bodies)."""
-        sb = int(m.geom_bodyid[sg])
-        return sb if sb and m.body_dofnum[sb] > 0 else 0
+        sb = self._movers.get(sg)
+        if sb is None:
+            sb = int(m.geom_bodyid[sg])
+            sb = sb if sb and m.body_dofnum[sb] > 0 else 0
+            self._movers[sg] = sb
+        return sb
 
     def _dry_run(self, m, d, n, e1, e2):
         """(N, planar load) of this step without the friction: ``mj_forward`` on a copy."""
