@@ -260,3 +260,38 @@ def test_bad_input_is_refused_with_the_parameter_named():
     )
     with pytest.raises(ValueError, match="free joint"):
         smj.attach(fixed, mujoco.MjData(fixed), "b", BOX, fr)
+
+
+def test_on_a_moving_platform_the_twist_is_relative_to_it():
+    """A box on the top of a heavy platform that slides at 0.5 m/s (a flat box top as the
+    support): at rest on it, it rides along; launched at 1 m/s relative to it, it stops
+    after v²/(2 μ g) relative to the platform, as slidespin says for a fixed plane."""
+    body, friction = BOX, ss.FrictionTensor(0.3, 0.3)
+    xml = smj.mujoco_xml(body, name="box")
+    top = 0.05  # the platform's top, where the box's plane is
+    platform = (
+        '<body name="platform" pos="0 0 0.025"><joint name="slide" type="slide" axis="1 0 0"/>'
+        '<geom name="deck" type="box" size="5 1 0.025" mass="1e6"/></body>'
+    )
+    xml = xml.replace('<body name="box" pos="', f'{platform}<body name="box" pos="')
+    m = mujoco.MjModel.from_xml_string(xml)
+    d = mujoco.MjData(m)
+    d.qpos[m.jnt_qposadr[m.body("box").jntadr[0]] + 2] += top  # on the deck
+    smj.attach(m, d, "box", body, friction, support="deck")
+    try:
+        d.qvel[0] = 0.5  # the platform's slide joint
+        smj.set_twist(m, d, "box", 0.5, 0.0, 0.0)
+        for _ in range(300):
+            mujoco.mj_step(m, d)
+        rel0 = d.body("box").xpos[0] - d.body("platform").xpos[0]
+        for _ in range(300):
+            mujoco.mj_step(m, d)
+        rel1 = d.body("box").xpos[0] - d.body("platform").xpos[0]
+        assert abs(rel1 - rel0) < 1e-6  # rides along, stuck
+        smj.set_twist(m, d, "box", 1.5, 0.0, 0.0)  # 1 m/s relative to the deck
+        for _ in range(1000):
+            mujoco.mj_step(m, d)
+        rel2 = d.body("box").xpos[0] - d.body("platform").xpos[0]
+        assert rel2 - rel1 == pytest.approx(1.0 / (2 * 0.3 * G), rel=5e-3)
+    finally:
+        smj.detach(m, d)
