@@ -295,3 +295,27 @@ def test_on_a_moving_platform_the_twist_is_relative_to_it():
         assert rel2 - rel1 == pytest.approx(1.0 / (2 * 0.3 * G), rel=5e-3)
     finally:
         smj.detach(m, d)
+
+
+@pytest.mark.parametrize("integrator", ["implicit", "implicitfast"])
+def test_the_implicit_integrators_agree_too(integrator):
+    body, friction, state = CASES["box"]
+    tr = ss.simulate(body, friction, state, g=G)
+    xml = smj.mujoco_xml(body).replace('integrator="Euler"', f'integrator="{integrator}"')
+    m = mujoco.MjModel.from_xml_string(xml)
+    d = mujoco.MjData(m)
+    c = smj.attach(m, d, "body", body, friction)
+    try:
+        for _ in range(200):
+            mujoco.mj_step(m, d)
+        x0, y0, t0 = d.qpos[0], d.qpos[1], d.time
+        smj.set_twist(m, d, "body", state.vx, state.vy, state.omega)
+        mujoco.mj_step(m, d)
+        while c.friction.state != "stick" and d.time - t0 < 5.0:
+            mujoco.mj_step(m, d)
+        assert abs(c.friction.stop_time - t0 - tr.t_stop) <= 5e-3 * tr.t_stop
+        assert math.hypot(
+            d.qpos[0] - x0 - tr.x[-1], d.qpos[1] - y0 - tr.y[-1]
+        ) <= 5e-3 * math.hypot(tr.x[-1], tr.y[-1])
+    finally:
+        smj.detach(m, d)
