@@ -218,6 +218,17 @@ def test_several_bodies_at_once_and_detach_restores_the_model():
         mujoco.set_mjcb_passive(None)
 
 
+def test_models_compile_while_a_body_is_attached():
+    m, d = _scene(BOX)
+    smj.attach(m, d, "body", BOX, ss.FrictionTensor(0.3, 0.3))
+    try:
+        other = mujoco.MjModel.from_xml_string(smj.mujoco_xml(PUCK))  # MuJoCo steps it
+        assert other.nbody == 2
+        mujoco.mj_step(other, mujoco.MjData(other))  # an uncoupled data steps as before
+    finally:
+        smj.detach(m, d)
+
+
 def test_attach_from_a_case_file(tmp_path):
     case = tmp_path / "box.toml"
     case.write_text(

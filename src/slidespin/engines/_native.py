@@ -8,7 +8,7 @@ inertia), let the body settle on the floor at rest, launch it with the planar st
 reports: the stop time, the stop position of the mass centre G and the body angle φ
 (continuous, unwrapped: a body that turns twice reports 4π). A run *stops* at the first step
 where the planar speed of G is below ``STOP_FRACTION`` × the launch's speed scale
-V = max(|v₀|, k|ω₀|) (k the radius of gyration) and the spin below the same fraction × V/k;
+V = ``max(|v₀|, k |ω₀|)`` (k the radius of gyration) and the spin below the same fraction × V/k;
 a run that has not stopped by ``t_max`` returns its values there with ``stopped`` False.
 
 The engines' friction parameters, keyed by the engine's own names (as
@@ -48,7 +48,7 @@ __all__ = ["NativeRun", "run_mujoco", "run_pybullet", "run_drake", "run_native",
 
 #: the engines, with the extra that installs each
 ENGINES = {"mujoco": "mujoco", "pybullet": "pybullet", "drake": "drake"}
-#: a run stops when |v| < STOP_FRACTION V and |ω| < STOP_FRACTION V/k
+#: a run stops when its speed < STOP_FRACTION V and its spin < STOP_FRACTION V/k
 STOP_FRACTION = 2e-3
 #: time given to the body to settle on the floor before the launch [s]
 SETTLE_TIME = 0.1
@@ -237,7 +237,9 @@ def _pybullet_shape(p, cid, body, folder):
         if kind == "cylinder":
             a = np.linspace(0.0, 2.0 * math.pi, DISK_SIDES, endpoint=False)
             # the polygon of the disk's area: a little larger circumradius
-            r = size[0] * math.sqrt(2.0 * math.pi / (DISK_SIDES * math.sin(2.0 * math.pi / DISK_SIDES)))
+            r = size[0] * math.sqrt(
+                2.0 * math.pi / (DISK_SIDES * math.sin(2.0 * math.pi / DISK_SIDES))
+            )
             outline = np.column_stack([c[0] + r * np.cos(a), c[1] + r * np.sin(a)])
         else:
             outline = np.asarray(size, dtype=float)
@@ -340,6 +342,16 @@ def run_pybullet(body: Body, params: dict, state: State, *, g: float = 9.81, dt:
 # ------------------------------------------------------------------------------------------
 def _drake_runs(body, params, states, g, dt, t_max):
     d = _import("drake")
+    log = logging.getLogger("drake")
+    level = log.level
+    log.setLevel(logging.ERROR)  # Drake warns that a rigid half-space has no deformable contact
+    try:
+        return _drake_scene_runs(d, body, params, states, g, dt, t_max)
+    finally:
+        log.setLevel(level)
+
+
+def _drake_scene_runs(d, body, params, states, g, dt, t_max):
     t, ixx, iyy, izz = _inertia(body)
     model = str(params.get("contact_model", "point"))
     cfg = d.MultibodyPlantConfig(
@@ -381,16 +393,10 @@ def _drake_runs(body, params, states, g, dt, t_max):
             obj = _prism_obj(size, t)
             shape = d.Convex(d.InMemoryMesh(mesh_file=d.MemoryFile(obj, ".obj", "prism")))
         plant.RegisterCollisionGeometry(rb, pose, shape, f"body_{k}", props(True))
-    log = logging.getLogger("drake")
-    level = log.level
-    log.setLevel(logging.ERROR)  # a warning about deformable contact, which is not used
-    try:
-        plant.RegisterCollisionGeometry(
-            plant.world_body(), d.HalfSpace.MakePose([0, 0, 1], [0, 0, 0]), d.HalfSpace(),
-            "floor", props(False),
-        )  # fmt: skip
-    finally:
-        log.setLevel(level)
+    plant.RegisterCollisionGeometry(
+        plant.world_body(), d.HalfSpace.MakePose([0, 0, 1], [0, 0, 0]), d.HalfSpace(),
+        "floor", props(False),
+    )  # fmt: skip
     plant.mutable_gravity_field().set_gravity_vector([0.0, 0.0, -g])
     plant.Finalize()
     diagram = builder.Build()

@@ -10,8 +10,9 @@ steps the scene with slidespin's friction on that body's flat contact with its s
   restores both. (The support's contacts with other geoms then take the other geom's
   condim and friction instead of the maximum of the two: the same whenever the support's
   friction is not above theirs.)
-* **Each step** a passive-force callback (``mujoco.set_mjcb_passive``; a callback already set
-  is chained, called first) reads the body's planar twist relative to its support, its angle
+* **Each step** a passive-force callback (``mujoco.set_mjcb_passive``, a ctypes function
+  pointer, so that models still compile while bodies are attached; a callback already set is
+  chained, called first) reads the body's planar twist relative to its support, its angle
   and the normal force, asks :class:`slidespin.engines._coupling.SteppedFriction` for the
   wrench (the exact W(ν) in slip; the discrete projection onto the static set where the slip
   would stop within the step) and adds it to ``data.qfrc_passive`` with ``mj_applyFT``: the
@@ -47,7 +48,9 @@ and a thin ``Body`` with a constant friction law (``static`` ≥ 1 allowed).
 from __future__ import annotations
 
 import copy
+import ctypes
 import math
+import warnings
 import weakref
 from pathlib import Path
 
@@ -68,21 +71,50 @@ except ImportError as exc:  # pragma: no cover - the extra is installed in CI
 
 __all__ = ["Coupling", "attach", "attached", "detach", "set_twist"]
 
-#: data address → (weak reference to the data, {body id → Coupling}); the reference tells a
-#: data freed without ``detach`` from a new one at the same address
-_ATTACHED: dict[int, tuple[weakref.ref, dict[int, Coupling]]] = {}
+#: data address → (weak reference to the data, weak reference to its model, {body id →
+#: Coupling}); the references tell a data freed without ``detach`` from a new one at the same
+#: address
+_ATTACHED: dict[int, tuple[weakref.ref, weakref.ref, dict[int, Coupling]]] = {}
 #: model address → {geom id → (condim, priority) before the first attach}
 _SAVED: dict[int, tuple[weakref.ref, dict[int, tuple[int, int]]]] = {}
 _CHAINED: list = []  # the passive callback that was set before ours (at most one)
+_CALLBACK = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p)
 
 
-def _passive(m, d) -> None:
-    if _CHAINED and _CHAINED[0] is not None:
-        _CHAINED[0](m, d)
-    entry = _ATTACHED.get(d._address)
-    if entry is not None and entry[0]() is d:
-        for c in entry[1].values():
+def _raw_passive(m_ptr, d_ptr) -> None:
+    """MuJoCo's passive callback, called with raw pointers (a ctypes function pointer).
+
+    A Python callable set with ``set_mjcb_passive`` is called through Python wrappers of the
+    model and data, which MuJoCo's compiler does not have for the data it steps while it
+    compiles a model: with one set, ``MjModel.from_xml_string`` fails. Through raw pointers
+    the callback looks the data up among the coupled ones and returns at once for any other,
+    so models compile while bodies are attached."""
+    prev = _CHAINED[0] if _CHAINED else None
+    if prev is not None and isinstance(prev, ctypes._CFuncPtr):
+        prev(m_ptr, d_ptr)
+    entry = _ATTACHED.get(d_ptr)
+    if entry is None:
+        return
+    d, m = entry[0](), entry[1]()
+    if d is None or m is None or m._address != m_ptr:
+        return
+    if prev is not None and not isinstance(prev, ctypes._CFuncPtr):
+        prev(m, d)  # a Python callback set before: for the coupled data (it has wrappers)
+    try:
+        for c in entry[2].values():
             c._apply(m, d)
+    except Exception as exc:  # an exception cannot cross MuJoCo's C stack: say it loudly
+        for c in entry[2].values():
+            c.error = exc
+        warnings.warn(
+            f"slidespin.mujoco: the coupling failed in this step ({type(exc).__name__}: {exc}); "
+            "no friction was applied; Coupling.error holds the exception",
+            RuntimeWarning,
+            stacklevel=1,
+        )
+
+
+_PASSIVE = _CALLBACK(_raw_passive)  # kept alive here: MuJoCo holds only its address
 
 
 class Coupling:
@@ -100,6 +132,9 @@ class Coupling:
         The last wrench (Fx, Fy [N] along the support's axes, M [N m] about its normal).
     normal_force : float
         The last normal force N [N].
+    error : Exception or None
+        An exception the coupling met in a step (the step then applied no friction, and a
+        RuntimeWarning said so: an exception cannot cross MuJoCo's C stack); None.
     """
 
     def __init__(self, model, data, body_id: int, body: Body, friction: FrictionTensor, support):
@@ -128,6 +163,7 @@ class Coupling:
         self._movers: dict[int, int] = {}
         self._force, self._torque, self._point = np.zeros(3), np.zeros(3), np.zeros(3)
         self._res = np.zeros(6)
+        self.error: Exception | None = None
         self._weight = tuple((mass * model.opt.gravity).tolist())
 
     def _frame(self, m, d, i: int, sg: int, sign: float):
@@ -395,8 +431,7 @@ def attach(
             "implicit, implicitfast (the discrete projection acts once per step)"
         )
     bid = _body_id(model, body_name)
-    couplings = _couplings(data, create=True)
-    if bid in couplings:
+    if bid in _couplings(data):
         raise ValueError(
             f"body_name = {body_name!r} is invalid: already attached in this data; detach it first"
         )
@@ -414,24 +449,34 @@ def attach(
         _save(model, g)
         model.geom_priority[g] = min(int(model.geom_priority[g]), top - 1)
     coupling = Coupling(model, data, bid, body, friction, support_ids)
-    couplings[bid] = coupling
+    _couplings(data, model)[bid] = coupling
     current = mujoco.get_mjcb_passive()
-    if current is not _passive:
+    if not _installed(current):
         _CHAINED[:] = [current]
-        mujoco.set_mjcb_passive(_passive)
+        mujoco.set_mjcb_passive(_PASSIVE)
     return coupling
 
 
-def _couplings(data, create: bool = False) -> dict[int, Coupling]:
-    """The couplings of ``data`` (forgetting those of a freed data at its address)."""
+def _installed(current) -> bool:
+    """Whether MuJoCo's passive callback is ours (the getter returns a new ctypes object)."""
+    return (
+        isinstance(current, ctypes._CFuncPtr)
+        and ctypes.cast(current, ctypes.c_void_p).value
+        == ctypes.cast(_PASSIVE, ctypes.c_void_p).value
+    )
+
+
+def _couplings(data, model=None) -> dict[int, Coupling]:
+    """The couplings of ``data`` (forgetting those of a freed data at its address); with
+    ``model``, the entry is made if there is none."""
     entry = _ATTACHED.get(data._address)
     if entry is None or entry[0]() is not data:
         _ATTACHED.pop(data._address, None)
-        if not create:
+        if model is None:
             return {}
-        entry = (weakref.ref(data), {})
+        entry = (weakref.ref(data), weakref.ref(model), {})
         _ATTACHED[data._address] = entry
-    return entry[1]
+    return entry[2]
 
 
 def attached(data) -> list[str]:
@@ -456,11 +501,12 @@ def detach(model, data, body_name: str | None = None) -> None:
         ids = [bid]
     for bid in ids:
         del couplings[bid]
-    if not couplings:
-        _ATTACHED.pop(data._address, None)
+    for address, (dref, _, cs) in list(_ATTACHED.items()):  # this data's, and freed ones
+        if not cs or dref() is None:
+            del _ATTACHED[address]
     still = {
         g
-        for _, cs in _ATTACHED.values()
+        for _, _, cs in _ATTACHED.values()
         for c in cs.values()
         if c._model_address == model._address
         for g in (*c.geoms, *c.support)
@@ -471,7 +517,7 @@ def detach(model, data, body_name: str | None = None) -> None:
             model.geom_condim[g], model.geom_priority[g] = saved.pop(g)
     if not saved:
         _SAVED.pop(model._address, None)
-    if not _ATTACHED and mujoco.get_mjcb_passive() is _passive:
+    if not _ATTACHED and _installed(mujoco.get_mjcb_passive()):
         mujoco.set_mjcb_passive(_CHAINED[0] if _CHAINED else None)
         _CHAINED.clear()
 
