@@ -71,6 +71,8 @@ numpydoc_xref_param_type = False
 nitpicky = True
 nitpick_ignore_regex = [
     ("py:.*", r"(numpy|np|pandas|pd|scipy|matplotlib|dask|distributed|pyarrow|numba)(\..*)?"),
+    # the engines' own names (pydrake, mujoco)
+    ("py:.*", r"(pydrake|mujoco)(\..*)?"),
     # private modules (``slidespin._io``, ``slidespin.contact._engine``, ...) and their names
     ("py:.*", r"slidespin(\..*)?\._.*"),
 ]

@@ -1,6 +1,6 @@
 """
 A box launched with spin in MuJoCo: its own contacts, and slidespin's friction coupled
-=====================================================================================
+======================================================================================
 
 A 1 kg box, 20 cm × 10 cm, is launched across a table at 1.2 m/s while turning at 10 rad/s
 (μ = 0.35). We run the same MuJoCo scene (:func:`slidespin.mujoco.mujoco_xml`) twice at a 1 ms

@@ -229,7 +229,7 @@ class PatchFriction(LeafSystem):
     (unless ``normal_force`` is given) and ``applied_spatial_force`` (optional: a list of
     ExternallyAppliedSpatialForce, passed through to the output and counted as a known load).
     Output port ``spatial_forces``: the list for ``plant.get_applied_spatial_force_input_port()``.
-    Attributes ``coupling`` (the :class:`SteppedFriction`; ``coupling.state`` is ``"slip"``,
+    Attributes ``coupling`` (the :class:`~slidespin.engines._coupling.SteppedFriction`; ``coupling.state`` is ``"slip"``,
     ``"stick"`` or ``"free"``), ``body_index``, ``normal`` (the last normal force [N]) and
     ``wrench`` (the last (Fx, Fy, M)).
     """
@@ -343,7 +343,7 @@ class PatchFriction(LeafSystem):
     @property
     def stop_time(self) -> float:
         """The time [s] at which the last slip stopped, interpolated within its step by
-        :class:`SteppedFriction` (NaN before any stop)."""
+        :class:`~slidespin.engines._coupling.SteppedFriction` (NaN before any stop)."""
         return float(getattr(self.coupling, "stop_time", math.nan))
 
     # -- ports --------------------------------------------------------------------------

@@ -6,7 +6,7 @@ its mass centre G, its x axis the body axis ξ, its geoms prisms of the footprin
 ``thickness`` resting on the plane (a rectangle as a box, a disk as a cylinder, a ring as
 ``ring_segments`` boxes, an ellipse or a convex polygon as a mesh prism, pads as the union of
 theirs). The inertia is explicit: the body's mass and its moment of inertia about the normal
-(:attr:`slidespin.Body.moment_of_inertia`, the plate's by default), and those of a plate of the
+(``Body.moment_of_inertia``, the plate's by default), and those of a plate of the
 given thickness about the horizontal axes.
 
 The contact: ``contact=None`` (the default, for a coupling) gives the body's geoms condim 1 (no
