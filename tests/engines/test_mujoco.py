@@ -330,3 +330,36 @@ def test_the_implicit_integrators_agree_too(integrator):
         ) <= 5e-3 * math.hypot(tr.x[-1], tr.y[-1])
     finally:
         smj.detach(m, d)
+
+
+def test_a_finger_keeps_its_friction_with_the_body_and_pushes_it():
+    """The body–floor contacts lose MuJoCo's tangential friction (condim 1); a finger's
+    contact with the body keeps its own (condim 3), and a finger driven into the box at
+    10 cm/s pushes it along once the push exceeds μ m g."""
+    xml = (
+        smj.mujoco_xml(BOX, name="box")
+        .replace(
+            "</worldbody>",
+            '<body name="finger" pos="-0.2 0 0.015"><joint name="fx" type="slide" axis="1 0 0"/>'
+            '<geom name="tip" type="sphere" size="0.004" mass="1"/></body></worldbody>'
+            '<actuator><velocity joint="fx" kv="1000"/></actuator>',
+        )
+        .replace('integrator="Euler"', 'integrator="implicitfast"')
+    )
+    m = mujoco.MjModel.from_xml_string(xml)
+    d = mujoco.MjData(m)
+    smj.attach(m, d, "box", BOX, ss.FrictionTensor(0.3, 0.3))
+    try:
+        d.ctrl[0] = 0.1  # m/s
+        for _ in range(2000):
+            mujoco.mj_step(m, d)
+        tip, box0, floor = m.geom("tip").id, m.geom("box_0").id, m.geom("floor").id
+        dims = {tuple(sorted(g)): int(dim) for g, dim in zip(d.contact.geom, d.contact.dim)}
+        assert dims[tuple(sorted((tip, box0)))] == 3
+        assert dims[tuple(sorted((floor, box0)))] == 1
+        # the finger moved ~0.2 m: 0.1 m to the box's back face, then pushed it ~0.1 m at the
+        # actuator's speed less its lag under the push μ m g (0.1 − 2.94/1000 m/s)
+        assert d.body("box").xpos[0] == pytest.approx(0.1, abs=0.01)
+        assert d.qvel[m.body("box").dofadr[0]] == pytest.approx(0.1 - 0.3 * G / 1000, abs=2e-4)
+    finally:
+        smj.detach(m, d)

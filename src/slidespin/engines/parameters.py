@@ -103,9 +103,11 @@ ERROR_KEYS = ("t_stop", "distance", "rotation")
 class EngineParameters(dict):
     """An engine's contact parameters fitted to slidespin's motions, with their errors.
 
-    A ``dict`` whose keys are the engine's own parameter names only (pass it as is to
-    :func:`slidespin.engines._native.run_mujoco` and its siblings, or copy the values into
-    the engine's model). The fit's context lives in attributes.
+    A ``dict`` whose keys are the engine's own parameter names only: copy the values into
+    the engine's model (MuJoCo's geom ``friction`` and ``condim`` with ``cone="elliptic"``;
+    ``pybullet.changeDynamics(body, -1, **params)``; Drake's proximity properties), or pass
+    MuJoCo's as ``contact=`` to :func:`slidespin.engines.scenes.mujoco_xml`. The fit's context
+    lives in attributes.
 
     Attributes
     ----------
