@@ -153,7 +153,7 @@ def launches(quick: bool) -> None:
             if not HAVE[engine] or (quick and engine != "mujoco"):
                 continue
             *r, w = native(engine, body, defaults(engine, friction), state, 1e-3)
-            _row(f"{engine}, own friction, defaults", _errors(ref, *r), w)
+            _row(f"{engine}, own friction, case μ", _errors(ref, *r), w)
             if quick:
                 continue
             fitted = ss.engine_parameters(body, friction, engine)
