@@ -7,20 +7,31 @@ frame: two axes in the plane, ω about the normal), its angle φ in that plane a
 normal force N into the wrench (Fx, Fy, M about the normal through G) that the engine applies
 for the step:
 
-* **slip**: W(ν) = N w(ν), the exact wrench of the patch (the compiled kernel of
-  :class:`slidespin.contact._engine.TwistWrench`, per unit load);
-* **stick or stop**, where the slip would reverse within the step (the predicted twist
-  ν + h M⁻¹(f + W(ν)) has ν⁺·Mν ≤ 0) or the body is at rest: the wrench that brings the
-  planar twist to zero at the end of the step, w_req = −M ν/h − f, if it lies in the static
-  set C (N × the set of :mod:`slidespin.contact.static_set`, times μs/μk), else W(ν) (at rest,
-  ν = 0: the point of the kinetic set's boundary on the ray of w_req). A projection onto C,
-  not a smoothed law, so a body at rest under a load inside C does not creep.
+* **stick or stop**: the wrench that brings the planar twist to zero at the end of the step,
+  w_req = −M ν/h − f, if it lies in the static set C (N × the set of
+  :mod:`slidespin.contact.static_set`, times μs/μk): a projection onto C, not a smoothed law,
+  so a body at rest under a load inside C does not creep, and a slip that would stop within
+  the step stops (the stop time interpolated within it, :attr:`SteppedFriction.stop_time`);
+* **slip**: the exact wrench of the patch, N w(z) (the compiled kernel of
+  :class:`slidespin.contact._engine.TwistWrench`, per unit load), at the twist z of the
+  positions' time. An engine's semi-implicit (kick-drift) Euler holds its velocities half a
+  step after its positions, so z is the implicit midpoint z = ν + (h/2) M⁻¹(f + W(z)): second
+  order, and stable where the twist nears zero (an explicit W(ν) there flips the spin's sign
+  from step to step). It is solved by fixed-point iteration (a contraction while
+  |h M⁻¹ W| ≪ |ν|), else as the onset problem b + A(u) = λu of MODEL §11; if no z exists
+  (the twist would stop by the midpoint and cannot stick at the end) the implicit Euler step
+  of length h; at rest, breaking away, the onset direction;
+* **a launch** (the twist set by hand at the start of a contact, or a kick: the load estimate
+  jumps by more than JUMP × the friction's capacity): half the step's impulse of every load,
+  the leapfrog start, so that positions stay second order.
 
 Here M = diag(m, m, I) and f is the planar wrench of everything else on the body (gravity on a
-slope, springs, a finger, actuators): the engine resolves it in the same step, so it is
-estimated from the previous step, f = M (ν_k − ν_{k−1})/h − W_{k−1} (exact for loads constant
-over a step; an error of the load's change over one step otherwise), or given by the engine's
-adapter (``load``) when it knows it (the first step of a contact).
+slope, springs, a finger, actuators). The part of it the adapter knows before the engine's
+solve (``known``: gravity, a push it reads) is exact; the rest, which the engine resolves in
+the same step, is estimated from the previous step, M (ν_k − ν_{k−1})/h − W_{k−1} − known_{k−1}
+(exact for loads constant over a step), or given whole by the adapter (``load``: the first
+step of a contact). A twist below 1e-9 of one step's change by friction is rest (engines
+leave ~1e-19 m/s).
 
 Whether w_req ∈ C is decided from bounds first: the gauge γ of C is at least (d·w)/h(d) for the
 last outward normal d, and at most γ_ref + |w − w_ref|/r_in from the last exact evaluation
