@@ -257,6 +257,8 @@ def test_bad_input_is_refused_with_the_parameter_named():
         smj.attach(m, d, "body", BOX, ss.FrictionTensor(0.3, 0.3, speed_law=ss.PowerLaw(0.1)))
     with pytest.raises(ValueError, match="support"):
         smj.attach(m, d, "body", BOX, fr, support="table")
+    with pytest.raises(ValueError, match=r"support = \[\]"):
+        smj.attach(m, d, "body", BOX, fr, support=[])
     with pytest.raises(TypeError, match="model, data"):
         smj.attach(None, d, "body", BOX, fr)
     m.opt.integrator = mujoco.mjtIntegrator.mjINT_RK4
@@ -359,5 +361,53 @@ def test_a_finger_keeps_its_friction_with_the_body_and_pushes_it():
         # actuator's speed less its lag under the push μ m g (0.1 − 2.94/1000 m/s)
         assert d.body("box").xpos[0] == pytest.approx(0.1, abs=0.01)
         assert d.qvel[m.body("box").dofadr[0]] == pytest.approx(0.1 - 0.3 * G / 1000, abs=2e-4)
+    finally:
+        smj.detach(m, d)
+
+
+@pytest.mark.parametrize(("dt", "tol"), [(1e-3, 5e-3), (1e-2, 2e-2)])
+def test_a_launch_from_exact_contact_without_settling(dt, tol):
+    """The body placed exactly on the floor and launched at once: MuJoCo's soft contact
+    carries no load in its first step; the coupling takes the weight's share there and repays
+    it from the engine's next loads."""
+    body, friction, state = CASES["box"]
+    tr = ss.simulate(body, friction, state, g=G)
+    m, d = _scene(body, dt)
+    c = smj.attach(m, d, "body", body, friction)
+    try:
+        smj.set_twist(m, d, "body", state.vx, state.vy, state.omega)
+        x0, y0 = d.qpos[0], d.qpos[1]
+        mujoco.mj_step(m, d)
+        while c.friction.state != "stick" and d.time < 5.0:
+            mujoco.mj_step(m, d)
+        assert abs(c.friction.stop_time - tr.t_stop) <= tol * tr.t_stop
+        assert math.hypot(d.qpos[0] - x0 - tr.x[-1], d.qpos[1] - y0 - tr.y[-1]) <= tol * math.hypot(
+            tr.x[-1], tr.y[-1]
+        )
+    finally:
+        smj.detach(m, d)
+
+
+def test_a_changed_time_step_and_integrator_are_followed():
+    body, friction, state = CASES["box"]
+    tr = ss.simulate(body, friction, state, g=G)
+    m, d = _scene(body, 2e-3)
+    c = smj.attach(m, d, "body", body, friction)
+    try:
+        for _ in range(100):
+            mujoco.mj_step(m, d)
+        m.opt.timestep = 1e-3  # after attach: the coupling follows
+        x0, t0 = d.qpos[0], d.time
+        smj.set_twist(m, d, "body", state.vx, state.vy, state.omega)
+        mujoco.mj_step(m, d)
+        while c.friction.state != "stick" and d.time - t0 < 5.0:
+            mujoco.mj_step(m, d)
+        assert c.friction.dt == 1e-3
+        assert d.qpos[0] - x0 == pytest.approx(tr.x[-1], rel=5e-3)
+        m.opt.integrator = mujoco.mjtIntegrator.mjINT_RK4
+        with pytest.warns(RuntimeWarning, match="RK4") as record:
+            for _ in range(10):
+                mujoco.mj_step(m, d)
+        assert len(record) == 1  # said once
     finally:
         smj.detach(m, d)

@@ -201,7 +201,7 @@ class SteppedFriction:
         """Forget the previous step (a new contact, a reset engine): the next step's load is
         then the one given to :meth:`step`, or 0."""
         self._t: float | None = None
-        self._nu = (0.0, 0.0, 0.0)
+        self._nu: tuple | None = (0.0, 0.0, 0.0)
         self._w: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self._key: tuple | None = None
         self._ref: tuple | None = None  # (phi, b natural, gamma) of the last exact test
@@ -209,6 +209,15 @@ class SteppedFriction:
         self._u: tuple | None = None  # the last accepted unknown part of the load
         self._u_raw: tuple | None = None  # … and the last estimate of it
         self._known: tuple | None = None  # the part of the load the adapter knew
+
+    def airborne(self, t: float) -> None:
+        """Record a step at time ``t`` [s] without load on the support (no contact, or a
+        contact without normal force): no friction; the next step with load is not a launch
+        (its twist is the engine's, half a step after its positions)."""
+        self.state = "free"
+        self._slipping = False
+        self._t, self._nu, self._w, self._key = t, None, (0.0, 0.0, 0.0), None
+        self._known = None
 
     # -- the wrench of the patch --------------------------------------------------------
     def kinetic(self, nu, phi: float, normal: float) -> tuple[float, float, float]:
@@ -278,10 +287,9 @@ class SteppedFriction:
         key = (t, n0, n1, n2, phi, normal)
         if key == self._key:
             return self._w
-        if not normal > 0.0:
-            self.reset()
-            self.state = "free"
-            self._key = key
+        if not normal > 0.0:  # touching without load (or lifting off): no friction
+            self.airborne(t)
+            self._nu, self._key = (n0, n1, n2), key
             return self._w
         h = self.dt
         m, inertia, ell = self.m, self.inertia, self.ell
@@ -296,7 +304,10 @@ class SteppedFriction:
         if load is not None:
             f0, f1, f2 = (float(c) for c in load)
             launch = moving and not consecutive
-        elif consecutive:
+            # the unknown part of this load, for the next step's estimate and impulse test
+            u = (f0, f1, f2) if kn is None else (f0 - kn[0], f1 - kn[1], f2 - kn[2])
+            self._u = self._u_raw = u
+        elif consecutive and self._nu is not None:
             # the load of the step before, from the change of the twist; its unknown part
             # (less what the adapter knew then) carries over to this step
             p0, p1, p2 = self._nu
@@ -321,9 +332,9 @@ class SteppedFriction:
             f0, f1, f2 = u0, u1, u2
             if kn is not None:
                 f0, f1, f2 = f0 + kn[0], f1 + kn[1], f2 + kn[2]
-        else:
+        else:  # a first step, or the first after a step in the air: the known loads
             f0, f1, f2 = kn if kn is not None else (0.0, 0.0, 0.0)
-            launch = moving
+            launch = moving and not consecutive
             self._u = self._u_raw = (0.0, 0.0, 0.0)
         self._slipping = self.state == "slip" and consecutive
         self._t_now = t

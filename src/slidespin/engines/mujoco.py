@@ -71,6 +71,11 @@ except ImportError as exc:  # pragma: no cover - the extra is installed in CI
 
 __all__ = ["Coupling", "attach", "attached", "detach", "set_twist"]
 
+#: the engine's normal force is steady when it changes by less than this from one step to the
+#: next: the previous step's is then used; else (a touchdown, a bounce) this step's own, from a
+#: frictionless ``mj_forward`` on a copy of the data
+_STEADY = 1e-2
+
 #: data address → (weak reference to the data, weak reference to its model, {body id →
 #: Coupling}); the references tell a data freed without ``detach`` from a new one at the same
 #: address
@@ -156,7 +161,9 @@ class Coupling:
         self.friction = SteppedFriction(body, friction, mass, izz, float(model.opt.timestep))
         self.wrench: tuple[float, float, float] = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
-        self._last: tuple | None = None  # (time, N) of the last step with contact
+        # (time, N used, the engine's N of the step before it, read then) of the last step
+        # in contact
+        self._last: tuple | None = None
         self._bset = {int(g) for g in self.geoms}
         self._sset = {int(g) for g in self.support}
         self._frames: dict[int, tuple] = {}
@@ -164,7 +171,9 @@ class Coupling:
         self._force, self._torque, self._point = np.zeros(3), np.zeros(3), np.zeros(3)
         self._res = np.zeros(6)
         self.error: Exception | None = None
+        self._warned_rk4 = False
         self._weight = tuple((mass * model.opt.gravity).tolist())
+        self._debt = 0.0  # normal force taken ahead of the engine's (a first step's weight)
 
     def _frame(self, m, d, i: int, sg: int, sign: float):
         """(n, e1, e2, point on the plane) of the support at contact ``i`` (support geom
@@ -188,7 +197,7 @@ class Coupling:
         return out
 
     def _free(self, d) -> None:
-        self.friction.step(d.time, (0.0, 0.0, 0.0), 0.0, 0.0)
+        self.friction.airborne(d.time)
         self.wrench = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
         self._last = None
@@ -239,17 +248,44 @@ class Coupling:
         )
         phi = math.atan2(r00 * c0 + r10 * c1 + r20 * c2, r00 * a0 + r10 * a1 + r20 * a2)
         t = d.time
-        h = self.friction.dt
+        h = m.opt.timestep
+        fr = self.friction
+        if h != fr.dt:  # the model's step changed since the last step: start afresh
+            fr.dt = h
+            fr.reset()
+            self._last = None
+        if m.opt.integrator == mujoco.mjtIntegrator.mjINT_RK4:
+            return self._refuse_rk4()
         load = None
         last = self._last
         if last is not None and last[0] == t:
-            normal = last[1]  # the same step evaluated again (mj_forward, then mj_step)
+            normal, lag = last[1], last[2]  # the same step again (mj_forward, then mj_step)
         elif last is not None and abs(t - last[0] - h) <= 1e-9 * max(h, t):
+            # the engine's normal force of the step before, while it is steady; while it
+            # changes from step to step (a touchdown, a bounce), this step's own
             f0, f1, f2 = d.qfrc_constraint[a : a + 3].tolist()
-            normal = f0 * n0 + f1 * n1 + f2 * n2
+            lag = f0 * n0 + f1 * n1 + f2 * n2
+            if lag > 0.0 and abs(lag - last[2]) <= _STEADY * max(lag, abs(last[2])):
+                normal = lag
+            else:  # (also when the step before had no reading: last[2] is NaN)
+                normal, load = self._dry_run(m, d, (n0, n1, n2), (a0, a1, a2), (c0, c1, c2))
+            if self._debt > 0.0 and normal > 0.0:  # repay a first step's weight
+                pay = min(self._debt, normal)
+                normal -= pay
+                self._debt -= pay
         else:
             normal, load = self._dry_run(m, d, (n0, n1, n2), (a0, a1, a2), (c0, c1, c2))
-        self._last = (t, normal)
+            lag = math.nan
+            self._debt = 0.0
+            if not normal > 0.0:
+                # resting exactly on the support, MuJoCo's soft contact carries no load in
+                # its first step and catches up in the next: friction takes the weight's
+                # share now and the same from the engine's next loads, so that its normal
+                # impulse in all is the engine's, and a launch starts with its half step
+                wx0, wx1, wx2 = self._weight
+                normal = max(0.0, -(wx0 * n0 + wx1 * n1 + wx2 * n2))
+                self._debt = normal
+        self._last = (t, normal, lag)
         # the loads known before the solve: gravity, xfrc_applied, qfrc_applied (the rest,
         # contacts and actuators, the coupling takes from the step before)
         q0, q1, q2, s0, s1, s2 = (d.qfrc_applied[a : a + 6]).tolist()
@@ -292,6 +328,18 @@ class Coupling:
             sb = sb if sb and m.body_dofnum[sb] > 0 else 0
             self._movers[sg] = sb
         return sb
+
+    def _refuse_rk4(self) -> None:
+        if not self._warned_rk4:
+            self._warned_rk4 = True
+            warnings.warn(
+                f"slidespin.mujoco: model.opt.integrator = RK4 is invalid for the coupling of "
+                f"{self.body_name!r}; valid values: Euler, implicit, implicitfast (the "
+                "discrete projection acts once per step): no friction is applied while it is "
+                "RK4",
+                RuntimeWarning,
+                stacklevel=1,
+            )
 
     def _dry_run(self, m, d, n, e1, e2):
         """(N, planar load) of this step without the friction: ``mj_forward`` on a copy."""
@@ -341,6 +389,11 @@ def _support_ids(model, support) -> list[int]:
             )
         return ids
     names = [support] if isinstance(support, str) else list(support)
+    if not names:
+        raise ValueError(
+            f"support = {support!r} is invalid; valid values: None (the world body's geoms) "
+            "or the names of one or more geoms"
+        )
     ids = []
     for name in names:
         gid = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, str(name))
