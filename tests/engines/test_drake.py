@@ -221,3 +221,6 @@ def test_bad_inputs():
         add_patch_friction(builder, plant, "puck", BODY, FRICTION)
     with pytest.raises(ValueError, match="mesh|valid values"):
         example_diagram(ss.Body(ss.Ellipse(0.05, 0.03), ss.UniformPressure(), 0.2), FRICTION)
+    builder, plant = _plant()  # frictionless, but point contact: the normal force jumps
+    with pytest.warns(UserWarning, match="hydroelastic"):
+        add_patch_friction(builder, plant, "puck", BODY, FRICTION)

@@ -59,6 +59,7 @@ May import: :mod:`slidespin.engines` (and below), pydrake.
 from __future__ import annotations
 
 import math
+import warnings
 from typing import NamedTuple
 
 import numpy as np
@@ -180,6 +181,25 @@ def check_frictionless(scene_graph: SceneGraph, plant: MultibodyPlant, body: Rig
                 f"{inspector.GetName(gid)!r} (static {mu.static_friction():g}, dynamic "
                 f"{mu.dynamic_friction():g})"
             )
+    point = [
+        inspector.GetName(gid)
+        for gid in plant.GetCollisionGeometriesForBody(body)
+        if not (
+            (props := inspector.GetProximityProperties(gid)) is not None
+            and props.HasProperty("hydroelastic", "compliance_type")
+        )
+    ]
+    if point and not bad:
+        warnings.warn(
+            f"body {body.name()!r}: its collision geometries {point} have no hydroelastic "
+            "properties, so Drake resolves the flat contact with point contact, whose few "
+            "points come and go from step to step: the normal force, and with it the "
+            "coupled friction, jumps (a box measured 5 % off); give them compliant "
+            "hydroelastic properties (AddCompliantHydroelasticProperties, as "
+            "example_diagram does)",
+            UserWarning,
+            stacklevel=3,
+        )
     if bad:
         raise ValueError(
             f"body {body.name()!r} is invalid for the coupling: its collision geometries "
