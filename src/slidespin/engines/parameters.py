@@ -148,7 +148,13 @@ class EngineParameters(dict):
     def summary(self) -> str:
         """A Markdown table of the worst errors of the fitted parameters and the baselines."""
         rows = [
-            f"{self.engine}: {dict(self)}",
+            f"{self.engine}: {_short(dict(self))}",
+            "",
+            f"Worst relative errors over the {len(self.launches)} launches fitted on (stop "
+            "time |Δt|/t, distance |Δp|/max(d, ℓ), rotation |Δφ|/max(|φ|, 0.5 rad)), for the "
+            "fitted parameters, the engine's defaults and the naive choice (the mean "
+            "coefficient as sliding friction, nothing else). The fit minimises the three "
+            "together, over every launch: one error may end above a baseline's.",
             "",
             "| parameters | stop time | distance | rotation |",
             "|---|---|---|---|",
@@ -164,10 +170,23 @@ class EngineParameters(dict):
     def __repr__(self) -> str:
         w = self.errors["fitted"]["worst"]
         return (
-            f"EngineParameters({dict.__repr__(self)}, engine={self.engine!r}, worst fitted "
+            f"EngineParameters({_short(dict(self))}, engine={self.engine!r}, worst fitted "
             f"errors: t_stop {w['t_stop']:.3g}, distance {w['distance']:.3g}, rotation "
             f"{w['rotation']:.3g})"
         )
+
+
+def _short(params: dict) -> str:
+    """The parameters with their numbers to 6 significant digits (for reading)."""
+
+    def fmt(value):
+        if isinstance(value, float):
+            return f"{value:.6g}"
+        if isinstance(value, tuple):
+            return "(" + ", ".join(fmt(v) for v in value) + ")"
+        return repr(value)
+
+    return "{" + ", ".join(f"{k!r}: {fmt(v)}" for k, v in params.items()) + "}"
 
 
 # ------------------------------------------------------------------------------------------
