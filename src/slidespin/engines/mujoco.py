@@ -75,6 +75,7 @@ __all__ = ["Coupling", "attach", "attached", "detach", "set_twist"]
 #: next: the previous step's is then used; else (a touchdown, a bounce) this step's own, from a
 #: frictionless ``mj_forward`` on a copy of the data
 _STEADY = 1e-2
+_RK4 = int(mujoco.mjtIntegrator.mjINT_RK4)
 
 #: data address → (weak reference to the data, weak reference to its model, {body id →
 #: Coupling}); the references tell a data freed without ``detach`` from a new one at the same
@@ -248,13 +249,14 @@ class Coupling:
         )
         phi = math.atan2(r00 * c0 + r10 * c1 + r20 * c2, r00 * a0 + r10 * a1 + r20 * a2)
         t = d.time
-        h = m.opt.timestep
+        opt = m.opt
+        h = opt.timestep
         fr = self.friction
         if h != fr.dt:  # the model's step changed since the last step: start afresh
             fr.dt = h
             fr.reset()
             self._last = None
-        if m.opt.integrator == mujoco.mjtIntegrator.mjINT_RK4:
+        if opt.integrator == _RK4:
             return self._refuse_rk4()
         load = None
         last = self._last
