@@ -371,7 +371,7 @@ def _drake_scene_runs(d, body, params, states, g, dt, t_max):
     weight = m * g
     dissipation = float(params.get("hunt_crossley_dissipation", 10.0))
 
-    def props(compliant: bool) -> d.ProximityProperties:
+    def props(compliant: bool):  # -> pydrake.geometry.ProximityProperties
         pp = d.ProximityProperties()
         # point stiffness: the weight sinks the body by ~1e-3 ℓ
         d.AddContactMaterial(dissipation, weight / (1e-3 * body.length_unit), friction, pp)

@@ -53,6 +53,7 @@ import math
 import warnings
 import weakref
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -85,6 +86,8 @@ _ATTACHED: dict[int, tuple[weakref.ref, weakref.ref, dict[int, Coupling]]] = {}
 _SAVED: dict[int, tuple[weakref.ref, dict[int, tuple[int, int]]]] = {}
 _CHAINED: list = []  # the passive callback that was set before ours (at most one)
 _CALLBACK = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_void_p)
+#: the class of ctypes function pointers (what ``get_mjcb_passive`` returns for a C callback)
+_CFUNCPTR: Any = ctypes._CFuncPtr  # type: ignore[attr-defined]
 
 
 def _raw_passive(m_ptr, d_ptr) -> None:
@@ -96,7 +99,7 @@ def _raw_passive(m_ptr, d_ptr) -> None:
     the callback looks the data up among the coupled ones and returns at once for any other,
     so models compile while bodies are attached."""
     prev = _CHAINED[0] if _CHAINED else None
-    if prev is not None and isinstance(prev, ctypes._CFuncPtr):
+    if prev is not None and isinstance(prev, _CFUNCPTR):
         prev(m_ptr, d_ptr)
     entry = _ATTACHED.get(d_ptr)
     if entry is None:
@@ -104,7 +107,7 @@ def _raw_passive(m_ptr, d_ptr) -> None:
     d, m = entry[0](), entry[1]()
     if d is None or m is None or m._address != m_ptr:
         return
-    if prev is not None and not isinstance(prev, ctypes._CFuncPtr):
+    if prev is not None and not isinstance(prev, _CFUNCPTR):
         prev(m, d)  # a Python callback set before: for the coupled data (it has wrappers)
     try:
         for c in entry[2].values():
@@ -515,7 +518,7 @@ def attach(
 def _installed(current) -> bool:
     """Whether MuJoCo's passive callback is ours (the getter returns a new ctypes object)."""
     return (
-        isinstance(current, ctypes._CFuncPtr)
+        isinstance(current, _CFUNCPTR)
         and ctypes.cast(current, ctypes.c_void_p).value
         == ctypes.cast(_PASSIVE, ctypes.c_void_p).value
     )
