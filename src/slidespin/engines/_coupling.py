@@ -65,7 +65,7 @@ _REST = 1e-9
 #: fixed-point iterations of the implicit step before the onset solver takes over
 _FIXED_POINT_ITERATIONS = 8
 #: … to this change of the twist's direction (the engine's own errors are far larger)
-_FIXED_POINT_TOL = 1e-10
+_FIXED_POINT_TOL = 1e-8
 #: safety factor on the inner ball of C (the bound only decides when to compute exactly)
 _INNER_MARGIN = 0.98
 
@@ -377,8 +377,17 @@ class SteppedFriction:
         ell, k, tw, c = self.ell, self.k, self.tw, normal / self.m
         x0, x1, x2 = x
         a0, a1, a2 = a
-        nx = math.sqrt(x0 * x0 + x1 * x1 + x2 * x2)
-        u0, u1, u2 = x0 / nx, x1 / nx, x2 / nx
+        g0, g1, g2 = x0, x1, x2
+        if self._slipping:  # start from the friction of the step before: two calls suffice
+            w0, w1, w2 = self._w
+            g0 += tau * (a0 + w0 / self.m)
+            g1 += tau * (a1 + w1 / self.m)
+            g2 += tau * (a2 + w2 / (self.m * k))
+        ng = math.sqrt(g0 * g0 + g1 * g1 + g2 * g2)
+        if not ng > 0.0:
+            g0, g1, g2 = x0, x1, x2
+            ng = math.sqrt(g0 * g0 + g1 * g1 + g2 * g2)
+        u0, u1, u2 = g0 / ng, g1 / ng, g2 / ng
         for _ in range(_FIXED_POINT_ITERATIONS):  # a contraction while |τ A| ≪ |x|
             fx, fy, mo = tw(phi, u0 / ell, u1 / ell, u2 / k)
             z0 = x0 + tau * (a0 + c * fx)
