@@ -220,12 +220,6 @@ class SteppedFriction:
         self._known = None
 
     # -- the wrench of the patch --------------------------------------------------------
-    def kinetic(self, nu, phi: float, normal: float) -> tuple[float, float, float]:
-        """W(ν) = N w(ν) [N, N, N m] of a twist ν ≠ 0 (support frame) at angle φ."""
-        ell = self.ell
-        fx, fy, m = self.tw(float(phi), nu[0] / ell, nu[1] / ell, float(nu[2]))
-        return (normal * fx, normal * fy, normal * m * ell)
-
     def _gauge(self, b: np.ndarray, phi: float) -> float:
         """γ(b) for a wrench b in natural units (per unit load, M per ℓ): b ∈ C iff γ ≤ 1."""
         nb = float(np.linalg.norm(b))

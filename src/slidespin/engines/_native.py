@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import logging
 import math
+import tempfile
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -259,8 +260,6 @@ def _pybullet_shape(p, cid, body, folder):
 
 def _pybullet_runs(body, params, states, g, dt, t_max):
     p = _import("pybullet")
-    import tempfile
-
     cid = p.connect(p.DIRECT)
     folder = tempfile.TemporaryDirectory(prefix="slidespin-pybullet-")
     try:

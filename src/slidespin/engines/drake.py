@@ -76,8 +76,8 @@ try:
         ProximityProperties,
         SceneGraph,
     )
-    from pydrake.math import RigidTransform, RollPitchYaw
-    from pydrake.multibody.math import SpatialForce
+    from pydrake.math import RigidTransform, RollPitchYaw, RotationMatrix
+    from pydrake.multibody.math import SpatialForce, SpatialVelocity
     from pydrake.multibody.plant import (
         AddMultibodyPlant,
         ContactResults,
@@ -86,7 +86,12 @@ try:
         MultibodyPlant,
         MultibodyPlantConfig,
     )
-    from pydrake.multibody.tree import RigidBody, SpatialInertia, UnitInertia
+    from pydrake.multibody.tree import (
+        ModelInstanceIndex,
+        RigidBody,
+        SpatialInertia,
+        UnitInertia,
+    )
     from pydrake.systems.framework import Diagram, DiagramBuilder, LeafSystem
 except ImportError as exc:  # pragma: no cover - exercised only without the extra
     raise ImportError(
@@ -139,8 +144,6 @@ def _find_body(plant: MultibodyPlant, body) -> RigidBody:
 
 
 def _body_indices(plant: MultibodyPlant) -> list:
-    from pydrake.multibody.tree import ModelInstanceIndex
-
     out = []
     for m in range(plant.num_model_instances()):
         out.extend(plant.GetBodyIndices(ModelInstanceIndex(m)))
@@ -659,9 +662,6 @@ def set_planar_state(
     (for :func:`example_diagram` with an incline α: ``RigidTransform(RollPitchYaw(0, α, 0),
     [0, 0, 0])``). Assumes the body's frame origin is its mass centre.
     """
-    from pydrake.math import RotationMatrix
-    from pydrake.multibody.math import SpatialVelocity
-
     body = _find_body(plant, body)
     X_WS = RigidTransform() if support is None else support
     R_WS = X_WS.rotation()

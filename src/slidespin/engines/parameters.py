@@ -85,6 +85,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.engines import _native
 from slidespin.engines.scenes import prism_parts
+from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 
 __all__ = ["EngineParameters", "engine_parameters", "default_launches"]
@@ -298,8 +299,6 @@ class _Targets:
     """slidespin's stops for the launches, and the scales of the relative errors."""
 
     def __init__(self, body: Body, friction: FrictionTensor, launches, g: float) -> None:
-        from slidespin.motion.simulate import simulate  # lazy: the integrator stack
-
         self.launches = launches
         self.t, self.p, self.phi, self.d_scale, self.phi_scale = [], [], [], [], []
         ell = body.length_unit
