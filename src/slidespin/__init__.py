@@ -26,6 +26,7 @@ from slidespin._version import __version__
 
 if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin import paper
+    from slidespin.analysis.aim import UnreachableTarget, aim
     from slidespin.analysis.fit import FitWarning, IdentifiabilityWarning, compare_frames, fit
     from slidespin.analysis.fit_data import read_runs
     from slidespin.analysis.fit_push import PushFitResult, fit_pushes
@@ -39,6 +40,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     )
     from slidespin.analysis.phase_portrait import PhasePortrait, phase_portrait
     from slidespin.analysis.push_data import PushRun, read_push, read_pushes
+    from slidespin.analysis.sensitivities import stop_sensitivities
     from slidespin.analysis.terminal import TerminalState, terminal_ratio, terminal_states
     from slidespin.contact.body import Body
     from slidespin.contact.ellipse import Ellipse
@@ -74,6 +76,7 @@ if TYPE_CHECKING:  # the names as the type checker and IDEs see them
     from slidespin.motion.pushed_trajectory import PushedTrajectory
     from slidespin.motion.pushers import LinePusher, PointPusher
     from slidespin.motion.quasi_static import QuasiStaticPush, push_quasi_static
+    from slidespin.motion.sensitivity import Sensitivities
     from slidespin.motion.simulate import simulate
     from slidespin.motion.springs import Spring
     from slidespin.motion.state import State
@@ -96,6 +99,10 @@ _HOMES = {
     "drake": "slidespin.drake",
     "EngineParameters": "slidespin.engines.parameters",
     "engine_parameters": "slidespin.engines.parameters",
+    "aim": "slidespin.analysis.aim",
+    "UnreachableTarget": "slidespin.analysis.aim",
+    "stop_sensitivities": "slidespin.analysis.sensitivities",
+    "Sensitivities": "slidespin.motion.sensitivity",
     "FitWarning": "slidespin.analysis.fit",
     "IdentifiabilityWarning": "slidespin.analysis.fit",
     "compare_frames": "slidespin.analysis.fit",
@@ -275,6 +282,11 @@ __all__ = [
     "PushRun",
     "fit_pushes",
     "PushFitResult",
+    # analysis: derivatives of a motion's stop, and aiming (MODEL §15)
+    "stop_sensitivities",
+    "Sensitivities",
+    "aim",
+    "UnreachableTarget",
     # studies: case files and sweeps
     "Case",
     "load_case",

@@ -63,12 +63,14 @@ PUBLIC_MODULES = (
     "slidespin.motion.pushers",
     "slidespin.motion.quasi_static",
     "slidespin.motion.quasi_static_line",
+    "slidespin.motion.sensitivity",
     "slidespin.motion.simulate",
     "slidespin.motion.springs",
     "slidespin.motion.state",
     "slidespin.motion.trajectory",
     # analysis
     "slidespin.analysis",
+    "slidespin.analysis.aim",
     "slidespin.analysis.fit",
     "slidespin.analysis.fit_data",
     "slidespin.analysis.fit_push",
@@ -76,6 +78,7 @@ PUBLIC_MODULES = (
     "slidespin.analysis.intervals",
     "slidespin.analysis.phase_portrait",
     "slidespin.analysis.push_data",
+    "slidespin.analysis.sensitivities",
     "slidespin.analysis.terminal",
     # studies
     "slidespin.studies",

@@ -73,6 +73,7 @@ _PLUGINS = (
         "slidespin.cli.limit_surface",
         "sample and fit the limit surface of a case's body",
     ),
+    ("aim", "slidespin.cli.aim", "find the launch that stops a case's body at a target pose"),
     (
         "animate",
         "slidespin.cli.animate",

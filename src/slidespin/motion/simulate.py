@@ -23,6 +23,7 @@ has t = t₁√(aπ/g) (MODEL §7, erratum 2).
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, overload
 
 import numpy as np
@@ -39,6 +40,8 @@ from slidespin.motion._law_motion import simulate_law
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES
+from slidespin.motion.sensitivity import check_parameters
+from slidespin.motion.sensitivity import compute as compute_sensitivities
 from slidespin.motion.springs import Spring
 from slidespin.motion.state import State
 from slidespin.motion.trajectory import Trajectory
@@ -114,6 +117,7 @@ def simulate(
     scan_step: float | None = ...,
     pusher: None = ...,
     outline: None = ...,
+    sensitivities: Sequence[str] | None = ...,
 ) -> Trajectory: ...
 
 
@@ -190,6 +194,7 @@ def simulate(
     scan_step: float | None = ...,
     pusher: PointPusher | LinePusher,
     outline: Any = ...,
+    sensitivities: None = ...,
 ) -> PushedTrajectory: ...
 
 
@@ -209,6 +214,7 @@ def simulate(
     scan_step: float | None = ...,
     pusher: PointPusher | LinePusher | None = ...,
     outline: Any = ...,
+    sensitivities: Sequence[str] | None = ...,
 ) -> Trajectory | LoadedTrajectory | PushedTrajectory: ...
 
 
@@ -227,6 +233,7 @@ def simulate(
     scan_step: float | None = None,
     pusher: PointPusher | LinePusher | None = None,
     outline: Any = None,
+    sensitivities: Sequence[str] | None = None,
 ) -> Trajectory | LoadedTrajectory | PushedTrajectory:
     """Integrate the motion of ``body`` from ``initial_state`` until it stops.
 
@@ -283,6 +290,15 @@ def simulate(
         vertices, or an ellipse), when the body is wider than its contact patch; default the
         footprint's convex hull (:func:`slidespin.contact.outline.body_outline`). Refused
         without a pusher.
+    sensitivities : sequence of str, optional
+        Parameters to differentiate the motion with respect to (MODEL §15): any of ``fx``,
+        ``fy``, ``f``, ``xi_c``, ``eta_c``, ``moment_of_inertia``, ``vx``, ``vy``,
+        ``omega`` (the last three of the start). The variational equations are integrated
+        with the motion (:mod:`slidespin.motion.sensitivity`) and the trajectory's
+        ``sensitivities`` holds ∂q(t)/∂θ along it and the stop's derivatives (t_stop, the
+        stop pose, β*). Free motion under a constant law only (refused with a load, a slope,
+        ``t_end``, a pusher, a speed law or a tall body), and for a motion that stops (not a
+        spiral).
 
     Returns
     -------
@@ -326,6 +342,9 @@ def simulate(
                 "0.001]); pass load=, incline=, t_end= by keyword, e.g. "
                 "simulate(body, friction, state, load=load, t_end=2.0)"
             )
+    if sensitivities is not None:
+        sensitivities = check_parameters(sensitivities)
+        _check_differentiable(body, friction, load, incline, t_end, pusher)
     if pusher is not None:
         return _pushed(body, friction, initial_state, g, rtol, max_steps, max_step, load,
                        incline, t_end, scan_step, pusher, outline)  # fmt: skip
@@ -372,6 +391,11 @@ def simulate(
     k = par[_engine.P_K]
     vxn, vyn, wn = s0.vx / v_unit, s0.vy / v_unit, s0.omega * t_unit
     speed0 = math.sqrt(vxn * vxn + vyn * vyn + (k * wn) ** 2)
+    if speed0 == 0.0 and sensitivities is not None:
+        raise ValueError(
+            f"initial_state = {initial_state!r} is at rest: there is no motion to "
+            "differentiate (sensitivities); valid values: a state that moves"
+        )
     if speed0 == 0.0:
         one = lambda x: np.array([float(x)])  # noqa: E731
         return Trajectory(
@@ -451,6 +475,20 @@ def simulate(
         # F_τ and F_n tend to 0 whatever the vanishing velocity's direction does
         tangential[-1] = normal[-1] = 0.0
     stop = State(yend[5] * a, yend[6] * a, yend[7])
+    sens = None
+    if sensitivities is not None:
+        if status_name(status) != "stopped" or ending == "spiral":
+            raise ValueError(
+                f"sensitivities = {sensitivities!r} cannot be computed for this motion: it "
+                f"ends with status {status_name(status)!r}, ending {ending!r}; valid: a "
+                "motion that stops with a terminal direction (status 'stopped', ending "
+                "'mixed', 'pure_sliding' or 'pure_spinning')"
+            )
+        accel = np.column_stack([fx, fy, mm / k])
+        sens = compute_sensitivities(
+            body, friction, initial_state, sensitivities, g, rtol, ending, float(term[2]),
+            rec[:, 0], rows, accel,
+        )  # fmt: skip
     return Trajectory(
         t=rows[:, 4] * t_unit,
         x=rows[:, 5] * a,
@@ -480,7 +518,26 @@ def simulate(
         friction=friction,
         initial_state=initial_state,
         g=g,
+        sensitivities=sens,
     )
+
+
+def _check_differentiable(body, friction, load, incline, t_end, pusher) -> None:
+    """Refuse ``sensitivities=`` where they are not built: loaded, inclined, bounded or
+    pushed runs, speed laws and tall bodies (MODEL §15 covers free motion here)."""
+    for name, val in (("load", load), ("incline", incline), ("t_end", t_end),
+                      ("pusher", pusher)):  # fmt: skip
+        if val is not None:
+            raise ValueError(
+                f"{name} = {v._short(val)} is invalid with sensitivities (they are computed "
+                "for free motion under a constant friction law only); valid values: None"
+            )
+    if not law_is_constant(friction.speed_law) or _tall(body, friction):
+        raise ValueError(
+            "sensitivities are computed for a thin body under a constant friction law only; "
+            f"friction.speed_law = {friction.speed_law!r}, body.height = {body.height!r} m "
+            "(valid: speed_law None, height 0)"
+        )
 
 
 def _terminal_values(

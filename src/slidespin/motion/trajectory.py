@@ -27,6 +27,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.motion._report import _html_table
 from slidespin.motion.outcomes import status_message
+from slidespin.motion.sensitivity import Sensitivities
 from slidespin.motion.state import State
 
 if TYPE_CHECKING:
@@ -96,6 +97,10 @@ class Trajectory:
         fixed point was reached.
     n_steps, n_rhs : int
         Integrator steps and right-hand-side evaluations.
+    sensitivities : Sensitivities or None
+        With ``simulate(..., sensitivities=...)``: the derivatives of the path and of the
+        stop with respect to those parameters
+        (:class:`slidespin.motion.sensitivity.Sensitivities`); ``None`` otherwise.
     """
 
     t: NDArray[np.float64]
@@ -126,6 +131,7 @@ class Trajectory:
     g: float = 9.81
     saddle_energy: float = math.nan
     eigenvalue_ratio: float = math.nan
+    sensitivities: Sensitivities | None = field(default=None, repr=False)
 
     def __repr__(self) -> str:
         return (

@@ -1,0 +1,282 @@
+"""Aiming: the launch whose motion stops at a target pose (MODEL §15).
+
+:func:`aim` finds the start velocities (any of vx, vy, ω, the others fixed) whose free motion
+stops with G at the target (x, y) and, if given, the body at the target angle φ, by a
+Levenberg–Marquardt iteration on the stop's exact sensitivities
+(:func:`slidespin.stop_sensitivities`: one sensitivity run per iteration gives the miss and
+its Jacobian). The miss is measured with :func:`slidespin.simulate` itself, at the same
+tolerance, so the launch returned stops where ``simulate`` says it does. When no launch
+reaches the target, :class:`UnreachableTarget` says so, with the nearest stop pose found.
+
+The target angle is the body's total angle at the stop, as :func:`slidespin.simulate`
+reports it (not reduced modulo 2π: a stone that turns one and a quarter times stops at
+φ₀ + 5π/2). The angle's miss is weighted by the body's length unit ℓ, so that a miss of
+1e-9 rad counts as 1e-9 ℓ in the least-squares miss (the nearest pose of an unreachable
+target); a target is hit when x and y are within ``tol`` metres and φ within ``tol`` radians.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import replace
+
+import numpy as np
+
+from slidespin import _validate as v
+from slidespin.contact.body import Body
+from slidespin.contact.friction import FrictionTensor
+from slidespin.motion.simulate import simulate
+from slidespin.motion.state import State
+
+__all__ = ["aim", "UnreachableTarget", "AIM_FREE"]
+
+#: the start's components :func:`aim` may solve for
+AIM_FREE = ("vx", "vy", "omega")
+#: default miss tolerance [m] (the angle's in units of ℓ)
+TOL = 1e-10
+MAX_ITER = 60
+
+
+class UnreachableTarget(ValueError):
+    """No launch with the given free components stops at the target.
+
+    Attributes
+    ----------
+    target : tuple of float
+        The target (x, y[, φ]).
+    nearest : State
+        The nearest stop pose found (its velocities are zero).
+    start : State
+        The launch that stops there.
+    miss : float
+        Its distance from the target [m] (the angle's miss weighted by ℓ).
+    """
+
+    def __init__(self, message: str, target, nearest: State, start: State, miss: float):
+        super().__init__(message)
+        self.target = target
+        self.nearest = nearest
+        self.start = start
+        self.miss = miss
+
+
+def _check_target(target) -> tuple[float, ...]:
+    try:
+        t = tuple(float(x) for x in target)
+    except (TypeError, ValueError):
+        t = ()
+    if len(t) not in (2, 3) or not all(math.isfinite(x) for x in t):
+        raise ValueError(
+            f"target = {v._short(target)} is invalid; valid values: (x, y) or (x, y, phi), "
+            "finite, in m and rad"
+        )
+    return t
+
+
+def _check_free(free) -> tuple[str, ...]:
+    names = (free,) if isinstance(free, str) else tuple(free) if free is not None else ()
+    if not names or len(set(names)) != len(names) or not all(n in AIM_FREE for n in names):
+        raise ValueError(
+            f"free = {v._short(free)} is invalid; valid values: a non-empty set of distinct "
+            f"names among {', '.join(AIM_FREE)}"
+        )
+    return names
+
+
+def aim(
+    body: Body,
+    friction: FrictionTensor,
+    target: Sequence[float],
+    start: State | None = None,
+    free: Sequence[str] = AIM_FREE,
+    g: float = 9.81,
+    rtol: float = 1e-10,
+    tol: float = TOL,
+    max_iter: int = MAX_ITER,
+) -> State:
+    """The start whose free motion stops at ``target`` (MODEL §15).
+
+    Parameters
+    ----------
+    body : Body
+        Any body :func:`slidespin.simulate` runs free (a thin body).
+    friction : FrictionTensor
+        A constant friction law.
+    target : (x, y) or (x, y, phi)
+        Where G must stop [m] and, if given, the body's total angle there [rad] (as
+        ``simulate`` reports it: not reduced modulo 2π).
+    start : State, optional
+        The launch position and angle, and the velocities that are not ``free``; its free
+        velocities, if not all zero, are the first guess. Default: at the origin, at rest.
+    free : sequence of str, default ("vx", "vy", "omega")
+        The start's components to solve for.
+    g : float, default 9.81
+        Gravitational acceleration [m/s²].
+    rtol : float, default 1e-10
+        Tolerance of the simulations (use the same to check the result with ``simulate``).
+    tol : float, default 1e-10
+        Largest accepted miss in x and y [m] and in φ [rad], in [1e-14, 1].
+    max_iter : int, default 60
+        Iterations per first guess.
+
+    Returns
+    -------
+    State
+        The start: ``start`` with its free velocities solved for.
+
+    Raises
+    ------
+    UnreachableTarget
+        (a ``ValueError``) When no launch with these free components stops within ``tol``
+        of the target; it holds the nearest stop pose found (``nearest``), its launch
+        (``start``) and the miss.
+    ValueError
+        For invalid input.
+
+    Notes
+    -----
+    Levenberg–Marquardt on the miss r(q) = (x_stop − x, y_stop − y, ℓ(φ_stop − φ)) over the
+    free velocities q, with r from :func:`slidespin.simulate` and its Jacobian from the
+    stop's sensitivities (:mod:`slidespin.motion.sensitivity`). First guesses: the free
+    velocities of ``start`` if not all zero, then launches along the line to the target at
+    the speed that stops there in pure translation (v² = 2 μ g d), with the spin that turns
+    the body by Δφ over the same time (ω = Δφ v/d), scaled by 1, 0.7 and 1.4.
+
+    Examples
+    --------
+    >>> import slidespin as ss
+    >>> body = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), mass=1.0)
+    >>> s = ss.aim(body, ss.FrictionTensor(0.3, 0.3), target=(1.0, 0.5, 2.0))
+    >>> tr = ss.simulate(body, ss.FrictionTensor(0.3, 0.3), s)
+    >>> bool(abs(tr.stop_state.x - 1.0) < 1e-9 and abs(tr.stop_state.phi - 2.0) < 1e-9)
+    True
+    """
+    if not isinstance(body, Body):
+        raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
+    if not isinstance(friction, FrictionTensor):
+        raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
+    tgt = _check_target(target)
+    names = _check_free(free)
+    if start is None:
+        start = State()
+    if not isinstance(start, State):
+        raise ValueError(f"start = {start!r} is invalid; valid values: a slidespin.State")
+    tol = v.in_range("tol", tol, 1e-14, 1.0)
+    if isinstance(max_iter, bool) or not isinstance(max_iter, int) or not 1 <= max_iter <= 1000:
+        raise ValueError(f"max_iter = {max_iter!r} is invalid; valid range: integer in [1, 1000]")
+    ell = body.length_unit
+    best: tuple[float, State, State] | None = None
+    for guess in _guesses(body, friction, tgt, start, names, g):
+        q, miss, hit, pose = _solve(body, friction, tgt, start, names, guess, g, rtol, tol,
+                                    max_iter)  # fmt: skip
+        launch = replace(start, **dict(zip(names, q)))
+        if hit:
+            return launch
+        if best is None or miss < best[0]:
+            best = (miss, pose, launch)
+    assert best is not None
+    miss, pose, launch = best
+    wanted = f"({', '.join(f'{x:.10g}' for x in tgt)})"
+    got = f"({pose.x:.10g}, {pose.y:.10g}" + (f", {pose.phi:.10g})" if len(tgt) == 3 else ")")
+    raise UnreachableTarget(
+        f"target = {wanted} cannot be reached by varying {', '.join(names)} (the other start "
+        f"components fixed): the nearest stop found is {got}, {miss:.3g} m away (the angle's "
+        f"miss weighted by the length unit {ell:.6g} m), from the launch {launch!r}; valid: "
+        "a target within tol = {:.3g} m of a reachable stop, or more free components".format(tol),
+        tgt,
+        pose,
+        launch,
+        miss,
+    )
+
+
+def _guesses(body, friction, tgt, start, names, g):
+    """First guesses of the free velocities (module docstring)."""
+    own = np.array([getattr(start, n) for n in names])
+    if np.any(own != 0.0):
+        yield own
+    dx, dy = tgt[0] - start.x, tgt[1] - start.y
+    d = math.hypot(dx, dy)
+    dphi = tgt[2] - start.phi if len(tgt) == 3 else 0.0
+    kin = friction.kinetic
+    if d > 0.0:
+        ex, ey = dx / d, dy / d
+        mu = kin.fx * ex * ex + kin.fy * ey * ey
+        speed = math.sqrt(2.0 * mu * g * d)
+        omega = dphi * speed / d
+        vel = {"vx": speed * ex, "vy": speed * ey, "omega": omega}
+    else:  # a turn on the spot: a spinning disk of radius ℓ, M = (2/3) μ m g ℓ
+        mu = 0.5 * (kin.fx + kin.fy)
+        alpha = (2.0 / 3.0) * mu * body.mass * g * body.length_unit / body.moment_of_inertia
+        vel = {"vx": 0.0, "vy": 0.0, "omega": math.copysign(math.sqrt(2 * alpha * abs(dphi)), dphi)}
+    base = np.array([vel[n] if vel[n] != 0.0 or getattr(start, n) == 0.0 else getattr(start, n)
+                     for n in names])  # fmt: skip
+    for f in (1.0, 0.7, 1.4):
+        yield base * f
+
+
+def _miss(body, friction, tgt, start, names, q, g, rtol, jac):
+    """(miss vector, its Jacobian or None, stop pose) of the launch with free velocities q."""
+    launch = replace(start, **dict(zip(names, (float(x) for x in q))))
+    tr = simulate(body, friction, launch, g, rtol, sensitivities=names if jac else None)
+    s = tr.stop_state
+    ell = body.length_unit
+    r = [s.x - tgt[0], s.y - tgt[1]] + ([(s.phi - tgt[2]) * ell] if len(tgt) == 3 else [])
+    J = None
+    if jac:
+        d = tr.sensitivities.stop  # type: ignore[union-attr]
+        rows = [[d[n]["x"] for n in names], [d[n]["y"] for n in names]]
+        if len(tgt) == 3:
+            rows.append([d[n]["phi"] * ell for n in names])
+        J = np.array(rows)
+    return np.array(r), J, s
+
+
+def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
+    """Levenberg–Marquardt from ``q0``; returns (q, miss, hit, stop pose) of the best
+    point (``hit``: within ``tol`` in x and y [m] and φ [rad])."""
+    k = body.radius_of_gyration
+    q = np.asarray(q0, dtype=float)
+    scale = max(float(np.max(np.abs([x * (k if n == "omega" else 1.0)
+                                     for x, n in zip(q, names)]))), 1e-3)  # fmt: skip
+    typ = np.array([scale / k if n == "omega" else scale for n in names])
+    ell = body.length_unit
+    try:
+        r, J, pose = _miss(body, friction, tgt, start, names, q, g, rtol, True)
+    except (ValueError, RuntimeError):
+        return q, math.inf, False, State(math.nan, math.nan, math.nan)
+    lam = 1e-3
+
+    def hit(r):  # within tol in x and y [m] and in φ [rad]
+        return max(abs(r[0]), abs(r[1]), abs(r[2]) / ell if r.size == 3 else 0.0) <= tol
+
+    for _ in range(max_iter):
+        miss = float(np.linalg.norm(r))
+        if hit(r):
+            break
+        Js = J * typ  # scaled unknowns
+        A = Js.T @ Js
+        gvec = Js.T @ r
+        improved = False
+        while lam < 1e12:
+            step = -np.linalg.solve(A + lam * np.diag(np.maximum(np.diag(A), 1e-12)), gvec)
+            n_step = float(np.linalg.norm(step))
+            if n_step > 0.5 * (1.0 + float(np.linalg.norm(q / typ))):
+                step *= 0.5 * (1.0 + float(np.linalg.norm(q / typ))) / n_step
+            q_new = q + step * typ
+            try:
+                r_new, J_new, pose_new = _miss(body, friction, tgt, start, names, q_new, g,
+                                               rtol, True)  # fmt: skip
+            except (ValueError, RuntimeError):
+                lam *= 4.0
+                continue
+            if np.linalg.norm(r_new) < miss or (hit(r_new) and not hit(r)):
+                q, r, J, pose = q_new, r_new, J_new, pose_new
+                lam = max(lam / 5.0, 1e-12)
+                improved = True
+                break
+            lam *= 4.0
+        if not improved:
+            break
+    return q, float(np.linalg.norm(r)), hit(r), pose

@@ -1,0 +1,112 @@
+"""``slidespin aim CASE.toml --target x,y[,phi]``: the launch that stops at a target (MODEL §15).
+
+Reads the body, friction tensor, g and tolerance of a case file, and its ``[initial]`` table
+as the launch position and angle, the velocities that stay fixed and (if not zero) the
+first guess of the free ones; prints the launch found by :func:`slidespin.aim` (``--json``:
+as JSON), or exits with status 1 and the nearest reachable stop when the target cannot be
+reached. What aiming cannot use is refused, never ignored (:data:`UNUSED`): ``[load]``,
+``[spring]``, ``[incline]``, ``[pusher]``, ``[solver] t_end``. Plugin of
+:mod:`slidespin.cli.main` (``configure(parser)``, ``run(args)``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+# nothing heavy at the top: the parser is built from this module (`slidespin --help`)
+
+__all__ = ["configure", "run", "UNUSED"]
+
+_FREE_ONLY = "aiming solves for a free motion's launch; slidespin simulate runs this case"
+#: what a case file may give that ``slidespin aim`` cannot honour (refused)
+UNUSED = (
+    ("pusher", None, _FREE_ONLY),
+    ("load", None, _FREE_ONLY),
+    ("spring", None, _FREE_ONLY),
+    ("incline", None, _FREE_ONLY),
+    ("solver", ("t_end",), "an aimed motion runs to its stop"),
+)
+
+
+def configure(parser) -> None:
+    """Add the arguments of ``slidespin aim`` to an argparse (sub)parser."""
+    parser.description = (
+        "Find the launch velocities (vx, vy, omega, or a subset) with which the body of a case "
+        "file stops at a target pose (MODEL §15)."
+    )
+    parser.add_argument("case", metavar="CASE.toml", help="case file (examples/*.toml)")
+    parser.add_argument(
+        "--target",
+        required=True,
+        metavar="X,Y[,PHI]",
+        help="where G must stop [m] and the body's total angle there [rad], e.g. 1.0,0.5,2.0",
+    )
+    parser.add_argument(
+        "--free",
+        default="vx,vy,omega",
+        metavar="NAMES",
+        help="the launch components to solve for (default vx,vy,omega); the others are the "
+        "case's [initial] values",
+    )
+    parser.add_argument(
+        "--tol", type=float, default=1e-10, help="largest miss in m and rad (default 1e-10)"
+    )
+    parser.add_argument("--json", action="store_true", help="print the result as JSON")
+
+
+def _floats(text: str, name: str) -> tuple[float, ...]:
+    try:
+        vals = tuple(float(x) for x in text.split(","))
+    except ValueError:
+        vals = ()
+    if len(vals) not in (2, 3) or not all(math.isfinite(x) for x in vals):
+        raise ValueError(
+            f"{name} = {text!r} is invalid; valid values: x,y or x,y,phi (finite numbers, m "
+            "and rad), e.g. 1.0,0.5,2.0"
+        )
+    return vals
+
+
+def run(args) -> int:
+    """Aim, print; returns the exit status (1 for an unreachable target)."""
+    # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
+    from slidespin.analysis.aim import UnreachableTarget, aim
+    from slidespin.motion.simulate import simulate
+    from slidespin.studies.case import read_case, refuse_unused
+
+    target = _floats(args.target, "--target")
+    free = tuple(x.strip() for x in args.free.split(",") if x.strip())
+    case, data = read_case(args.case, initial_required=False)
+    refuse_unused(args.case, data, "slidespin aim", UNUSED)
+    try:
+        start = aim(case.body, case.friction, target, start=case.initial_state, free=free,
+                    g=case.g, rtol=case.rtol, tol=args.tol)  # fmt: skip
+    except UnreachableTarget as exc:
+        if args.json:
+            n, s = exc.nearest, exc.start
+            print(json.dumps({
+                "reachable": False, "target": list(target), "miss": exc.miss,
+                "nearest": {"x": n.x, "y": n.y, "phi": n.phi},
+                "launch": {"vx": s.vx, "vy": s.vy, "omega": s.omega},
+            }, indent=2))  # fmt: skip
+        else:
+            print(f"unreachable        : {exc}")
+        return 1
+    tr = simulate(case.body, case.friction, start, case.g, case.rtol)
+    stop = tr.stop_state
+    if args.json:
+        print(json.dumps({
+            "reachable": True, "target": list(target), "free": list(free),
+            "launch": {"x": start.x, "y": start.y, "phi": start.phi, "vx": start.vx,
+                       "vy": start.vy, "omega": start.omega},
+            "stop": {"t_stop": tr.t_stop, "x": stop.x, "y": stop.y, "phi": stop.phi},
+        }, indent=2))  # fmt: skip
+        return 0
+    print(f"case               : {case.name or args.case}")
+    print(f"target             : {', '.join(f'{x:.10g}' for x in target)}")
+    print(f"launch             : vx = {start.vx:.12g} m/s, vy = {start.vy:.12g} m/s, "
+          f"omega = {start.omega:.12g} rad/s (free: {', '.join(free)})")  # fmt: skip
+    print(f"stops              : x = {stop.x:.12g} m, y = {stop.y:.12g} m, phi = "
+          f"{stop.phi:.12g} rad at t = {tr.t_stop:.10g} s")  # fmt: skip
+    return 0

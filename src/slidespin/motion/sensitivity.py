@@ -1,0 +1,324 @@
+"""Sensitivities of a free motion to its parameters, along the path and at the stop (MODEL §15).
+
+For parameters θ (the friction entries, the pressure centre, the moment of inertia, the start's
+velocities) the sensitivity S = ∂y/∂θ of the regularised state y (MODEL §5) follows the
+variational equation dS/dτ = (∂G/∂y) S + ∂G/∂θ, integrated with the motion (forward mode) by
+:mod:`slidespin.motion._sensitivity_core`. From it:
+
+- at the stop: ∂t_stop/∂θ, the stop pose's ∂x, ∂y, ∂φ (the limits of the sensitivities of
+  t, x, y, φ as τ → ∞, where they converge with s), and ∂β*/∂θ from the converged terminal
+  direction u* and its sensitivity (a mixed ending; 0 for a pure sliding or pure spinning
+  ending that attracts nearby motions, whose β* stays ∞ or 0);
+- along the path, at the trajectory's own times t_i: the derivatives at fixed t,
+  ∂q(t_i)/∂θ = ∂q/∂θ|τ − q̇ ∂t/∂θ|τ, of q = x, y, φ, vx, vy, ω.
+
+:func:`slidespin.simulate` (``sensitivities=``) and :func:`slidespin.stop_sensitivities` are
+the public entries; this module holds the parameter names, their perturbations and the run.
+
+Departure from the issue: the variational equation's right-hand side is the central
+difference of the exact right-hand side along (S_k, e_k) (see
+:mod:`slidespin.motion._sensitivity_core`), accurate to about 1e-10 of the derivative, not
+analytic derivatives of the kernels; a run costs 1 + 2p wrench evaluations per stage for p
+parameters.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from slidespin import _validate as v
+from slidespin.contact import _engine
+from slidespin.contact.body import Body
+from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.pressure import LinearPressure, UniformPressure
+from slidespin.motion import _sensitivity_core as _core
+from slidespin.motion._flow import NY, initial_state
+from slidespin.motion.state import State
+
+__all__ = [
+    "PARAMETERS",
+    "STOP_OUTPUTS",
+    "PATH_OUTPUTS",
+    "Sensitivities",
+    "check_parameters",
+    "compute",
+]
+
+#: the parameters a motion can be differentiated with respect to: the friction tensor's
+#: entries, the pressure centre (ξc, ηc) = G in the body frame [m], the moment of inertia
+#: about G [kg m²] and the start's velocities (SI)
+PARAMETERS = ("fx", "fy", "f", "xi_c", "eta_c", "moment_of_inertia", "vx", "vy", "omega")
+#: the stop's quantities, in :func:`slidespin.stop_sensitivities`' dicts
+STOP_OUTPUTS = ("t_stop", "x", "y", "phi", "beta_stop")
+#: the path's quantities, at fixed time (:attr:`Sensitivities.path`)
+PATH_OUTPUTS = ("x", "y", "phi", "vx", "vy", "omega")
+
+#: relative step of the central differences inside the variational equation
+REL_STEP = 1e-5
+#: the wrench kernels' error target in a sensitivity run (the elliptic quadrature; the
+#: footprint kernels are exact)
+WRENCH_TOL = 1e-14
+#: the run goes on until s < e^(−LN_DROP) s₀ and the stop's sensitivities move by less than
+#: CONV_TOL (relative)
+LN_DROP = 36.0
+CONV_TOL = 1e-8
+MAX_STEPS = 200_000
+
+
+@dataclass(frozen=True)
+class Sensitivities:
+    """Derivatives of a motion with respect to its parameters (MODEL §15), SI units.
+
+    Attributes
+    ----------
+    parameters : tuple of str
+        The parameters (names of :data:`PARAMETERS`).
+    t : ndarray (n,)
+        The trajectory's times [s] (the last is the stop).
+    path : dict
+        ``path[p][q]``: ∂q(t)/∂p at the times ``t`` (fixed t), for q in ``x, y, phi, vx, vy,
+        omega``; the last row is the stop's.
+    stop : dict
+        ``stop[p][q]``: ∂q/∂p of the stop, q in ``t_stop, x, y, phi, beta_stop``: the
+        dict :func:`slidespin.stop_sensitivities` returns.
+    n_steps : int
+        Steps of the sensitivity run.
+    """
+
+    parameters: tuple[str, ...]
+    t: NDArray[np.float64] = field(repr=False)
+    path: dict[str, dict[str, NDArray[np.float64]]] = field(repr=False)
+    stop: dict[str, dict[str, float]]
+    n_steps: int = 0
+
+    def __getitem__(self, name: str) -> dict[str, NDArray[np.float64]]:
+        """``sens["fx"]``: the path's derivatives with respect to ``fx``."""
+        if name not in self.path:
+            raise KeyError(
+                f"parameter = {name!r} is not among these sensitivities; valid values: "
+                f"{', '.join(self.parameters)}"
+            )
+        return self.path[name]
+
+    def to_dict(self) -> dict[str, Any]:
+        """The stop's derivatives as a JSON-ready dict (``None`` for a non-finite value)."""
+        return {
+            p: {q: (x if math.isfinite(x) else None) for q, x in d.items()}
+            for p, d in self.stop.items()
+        }
+
+
+def check_parameters(parameters: Any) -> tuple[str, ...]:
+    """Validate the parameter names: a non-empty sequence of distinct names of
+    :data:`PARAMETERS` (a single name is taken as a one-element tuple)."""
+    if isinstance(parameters, str):
+        parameters = (parameters,)
+    try:
+        names = tuple(parameters)
+    except TypeError:
+        names = None
+    ok = (
+        names is not None
+        and len(names) > 0
+        and all(isinstance(p, str) and p in PARAMETERS for p in names)
+        and len(set(names)) == len(names)
+    )
+    if not ok:
+        raise ValueError(
+            f"parameters = {v._short(parameters)} is invalid; valid values: a non-empty "
+            f"sequence of distinct names among {', '.join(PARAMETERS)}"
+        )
+    return names  # type: ignore[return-value]
+
+
+def _centre(body: Body) -> tuple[float, float]:
+    """(ξc, ηc) of a body whose pressure centre can move: the linear law's, or the uniform
+    law's centroid (the linear law with that centroid is the uniform law)."""
+    p = body.pressure
+    if isinstance(p, LinearPressure):
+        return p.xi_c, p.eta_c
+    if isinstance(p, UniformPressure) and type(body.patch).__name__ != "Blade":
+        return body.mass_centre
+    raise ValueError(
+        f"parameters xi_c, eta_c need a pressure centre that can move: pressure = "
+        f"{body.pressure!r} on patch = {type(body.patch).__name__}(...) has none; valid "
+        "values: UniformPressure() or LinearPressure(xi_c, eta_c) on an Ellipse or an area "
+        "footprint"
+    )
+
+
+def _perturbed(
+    body: Body, friction: FrictionTensor, state: State, name: str, value: float
+) -> tuple[Body, FrictionTensor, State]:
+    """The body, tensor and start with parameter ``name`` set to ``value``."""
+    if name in ("fx", "fy", "f"):
+        entries: dict[str, Any] = {name: value}
+        return body, dataclasses.replace(friction, **entries), state
+    if name in ("vx", "vy", "omega"):
+        return body, friction, dataclasses.replace(state, **{name: value})
+    inertia = body.moment_of_inertia
+    pressure = body.pressure
+    if name == "moment_of_inertia":
+        inertia = value
+    else:
+        xi, eta = _centre(body)
+        pressure = LinearPressure(value, eta) if name == "xi_c" else LinearPressure(xi, value)
+    try:
+        return Body(body.patch, pressure, body.mass, inertia, body.height), friction, state
+    except ValueError as exc:
+        raise ValueError(
+            f"parameter {name!r} cannot be varied about its value here: {exc}"
+        ) from None
+
+
+def _value(body: Body, friction: FrictionTensor, state: State, name: str) -> float:
+    """The current value of parameter ``name`` (SI)."""
+    if name in ("fx", "fy", "f"):
+        return float(getattr(friction, name))
+    if name in ("vx", "vy", "omega"):
+        return float(getattr(state, name))
+    if name == "moment_of_inertia":
+        return float(body.moment_of_inertia)  # type: ignore[arg-type]
+    return float(_centre(body)[0 if name == "xi_c" else 1])
+
+
+def _step(body: Body, friction: FrictionTensor, state: State, name: str) -> float:
+    """The central difference's step h for parameter ``name`` (SI), REL_STEP of its scale."""
+    if name in ("fx", "fy", "f"):
+        return REL_STEP * max(friction.fx, friction.fy)
+    if name in ("xi_c", "eta_c"):
+        return REL_STEP * body.length_unit
+    if name == "moment_of_inertia":
+        return REL_STEP * float(body.moment_of_inertia)  # type: ignore[arg-type]
+    k = body.radius_of_gyration
+    speed = math.sqrt(state.vx**2 + state.vy**2 + (k * state.omega) ** 2)
+    return REL_STEP * (speed if name != "omega" else speed / k)
+
+
+def _rows(body: Body, friction: FrictionTensor, state: State, g: float):
+    """(par, geo, y0) of a body, tensor and start in natural units."""
+    par, _, _, geo = body.engine_params(friction.kinetic, WRENCH_TOL)
+    a = body.length_unit
+    t_unit, v_unit = math.sqrt(a / g), math.sqrt(a * g)
+    y0 = initial_state(
+        par, state.vx / v_unit, state.vy / v_unit, state.omega * t_unit,
+        state.x / a, state.y / a, state.phi,
+    )  # fmt: skip
+    return par, geo, y0
+
+
+def compute(
+    body: Body,
+    friction: FrictionTensor,
+    state: State,
+    parameters: tuple[str, ...],
+    g: float,
+    rtol: float,
+    ending: str,
+    eigenvalue_ratio: float,
+    taus: NDArray[np.float64],
+    rows: NDArray[np.float64],
+    accel: NDArray[np.float64],
+) -> Sensitivities:
+    """Run the sensitivities of a free motion whose plain run (:func:`slidespin.simulate`)
+    stopped with ``ending`` at the fixed point's ``eigenvalue_ratio``; ``taus`` are its
+    records' regularised times, ``rows`` its states there and then at the stop (natural units),
+    ``accel`` the natural accelerations (Fx, Fy, M/k) at the rows (for the fixed-t
+    conversion). Validated inputs only (``simulate`` checks them)."""
+    names = check_parameters(parameters)
+    a = body.length_unit
+    t_unit = math.sqrt(a / g)
+    v_unit = math.sqrt(a * g)
+    par0, fe, fc, geo0 = body.engine_params(friction.kinetic, WRENCH_TOL)
+    _, _, y0 = _rows(body, friction, state, g)
+    npar = len(names)
+    pars = np.empty((1 + 2 * npar, _engine.NPAR))
+    geos = np.empty((1 + 2 * npar, geo0.size))
+    pars[0], geos[0] = par0, geo0
+    hs = np.empty(npar)
+    Y0 = np.zeros(NY * (1 + npar))
+    Y0[:NY] = y0
+    dk = np.zeros(npar)  # ∂k/∂θ (natural radius of gyration; only the inertia moves it)
+    for k, name in enumerate(names):
+        h = _step(body, friction, state, name)
+        val = _value(body, friction, state, name)
+        hs[k] = h
+        pp, gp, yp = _rows(*_perturbed(body, friction, state, name, val + h), g)
+        pm, gm, ym = _rows(*_perturbed(body, friction, state, name, val - h), g)
+        pars[1 + 2 * k], geos[1 + 2 * k] = pp, gp
+        pars[2 + 2 * k], geos[2 + 2 * k] = pm, gm
+        Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
+        dk[k] = (pp[_engine.P_K] - pm[_engine.P_K]) / (2.0 * h)
+    fp = _engine.footprint_argument(par0, fe, fc, geo0)
+    u_rate = 0.0
+    if ending == "mixed":
+        u_rate = min(1.0, max(abs(eigenvalue_ratio), 1e-3))
+    Y, F, status, nsteps, fails, rec = _core.integrate_sensitivities(
+        pars, fp, geos, hs, Y0, rtol, rtol, LN_DROP, CONV_TOL, u_rate, MAX_STEPS,
+        np.ascontiguousarray(taus, dtype=np.float64),
+    )  # fmt: skip
+    if status != _core.SS_CONVERGED or fails:
+        raise RuntimeError(
+            f"the sensitivity run ended with status {status} after {nsteps} steps "
+            f"({fails} wrench evaluations off their target) before its derivatives "
+            "converged; please report this case"
+        )
+    k0 = par0[_engine.P_K]
+    stop: dict[str, dict[str, float]] = {}
+    path: dict[str, dict[str, NDArray[np.float64]]] = {}
+    u = Y[:3] / np.linalg.norm(Y[:3])
+    rec = np.vstack([rec, Y[None, :]])
+    for k, name in enumerate(names):
+        S = Y[NY * (k + 1) : NY * (k + 2)]
+        d = {"t_stop": S[4] * t_unit, "x": S[5] * a, "y": S[6] * a, "phi": S[7]}
+        d["beta_stop"] = _beta_derivative(ending, u, S[:3], k0, dk[k]) * a
+        stop[name] = {q: float(d[q]) for q in STOP_OUTPUTS}
+        path[name] = _fixed_time(rows, accel, rec[:, NY * (k + 1) : NY * (k + 2)], k0, dk[k],
+                                 a, t_unit, v_unit)  # fmt: skip
+    return Sensitivities(
+        parameters=names, t=rows[:, 4] * t_unit, path=path, stop=stop, n_steps=int(nsteps)
+    )
+
+
+def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) -> float:
+    """∂(β*/ℓ)/∂θ with β*/ℓ = k u₁₂/u₃ (MODEL §5) at the converged direction ``u`` and its
+    sensitivity ``su``; 0 for a pure ending (β* stays ∞ or 0 nearby)."""
+    if ending != "mixed":
+        return 0.0
+    u1, u2, u3 = (float(x) for x in u)
+    nrm = float(np.linalg.norm(u))
+    u12 = math.hypot(u1, u2)
+    # u is not exactly unit; β is homogeneous of degree 0 in u, so the sensitivity of the
+    # unnormalised vector serves (its component along u changes nothing)
+    du12 = (u1 * su[0] + u2 * su[1]) / u12 * nrm
+    du3 = su[2] * nrm
+    return dk * u12 / u3 + k * (du12 * u3 - u12 * du3) / (u3 * u3)
+
+
+def _fixed_time(rows, accel, S, k, dk, a, t_unit, v_unit) -> dict[str, NDArray[np.float64]]:
+    """The path's derivatives at fixed t from those at fixed τ: ∂q/∂θ|t = ∂q/∂θ|τ − q̇ ∂t/∂θ|τ
+    for q = x, y, φ, vx, vy, ω (SI; the stop row's velocities and their rates are 0)."""
+    u1, u2, u3, lns = rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3]
+    nrm = np.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
+    u1, u2, u3 = u1 / nrm, u2 / nrm, u3 / nrm
+    s = np.exp(lns)
+    st = S[:, 4]
+    ax, ay, am = accel[:, 0], accel[:, 1], accel[:, 2]
+    out = {
+        "x": (S[:, 5] - s * u1 * st) * a,
+        "y": (S[:, 6] - s * u2 * st) * a,
+        "phi": S[:, 7] - s * u3 / k * st,
+        # v = s u: ∂v/∂θ|τ = s (u S_ln s + S_u) (S_u's radial part is round-off)
+        "vx": (s * (u1 * S[:, 3] + S[:, 0]) - ax * st) * v_unit,
+        "vy": (s * (u2 * S[:, 3] + S[:, 1]) - ay * st) * v_unit,
+        "omega": ((s * (u3 * S[:, 3] + S[:, 2]) - am * st) / k - s * u3 * dk / k**2) / t_unit,
+    }
+    for q in ("vx", "vy", "omega"):  # the stop's velocities are 0 whatever θ
+        out[q][-1] = 0.0
+    return out
