@@ -9,7 +9,8 @@ second implementation): :func:`slidespin.motion._integrator.integrate_fp` for an
 for a footprint, the batch loop of :mod:`slidespin.motion._parallel` run serially (for small
 batches), the ``wrench_world`` entries and ``wrench_array`` loops of the ellipse and footprint
 kernels (one twist, called from Python by the statics, and many), and the loaded
-engine's one entry :func:`slidespin.motion._loaded_core.run_loaded` for each. The result
+engine's one entry :func:`slidespin.motion._loaded_core.run_loaded` for each, and the
+sensitivity run :func:`slidespin.motion._sensitivity_core.integrate_sensitivities` for each. The result
 is an ordinary extension module, ``slidespin/_aot_core.*.so`` (it needs neither numba
 nor LLVM at runtime), and beside it ``_aot_core.json``: the numba version, the CPU it was
 compiled for, and the SHA-256 of every slidespin source file imported while compiling.
@@ -41,6 +42,7 @@ from slidespin.contact._kernel_footprint import wrench_world as _footprint_wrenc
 from slidespin.motion._integrator import integrate_fp
 from slidespin.motion._loaded_core import run_loaded
 from slidespin.motion._parallel import _integrate_many, _stop_direction
+from slidespin.motion._sensitivity_core import integrate_sensitivities
 
 _jit.numba_module()  # every deferred jit function becomes numba's (the names above too)
 
@@ -63,6 +65,10 @@ _MANY_TAIL = (_F, _F, _F, _F, _I)
 # run_loaded's result, and its arguments after (task, par, fp)
 _LOADED = T.Tuple((_A1, _I, _I, _I, _I, _A2, _A1))
 _LOADED_TAIL = (_A1, _F, _A1, _F, _A1, _F, _F, _A1, _F, _F, _F, _I)
+
+# integrate_sensitivities' result, and its arguments after (pars, fp, geos)
+_SENS = T.Tuple((_A1, _A1, _I, _I, _I, _A2))
+_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, _F, _I, _A1)
 
 # the batch loop of slidespin.motion._parallel without ``prange`` (pycc compiles no parallel
 # code; a prange in a serial function is a range): the same source, run case after case.
@@ -154,6 +160,21 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
             task, par, (fe, fc, geo), tab, mode, y0, rtol, atol, h_max, t_end, breaks, ln_stop,
             s_arg, t_tol, steps,
         )  # fmt: skip
+
+    @cc.export("sensitivities_ellipse", _SENS(_A2, _A2, *_SENS_TAIL))
+    def sensitivities_ellipse(pars, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus):
+        return integrate_sensitivities(
+            pars, None, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus
+        )
+
+    @cc.export("sensitivities_footprint", _SENS(_A2, _A2, _A2, _A2, *_SENS_TAIL))
+    def sensitivities_footprint(
+        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus
+    ):
+        fp = (fe, fc, geos[0])
+        return integrate_sensitivities(
+            pars, fp, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus
+        )
 
     @cc.export("stop_direction", T.Tuple((_A1, _A1))(_A2))
     def stop_direction(yend):

@@ -175,7 +175,12 @@ def aim(
             return launch
         if best is None or miss < best[0]:
             best = (miss, pose, launch)
-    assert best is not None
+    if best is None or best[1] is None:
+        raise UnreachableTarget(
+            f"target = {tgt!r}: no launch from the first guesses could be simulated to a stop "
+            f"while varying {', '.join(names)}; valid: a target some launch reaches",
+            tgt, start, start, math.inf,
+        )  # fmt: skip
     miss, pose, launch = best
     wanted = f"({', '.join(f'{x:.10g}' for x in tgt)})"
     got = f"({pose.x:.10g}, {pose.y:.10g}" + (f", {pose.phi:.10g})" if len(tgt) == 3 else ")")
@@ -245,7 +250,7 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
     try:
         r, J, pose = _miss(body, friction, tgt, start, names, q, g, rtol, True)
     except (ValueError, RuntimeError):
-        return q, math.inf, False, State(math.nan, math.nan, math.nan)
+        return q, math.inf, False, None
     lam = 1e-3
 
     def hit(r):  # within tol in x and y [m] and in φ [rad]

@@ -58,13 +58,14 @@ def stop_sensitivities(
         pure sliding or pure spinning ending that attracts nearby motions ∂β*/∂θ is 0 (β*
         stays ∞ or 0); for an ending that does not attract them (a start on an invariant set,
         e.g. pure translation whose pure-sliding ending is unstable) β* jumps under a change
-        that leaves the set, its derivative does not exist and is NaN, with a warning.
+        that leaves the set, its derivative does not exist and is NaN, with a warning; so
+        for a spiral ending (no terminal direction).
 
     Raises
     ------
     ValueError
-        For an unknown parameter, a start at rest, a motion that does not stop with a
-        terminal direction (a spiral), or a load, slope, speed law or tall body (not covered).
+        For an unknown parameter, a start at rest, a motion that does not stop (status other
+        than ``stopped``), or a load, slope, speed law or tall body (not covered).
 
     Notes
     -----
@@ -93,7 +94,14 @@ def stop_sensitivities(
     tr = simulate(body, friction, state, g, rtol, sensitivities=parameters)
     assert tr.sensitivities is not None
     stop = {p: dict(d) for p, d in tr.sensitivities.stop.items()}
-    if tr.ending != "mixed" and not tr.eigenvalue_ratio < 0.0:
+    if tr.ending == "spiral":
+        warnings.warn(
+            "the motion ends in a spiral (its direction keeps turning: no terminal direction "
+            "and no beta_stop): the derivatives of beta_stop are NaN",
+            RuntimeWarning,
+            stacklevel=2,
+        )
+    if tr.ending in ("pure_sliding", "pure_spinning") and not tr.eigenvalue_ratio < 0.0:
         moved = [p for p, d in stop.items() if _leaves_invariant_set(tr, p)]
         for p in moved:
             stop[p]["beta_stop"] = math.nan

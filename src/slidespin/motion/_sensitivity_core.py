@@ -33,8 +33,14 @@ import math
 
 import numpy as np
 
+from slidespin import _aot
 from slidespin._jit import is_none_type, jit, overload
-from slidespin.contact._engine import kernel_constants
+from slidespin.contact._engine import (
+    P_SHAPE,
+    SHAPE_FOOTPRINT,
+    footprint_argument,
+    kernel_constants,
+)
 from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE
 from slidespin.motion import _dop853 as _dop
 from slidespin.motion._flow import NY, _rhs
@@ -247,3 +253,25 @@ def integrate_sensitivities(
                 status = SS_CONVERGED
                 break
     return Y, F, status, nsteps, fails, rec
+
+
+def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, u_rate, max_steps, taus):
+    """:func:`integrate_sensitivities` for the rows ``pars`` (and ``geos``) and the footprint
+    arrays ``fe``, ``fc`` (empty for an ellipse): run by the ahead-of-time compiled core when
+    the install built one from these sources (:mod:`slidespin._aot`), else by the JIT."""
+    pars = np.ascontiguousarray(pars, dtype=np.float64)
+    geos = np.ascontiguousarray(geos, dtype=np.float64)
+    tail = (
+        np.ascontiguousarray(hs, dtype=np.float64),
+        np.ascontiguousarray(Y0, dtype=np.float64),
+        float(rtol), float(atol), float(ln_drop), float(conv_tol), float(u_rate),
+        int(max_steps), np.ascontiguousarray(taus, dtype=np.float64),
+    )  # fmt: skip
+    footprint = pars[0, P_SHAPE] == SHAPE_FOOTPRINT
+    aot = _aot.core()
+    if aot is not None:
+        if footprint:
+            return aot.sensitivities_footprint(pars, fe, fc, geos, *tail)
+        return aot.sensitivities_ellipse(pars, geos, *tail)
+    fp = footprint_argument(pars[0], fe, fc, geos[0])
+    return integrate_sensitivities(pars, fp, geos, *tail)

@@ -6,9 +6,10 @@ variational equation dS/dτ = (∂G/∂y) S + ∂G/∂θ, integrated with the mo
 :mod:`slidespin.motion._sensitivity_core`. From it:
 
 - at the stop: ∂t_stop/∂θ, the stop pose's ∂x, ∂y, ∂φ (the limits of the sensitivities of
-  t, x, y, φ as τ → ∞, where they converge with s), and ∂β*/∂θ from the converged terminal
-  direction u* and its sensitivity (a mixed ending; 0 for a pure sliding or pure spinning
-  ending that attracts nearby motions, whose β* stays ∞ or 0);
+  t, x, y, φ as τ → ∞, where they converge with s), and ∂β*/∂θ from the terminal direction
+  u* and its sensitivity by the implicit function theorem on u*'s fixed-point condition (a
+  mixed ending; 0 for a pure sliding or pure spinning ending that attracts nearby motions,
+  whose β* stays ∞ or 0; NaN for a spiral, which has no terminal direction);
 - along the path, at the trajectory's own times t_i: the derivatives at fixed t,
   ∂q(t_i)/∂θ = ∂q/∂θ|τ − q̇ ∂t/∂θ|τ, of q = x, y, φ, vx, vy, ω.
 
@@ -34,9 +35,11 @@ from numpy.typing import NDArray
 
 from slidespin import _validate as v
 from slidespin.contact import _engine
+from slidespin.contact._kernel_ellipse import wrench_array as ellipse_wrench_array
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import LinearPressure, UniformPressure
+from slidespin.motion import _integrator
 from slidespin.motion import _sensitivity_core as _core
 from slidespin.motion._flow import NY, initial_state
 from slidespin.motion.state import State
@@ -255,14 +258,9 @@ def compute(
         pars[2 + 2 * k], geos[2 + 2 * k] = pm, gm
         Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
         dk[k] = (pp[_engine.P_K] - pm[_engine.P_K]) / (2.0 * h)
-    fp = _engine.footprint_argument(par0, fe, fc, geo0)
-    u_rate = 0.0
-    if ending == "mixed":
-        u_rate = min(1.0, max(abs(eigenvalue_ratio), 1e-3))
-    Y, F, status, nsteps, fails, rec = _core.integrate_sensitivities(
-        pars, fp, geos, hs, Y0, rtol, rtol, LN_DROP, CONV_TOL, u_rate, MAX_STEPS,
-        np.ascontiguousarray(taus, dtype=np.float64),
-    )  # fmt: skip
+    Y, F, status, nsteps, fails, rec = _core.run(
+        pars, fe, fc, geos, hs, Y0, rtol, rtol, LN_DROP, CONV_TOL, 0.0, MAX_STEPS, taus
+    )
     if status != _core.SS_CONVERGED or fails:
         raise RuntimeError(
             f"the sensitivity run ended with status {status} after {nsteps} steps "
@@ -272,12 +270,16 @@ def compute(
     k0 = par0[_engine.P_K]
     stop: dict[str, dict[str, float]] = {}
     path: dict[str, dict[str, NDArray[np.float64]]] = {}
-    u = Y[:3] / np.linalg.norm(Y[:3])
     rec = np.vstack([rec, Y[None, :]])
+    u_stop, phi_stop = rows[-1, :3], rows[-1, 7]
+    su = np.full((npar, 3), np.nan)
+    if ending == "mixed":
+        s_phi = Y[NY + 7 :: NY][:npar]
+        su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi)
     for k, name in enumerate(names):
         S = Y[NY * (k + 1) : NY * (k + 2)]
         d = {"t_stop": S[4] * t_unit, "x": S[5] * a, "y": S[6] * a, "phi": S[7]}
-        d["beta_stop"] = _beta_derivative(ending, u, S[:3], k0, dk[k]) * a
+        d["beta_stop"] = _beta_derivative(ending, u_stop, su[k], k0, dk[k]) * a
         stop[name] = {q: float(d[q]) for q in STOP_OUTPUTS}
         path[name] = _fixed_time(rows, accel, rec[:, NY * (k + 1) : NY * (k + 2)], k0, dk[k],
                                  a, t_unit, v_unit)  # fmt: skip
@@ -286,18 +288,73 @@ def compute(
     )
 
 
+def _accelerations(par, fe, fc, geo, phi: float, U: NDArray) -> NDArray:
+    """A(u, φ) = (Fx, Fy, M/k) (natural units) for the unit directions ``U`` (n, 3)."""
+    k = par[_engine.P_K]
+    n = U.shape[0]
+    ph = np.full(n, phi)
+    if par[_engine.P_SHAPE] == _engine.SHAPE_FOOTPRINT:
+        fx, fy, mm = _integrator.wrench_rows(par, fe, fc, geo, ph, U[:, 0], U[:, 1], U[:, 2] / k)
+    else:
+        args = _engine.elliptic_args(par)
+        fx, fy, mm, _ = ellipse_wrench_array(*args, ph, U[:, 0], U[:, 1], U[:, 2] / k,
+                                             WRENCH_TOL)  # fmt: skip
+    return np.column_stack([fx, fy, mm / k])
+
+
+def _sphere_flow(par, fe, fc, geo, phi: float, U: NDArray) -> NDArray:
+    """T(u) = A − (u·A) u, the flow of the direction (MODEL §5), at the directions ``U``
+    (normalised here)."""
+    U = U / np.linalg.norm(U, axis=1)[:, None]
+    A = _accelerations(par, fe, fc, geo, phi, U)
+    return A - np.sum(U * A, axis=1)[:, None] * U
+
+
+def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi) -> NDArray:
+    """∂u*/∂θ_k of the terminal direction (a mixed ending), by the implicit function theorem
+    on its fixed-point condition T(u*, φ*; θ) = 0 on the sphere (MODEL §5, §15):
+    J_T ∂u* = −(∂T/∂φ ∂φ*/∂θ + ∂T/∂θ) in the tangent plane at u*, with J_T, ∂T/∂φ and ∂T/∂θ
+    by central differences of the exact wrench (steps ``REL_STEP``, and h_k as the run), and
+    ∂φ*/∂θ = ``s_phi`` from the run. (Integrating S_u to its limit instead converges only at
+    the fixed point's eigenvalue, slowly near a Table 2 boundary.)"""
+    u = u / np.linalg.norm(u)
+    par, geo = pars[0], geos[0]
+    d = REL_STEP
+    eye = np.eye(3)
+    U = np.vstack([u + d * eye, u - d * eye])
+    T = _sphere_flow(par, fe, fc, geo, phi, U)
+    jac = (T[:3] - T[3:]).T / (2.0 * d)  # columns ∂T/∂u_i
+    tp = _sphere_flow(par, fe, fc, geo, phi + d, u[None, :])[0]
+    tm = _sphere_flow(par, fe, fc, geo, phi - d, u[None, :])[0]
+    dphi = (tp - tm) / (2.0 * d)
+    # an orthonormal basis (B) of the tangent plane at u
+    e = eye[int(np.argmin(np.abs(u)))]
+    b1 = e - (e @ u) * u
+    b1 /= np.linalg.norm(b1)
+    B = np.column_stack([b1, np.cross(u, b1)])
+    jt = B.T @ jac @ B
+    out = np.empty((hs.size, 3))
+    for k in range(hs.size):
+        up = _sphere_flow(pars[1 + 2 * k], fe, fc, geos[1 + 2 * k], phi, u[None, :])[0]
+        um = _sphere_flow(pars[2 + 2 * k], fe, fc, geos[2 + 2 * k], phi, u[None, :])[0]
+        rhs = dphi * s_phi[k] + (up - um) / (2.0 * hs[k])
+        out[k] = B @ np.linalg.solve(jt, -(B.T @ rhs))
+    return out
+
+
 def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) -> float:
-    """∂(β*/ℓ)/∂θ with β*/ℓ = k u₁₂/u₃ (MODEL §5) at the converged direction ``u`` and its
-    sensitivity ``su``; 0 for a pure ending (β* stays ∞ or 0 nearby)."""
+    """∂(β*/ℓ)/∂θ with β*/ℓ = k u₁₂/u₃ (MODEL §5) at the terminal direction ``u`` and its
+    sensitivity ``su``; 0 for a pure ending (β* stays ∞ or 0 nearby), NaN for a spiral
+    (no terminal direction)."""
+    if ending == "spiral":
+        return math.nan
     if ending != "mixed":
         return 0.0
+    u = u / np.linalg.norm(u)
     u1, u2, u3 = (float(x) for x in u)
-    nrm = float(np.linalg.norm(u))
     u12 = math.hypot(u1, u2)
-    # u is not exactly unit; β is homogeneous of degree 0 in u, so the sensitivity of the
-    # unnormalised vector serves (its component along u changes nothing)
-    du12 = (u1 * su[0] + u2 * su[1]) / u12 * nrm
-    du3 = su[2] * nrm
+    du12 = (u1 * su[0] + u2 * su[1]) / u12
+    du3 = float(su[2])
     return dk * u12 / u3 + k * (du12 * u3 - u12 * du3) / (u3 * u3)
 
 

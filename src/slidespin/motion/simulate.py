@@ -477,12 +477,11 @@ def simulate(
     stop = State(yend[5] * a, yend[6] * a, yend[7])
     sens = None
     if sensitivities is not None:
-        if status_name(status) != "stopped" or ending == "spiral":
+        if status_name(status) != "stopped":
             raise ValueError(
                 f"sensitivities = {sensitivities!r} cannot be computed for this motion: it "
                 f"ends with status {status_name(status)!r}, ending {ending!r}; valid: a "
-                "motion that stops with a terminal direction (status 'stopped', ending "
-                "'mixed', 'pure_sliding' or 'pure_spinning')"
+                "motion that stops (status 'stopped')"
             )
         accel = np.column_stack([fx, fy, mm / k])
         sens = compute_sensitivities(

@@ -1,0 +1,96 @@
+"""Aiming (MODEL §15): launches recovered from the stops they make, targets hit to 1e-9 m
+as :func:`slidespin.simulate` itself measures them, and unreachable targets reported."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import slidespin as ss
+
+ELLIPSE = ss.Body(ss.Ellipse(0.1, 0.06), ss.LinearPressure(0.01, 0.005), mass=1.0)
+SKEW = ss.FrictionTensor(0.3, 0.4, 0.05)
+DISK = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), mass=1.0)
+ISO = ss.FrictionTensor(0.3, 0.3)
+
+
+def _stop(body, friction, start):
+    s = ss.simulate(body, friction, start).stop_state
+    return s.x, s.y, s.phi
+
+
+@pytest.mark.parametrize(
+    ("body", "friction", "launch"),
+    [
+        (ELLIPSE, SKEW, ss.State(x=0.2, y=-0.1, phi=0.3, vx=1.0, vy=0.3, omega=5.0)),
+        (ELLIPSE, SKEW, ss.State(vx=-0.4, vy=1.1, omega=-9.0)),
+        (
+            ss.Body(ss.Rectangle(0.2, 0.1), ss.UniformPressure(), mass=1.5),
+            ss.FrictionTensor(0.3, 0.5, angle=0.4),
+            ss.State(phi=1.0, vx=0.8, vy=0.2, omega=6.0),
+        ),
+    ],
+)
+def test_aim_recovers_the_launch_that_made_the_target(body, friction, launch):
+    target = _stop(body, friction, launch)
+    start = ss.State(launch.x, launch.y, launch.phi)  # at rest: aim's own first guess
+    got = ss.aim(body, friction, target, start=start, free=("vx", "vy", "omega"))
+    for n in ("vx", "vy", "omega"):
+        assert getattr(got, n) == pytest.approx(getattr(launch, n), rel=1e-8, abs=1e-10)
+    assert (got.x, got.y, got.phi) == (launch.x, launch.y, launch.phi)
+    x, y, phi = _stop(body, friction, got)
+    assert abs(x - target[0]) < 1e-9 and abs(y - target[1]) < 1e-9
+    assert abs(phi - target[2]) < 1e-9
+
+
+def test_aim_at_a_position_with_the_spin_fixed():
+    start = ss.State(omega=4.0)
+    got = ss.aim(ELLIPSE, SKEW, (0.3, 0.2), start=start, free=("vx", "vy"))
+    assert got.omega == 4.0
+    x, y, _ = _stop(ELLIPSE, SKEW, got)
+    assert math.hypot(x - 0.3, y - 0.2) < 1e-9
+
+
+def test_aim_a_turn_on_the_spot():
+    # a centred disk turning on the spot: φ = I ω²/(2M), M = (2/3) μ m g a
+    got = ss.aim(DISK, ISO, (0.0, 0.0, 3.0))
+    M = (2 / 3) * 0.3 * 9.81 * 0.1
+    assert got.omega == pytest.approx(math.sqrt(2 * M * 3.0 / DISK.moment_of_inertia), rel=1e-8)
+    assert abs(got.vx) < 1e-9 and abs(got.vy) < 1e-9
+
+
+def test_unreachable_angle_without_spin():
+    # a symmetric disk launched without spin never turns: φ = 1 cannot be reached
+    with pytest.raises(ss.UnreachableTarget) as info:
+        ss.aim(DISK, ISO, (1.0, 0.0, 1.0), free=("vx", "vy"))
+    err = info.value
+    assert isinstance(err, ValueError)
+    assert "1" in str(err) and "vx, vy" in str(err)
+    assert err.nearest.x == pytest.approx(1.0, abs=1e-6)
+    assert err.nearest.phi == pytest.approx(0.0, abs=1e-9)
+    assert err.miss == pytest.approx(0.1, rel=1e-3)  # 1 rad weighted by a = 0.1 m
+    assert err.start.omega == 0.0
+
+
+def test_unreachable_position_by_spin_alone():
+    # spin alone cannot move a centred disk
+    with pytest.raises(ss.UnreachableTarget):
+        ss.aim(DISK, ISO, (0.5, 0.0), start=ss.State(omega=1.0), free=("omega",))
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "match"),
+    [
+        ({"target": (1.0,)}, "target"),
+        ({"target": (1.0, math.nan)}, "target"),
+        ({"target": "far"}, "target"),
+        ({"target": (1.0, 0.0), "free": ("x",)}, "free"),
+        ({"target": (1.0, 0.0), "free": ()}, "free"),
+        ({"target": (1.0, 0.0), "tol": 0.0}, "tol"),
+        ({"target": (1.0, 0.0), "start": (0, 0, 0)}, "start"),
+    ],
+)
+def test_bad_input(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        ss.aim(DISK, ISO, **kwargs)
