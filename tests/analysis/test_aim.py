@@ -70,6 +70,8 @@ def test_unreachable_angle_without_spin():
     assert err.nearest.x == pytest.approx(1.0, abs=1e-6)
     assert err.nearest.phi == pytest.approx(0.0, abs=1e-9)
     assert err.miss == pytest.approx(0.1, rel=1e-3)  # 1 rad weighted by a = 0.1 m
+    assert err.angle_miss == pytest.approx(1.0, abs=1e-9)
+    assert err.position_miss < 1e-6
     assert err.start.omega == 0.0
 
 
@@ -94,3 +96,15 @@ def test_unreachable_position_by_spin_alone():
 def test_bad_input(kwargs, match):
     with pytest.raises(ValueError, match=match):
         ss.aim(DISK, ISO, **kwargs)
+
+
+def test_a_target_at_the_start_is_the_start_at_rest():
+    start = ss.State(x=0.3, y=-0.2, phi=0.5)
+    assert ss.aim(DISK, ISO, (0.3, -0.2, 0.5), start=start) == start
+
+
+def test_unsupported_bodies_are_refused_not_unreachable():
+    tall = ss.Body(ss.Rectangle(0.2, 0.1), ss.UniformPressure(), mass=1.0, height=0.1)
+    with pytest.raises(ValueError, match="height") as info:
+        ss.aim(tall, ISO, (0.5, 0.0))
+    assert not isinstance(info.value, ss.UnreachableTarget)

@@ -4,7 +4,9 @@
 run's free start components, with their guesses, typical sizes and bounds (G of a linear law
 in the core of the patch, where the pressure is ≥ 0; MODEL §10). For a trial point it builds
 the body and tensor, simulates each run, and returns the weighted residuals at the measured
-times and their Jacobian by central differences, run by run.
+times and their Jacobian, run by run: exact, from the motion's sensitivities at the measured
+times (:mod:`slidespin.motion.sensitivity`, MODEL §15: one sensitivity run per run and
+Jacobian), or by central differences of whole simulations (two per parameter and run).
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ import math
 import numpy as np
 
 from slidespin import _validate as v
-from slidespin.analysis.fit_data import _PAIR, CHANNELS, START, trajectory_at
+from slidespin.analysis.fit_data import _PAIR, CHANNELS, START, hermite_at, trajectory_at
 from slidespin.contact.body import Body
 from slidespin.contact.friction import ANGLE_MAX, FrictionTensor
 from slidespin.contact.pressure import LinearPressure
@@ -58,9 +60,11 @@ class _Problem:
     """Parameter bookkeeping and residuals of one fit (internal; not part of the API)."""
 
     def __init__(
-        self, runs, body, friction, free, start_fixed, start_free, guess, g, rtol, max_step, fd_step
-    ):
+        self, runs, body, friction, free, start_fixed, start_free, guess, g, rtol, max_step, fd_step,
+        jacobian="differences",
+    ):  # fmt: skip
         self.runs = runs
+        self.mode = jacobian
         self.body = body
         self.friction = friction
         self.free = free
@@ -303,34 +307,74 @@ class _Problem:
         return np.array([1.0 / self.sigma[c] for c in self.chan_of_row])
 
     def jacobian(self, p) -> np.ndarray:
-        """Central differences, run by run; exact columns for the start positions x₀, y₀."""
-        r0 = self.residuals(p)
+        """The Jacobian of the weighted residuals, run by run: exact (``mode`` "exact", the
+        sensitivities at the measured times; a run whose sensitivities cannot be computed
+        falls back to differences) or central differences; exact columns for the start
+        positions x₀, y₀ (the motion is invariant under translation) either way."""
         J = np.zeros((self.n_obs, p.size))
-        w = self.weights()
         for k in range(len(self.runs)):
-            sl = self.slices[k]
-            cols = [i for i in range(self.n_phys)] + [i for _, i in self.start_index[k]]
-            for i in cols:
-                comp = self.names[i].split(".")[-1] if i >= self.n_phys else None
-                if comp in ("x", "y"):
-                    rows = self.chan_of_row[sl] == comp
-                    J[sl, i] = np.where(rows, -w[sl], 0.0)
-                    continue
-                h = self.fd_step * self.typ[i]
-                up = min(p[i] + h, self.ub[i])
-                dn = max(p[i] - h, self.lb[i])
-                vals_up, vals_dn = p.copy(), p.copy()
-                vals_up[i], vals_dn[i] = up, dn
-                r_up = self.raw_residual_run(self.physical(vals_up), self.start(vals_up, k), k)
-                r_dn = (
-                    r0[sl] / w[sl]
-                    if dn == p[i]
-                    else self.raw_residual_run(self.physical(vals_dn), self.start(vals_dn, k), k)
-                )
-                if up == p[i]:
-                    r_up = r0[sl] / w[sl]
-                d = r_up - r_dn
-                # φ residuals are wrapped: a difference across the cut is not a derivative
-                d = np.where(self.chan_of_row[sl] == "phi", _wrap(d), d)
-                J[sl, i] = d / (up - dn) * w[sl]
+            if self.mode != "exact" or not self._exact_run(p, k, J):
+                self._differences_run(p, k, J)
         return J
+
+    def _exact_run(self, p, k, J) -> bool:
+        """Fill run k's columns of ``J`` from the sensitivities; False if they cannot be
+        computed for this run (its motion does not stop, or does not move)."""
+        sl = self.slices[k]
+        w = self.weights()[sl]
+        body, fr = self.objects(self.physical(p))
+        cols = [(name, i) for i, name in enumerate(self.free)]
+        for j, i in self.start_index[k]:
+            comp = START[j]
+            if comp in ("x", "y"):
+                rows = self.chan_of_row[sl] == comp
+                J[sl, i] = np.where(rows, -w, 0.0)
+            else:
+                cols.append(("phi0" if comp == "phi" else comp, i))
+        if not cols:
+            return True
+        try:
+            traj = simulate(body, fr, State(*self.start(p, k)), g=self.g, rtol=self.rtol,
+                            max_step=self.max_step, sensitivities=[c for c, _ in cols])  # fmt: skip
+        except (ValueError, RuntimeError):
+            return False
+        sens = traj.sensitivities
+        run = self.runs[k]
+        t = run["t"] - run["t"][0]
+        for name, i in cols:
+            d = sens[name]
+            pos = np.column_stack((d["x"], d["y"], d["phi"]))
+            vel = np.column_stack((d["vx"], d["vy"], d["omega"]))
+            at = hermite_at(sens.t, pos, vel, t, traj.t_stop <= 0.0)
+            J[sl, i] = -np.concatenate([at[c][m] for c, m in self.obs[k]]) * w
+        return True
+
+    def _differences_run(self, p, k, J) -> None:
+        """Central differences of run k's residuals (its physical and start columns)."""
+        r0 = self.residuals(p)
+        w = self.weights()
+        sl = self.slices[k]
+        cols = [i for i in range(self.n_phys)] + [i for _, i in self.start_index[k]]
+        for i in cols:
+            comp = self.names[i].split(".")[-1] if i >= self.n_phys else None
+            if comp in ("x", "y"):
+                rows = self.chan_of_row[sl] == comp
+                J[sl, i] = np.where(rows, -w[sl], 0.0)
+                continue
+            h = self.fd_step * self.typ[i]
+            up = min(p[i] + h, self.ub[i])
+            dn = max(p[i] - h, self.lb[i])
+            vals_up, vals_dn = p.copy(), p.copy()
+            vals_up[i], vals_dn[i] = up, dn
+            r_up = self.raw_residual_run(self.physical(vals_up), self.start(vals_up, k), k)
+            r_dn = (
+                r0[sl] / w[sl]
+                if dn == p[i]
+                else self.raw_residual_run(self.physical(vals_dn), self.start(vals_dn, k), k)
+            )
+            if up == p[i]:
+                r_up = r0[sl] / w[sl]
+            d = r_up - r_dn
+            # φ residuals are wrapped: a difference across the cut is not a derivative
+            d = np.where(self.chan_of_row[sl] == "phi", _wrap(d), d)
+            J[sl, i] = d / (up - dn) * w[sl]

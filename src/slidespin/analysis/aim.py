@@ -26,6 +26,7 @@ import numpy as np
 from slidespin import _validate as v
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.speed_laws import law_is_constant
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 
@@ -50,7 +51,10 @@ class UnreachableTarget(ValueError):
     start : State
         The launch that stops there.
     miss : float
-        Its distance from the target [m] (the angle's miss weighted by ℓ).
+        The least-squares miss √(Δx² + Δy² + (ℓ Δφ)²) [m] (the angle's miss weighted by the
+        body's length unit ℓ).
+    position_miss, angle_miss : float
+        The nearest stop's distance from the target's (x, y) [m] and its angle's miss [rad].
     """
 
     def __init__(self, message: str, target, nearest: State, start: State, miss: float):
@@ -59,6 +63,10 @@ class UnreachableTarget(ValueError):
         self.nearest = nearest
         self.start = start
         self.miss = miss
+        #: the distance of the nearest stop's G from the target (x, y) [m]
+        self.position_miss = math.hypot(nearest.x - target[0], nearest.y - target[1])
+        #: its angle's miss [rad] (0 for a target without an angle)
+        self.angle_miss = abs(nearest.phi - target[2]) if len(target) == 3 else 0.0
 
 
 def _check_target(target) -> tuple[float, ...]:
@@ -136,6 +144,11 @@ def aim(
 
     Notes
     -----
+    Where several launches stop at the target (a spin of either sign, when only ω is free),
+    the one found is the one reached from the first guess: give the free components a
+    nonzero value in ``start`` to choose. A target hit means |Δx| ≤ ``tol``, |Δy| ≤ ``tol``
+    and |Δφ| ≤ ``tol`` (so the straight-line miss is at most √2 ``tol``).
+
     Levenberg–Marquardt on the miss r(q) = (x_stop − x, y_stop − y, ℓ(φ_stop − φ)) over the
     free velocities q, with r from :func:`slidespin.simulate` and its Jacobian from the
     stop's sensitivities (:mod:`slidespin.motion.sensitivity`). First guesses: the free
@@ -163,9 +176,19 @@ def aim(
     if not isinstance(start, State):
         raise ValueError(f"start = {start!r} is invalid; valid values: a slidespin.State")
     tol = v.in_range("tol", tol, 1e-14, 1.0)
+    if body.height > 0.0 or not law_is_constant(friction.speed_law):
+        raise ValueError(
+            f"aim works for a thin body under a constant friction law (the stop's sensitivities "
+            f"are built for those, MODEL §15); here body.height = {body.height!r} m, "
+            f"friction.speed_law = {friction.speed_law!r}; valid: height 0 and speed_law None"
+        )
     if isinstance(max_iter, bool) or not isinstance(max_iter, int) or not 1 <= max_iter <= 1000:
         raise ValueError(f"max_iter = {max_iter!r} is invalid; valid range: integer in [1, 1000]")
     ell = body.length_unit
+    rest = replace(start, **dict.fromkeys(names, 0.0))
+    r, _, _ = _miss(body, friction, tgt, rest, names, np.zeros(len(names)), g, rtol, False)
+    if _hit(r, ell, tol):  # the target is where the free components at zero stop
+        return rest
     best: tuple[float, State, State] | None = None
     for guess in _guesses(body, friction, tgt, start, names, g):
         q, miss, hit, pose = _solve(body, friction, tgt, start, names, guess, g, rtol, tol,
@@ -238,6 +261,11 @@ def _miss(body, friction, tgt, start, names, q, g, rtol, jac):
     return np.array(r), J, s
 
 
+def _hit(r, ell: float, tol: float) -> bool:
+    """Whether the miss vector ``r`` is within ``tol`` in x and y [m] and in φ [rad]."""
+    return max(abs(r[0]), abs(r[1]), abs(r[2]) / ell if r.size == 3 else 0.0) <= tol
+
+
 def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
     """Levenberg–Marquardt from ``q0``; returns (q, miss, hit, stop pose) of the best
     point (``hit``: within ``tol`` in x and y [m] and φ [rad])."""
@@ -253,8 +281,8 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
         return q, math.inf, False, None
     lam = 1e-3
 
-    def hit(r):  # within tol in x and y [m] and in φ [rad]
-        return max(abs(r[0]), abs(r[1]), abs(r[2]) / ell if r.size == 3 else 0.0) <= tol
+    def hit(r):
+        return _hit(r, ell, tol)
 
     for _ in range(max_iter):
         miss = float(np.linalg.norm(r))

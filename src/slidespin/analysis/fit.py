@@ -49,10 +49,13 @@ Numerics. ``simulate`` records the integrator's steps; the trajectory between th
 cubic Hermite interpolant of (x, vx), (y, vy), (φ, ω), whose error with the defaults
 (rtol = 1e-12, the integrator's own steps) is below 1e-6 a and 1e-5 rad (measured against a
 dense run in the tests; typically 3e-7 a), far below any tracking noise; after the stop the
-body rests at the stop state. The Jacobian is by central
-differences, one run at a time (a run depends only on the shared parameters and its own start;
-the derivatives with respect to the start position x₀, y₀ are exact: the motion is invariant
-under translation). Trajectories depend on the parameters smoothly except through the stop
+body rests at the stop state. The Jacobian is computed one run at a time (a run depends only
+on the shared parameters and its own start): by central differences of whole simulations,
+or with ``jacobian="exact"`` from the motion's sensitivities (MODEL §15;
+:mod:`slidespin.motion.sensitivity`), interpolated to the measured times like the motion
+(∂x/∂θ with its rate ∂vx/∂θ at fixed t), one sensitivity run per run and Jacobian. The
+derivatives with respect to the start position x₀, y₀ are exact either way: the motion is
+invariant under translation. Trajectories depend on the parameters smoothly except through the stop
 time, where x(t) is still continuously differentiable (the velocity vanishes at the stop).
 
 Identifiability. The Jacobian is scaled by each parameter's typical size (``fx``, ``fy``,
@@ -108,6 +111,8 @@ __all__ = [
 
 #: parameters that :func:`fit` can free
 PARAMETERS = ("fx", "fy", "f", "angle", "xi_c", "eta_c", "moment_of_inertia")
+#: how :func:`fit` computes its Jacobian (central differences, or MODEL §15's sensitivities)
+JACOBIANS = ("differences", "exact")
 #: loss functions of :func:`scipy.optimize.least_squares` accepted by :func:`fit`
 LOSSES = ("linear", "soft_l1", "huber", "cauchy", "arctan")
 #: singular values of the typical-size-scaled Jacobian below this are undetermined directions
@@ -243,6 +248,7 @@ def fit(
     fd_step: float = 1e-4,
     corr_limit: float = 0.99,
     max_nfev: int | None = None,
+    jacobian: str = "differences",
 ) -> FitResult:
     """Fit friction parameters (and each run's start state) to tracked motion (MODEL §12).
 
@@ -290,6 +296,16 @@ def fit(
         |correlation| above which a pair of parameters is reported as not separable.
     max_nfev : int, optional
         Budget of residual evaluations for each least-squares pass.
+    jacobian : {"differences", "exact"}, default "differences"
+        How the Jacobian is computed: ``"differences"``, central differences of whole
+        simulations with ``fd_step`` (two simulations per parameter and run), or ``"exact"``,
+        from the motion's sensitivities at the measured times
+        (:mod:`slidespin.motion.sensitivity`, MODEL §15: one sensitivity run per run, no
+        step-size error; a run whose motion does not stop falls back to differences). Both
+        reach the same estimates (``examples/fit_benchmark.py``: within 3e-4 of a standard
+        error); "exact" needs fewer iterations (8 residual evaluations against 13) but is
+        not faster yet (0.8×: a sensitivity run costs 1 + 2p wrench evaluations per step,
+        until the kernels give their derivatives analytically), hence not the default.
 
     Returns
     -------
@@ -319,6 +335,10 @@ def fit(
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     max_step = None if max_step is None else v.positive("max_step", max_step)
     fd_step = v.in_range("fd_step", fd_step, MIN_FD_STEP, MAX_FD_STEP)
+    if jacobian not in JACOBIANS:
+        raise ValueError(
+            f"jacobian = {v._short(jacobian)} is invalid; valid values: {', '.join(JACOBIANS)}"
+        )
     corr_limit = v.in_range("corr_limit", corr_limit, 0.0, 1.0, lo_open=True)
     if max_nfev is not None and (
         isinstance(max_nfev, bool) or not isinstance(max_nfev, numbers.Integral) or max_nfev < 1
@@ -353,8 +373,9 @@ def fit(
         else:
             guess_states.append(_guess_start(run, guesses[k] or State()))
     prob = _Problem(
-        runs, body, friction, free, fixed, start_free, guess_states, g, rtol, max_step, fd_step
-    )
+        runs, body, friction, free, fixed, start_free, guess_states, g, rtol, max_step, fd_step,
+        jacobian,
+    )  # fmt: skip
     n_par = len(prob.names)
     if prob.n_obs <= n_par:
         raise ValueError(

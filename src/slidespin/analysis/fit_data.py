@@ -292,12 +292,19 @@ def trajectory_at(traj, t) -> dict:
     dict
         ``{'x': ..., 'y': ..., 'phi': ...}`` arrays shaped like ``t`` [m, m, rad].
     """
-    t = np.asarray(t, dtype=float)
-    ts = traj.t
     pos = np.column_stack((traj.x, traj.y, traj.phi))
-    if ts.size < 2 or traj.t_stop <= 0.0:
-        return {c: np.full(t.shape, pos[-1, i]) for i, c in enumerate(CHANNELS)}
     vel = np.column_stack((traj.vx, traj.vy, traj.omega))
+    return hermite_at(traj.t, pos, vel, t, traj.t_stop <= 0.0)
+
+
+def hermite_at(ts, pos, vel, t, at_rest: bool = False) -> dict:
+    """The cubic Hermite interpolant of positions ``pos`` (n, 3: x, y, φ) with rates ``vel``
+    (n, 3) at the increasing times ``ts`` (the last the stop), at times ``t``; from the last
+    time on, the last row. :func:`trajectory_at` for a trajectory, and for its sensitivities
+    (∂x/∂θ with rate ∂vx/∂θ at fixed t, MODEL §15). Returns ``{'x', 'y', 'phi'}``."""
+    t = np.asarray(t, dtype=float)
+    if ts.size < 2 or at_rest:
+        return {c: np.full(t.shape, pos[-1, i]) for i, c in enumerate(CHANNELS)}
     thr = 1e-12 * ts[-1]
     idx = np.concatenate(([0], 1 + np.flatnonzero(np.diff(ts) > thr)))
     last = ts.size - 1

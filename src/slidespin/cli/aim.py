@@ -87,6 +87,7 @@ def run(args) -> int:
             n, s = exc.nearest, exc.start
             print(json.dumps({
                 "reachable": False, "target": list(target), "miss": exc.miss,
+                "position_miss": exc.position_miss, "angle_miss": exc.angle_miss,
                 "nearest": {"x": n.x, "y": n.y, "phi": n.phi},
                 "launch": {"vx": s.vx, "vy": s.vy, "omega": s.omega},
             }, indent=2))  # fmt: skip

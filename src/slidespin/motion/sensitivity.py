@@ -46,6 +46,7 @@ from slidespin.motion.state import State
 
 __all__ = [
     "PARAMETERS",
+    "EXTRA_PARAMETERS",
     "STOP_OUTPUTS",
     "PATH_OUTPUTS",
     "Sensitivities",
@@ -57,6 +58,8 @@ __all__ = [
 #: entries, the pressure centre (ξc, ηc) = G in the body frame [m], the moment of inertia
 #: about G [kg m²] and the start's velocities (SI)
 PARAMETERS = ("fx", "fy", "f", "xi_c", "eta_c", "moment_of_inertia", "vx", "vy", "omega")
+#: also accepted, for fitting: the tensor's angle [rad] and the start's body angle φ₀ [rad]
+EXTRA_PARAMETERS = ("angle", "phi0")
 #: the stop's quantities, in :func:`slidespin.stop_sensitivities`' dicts
 STOP_OUTPUTS = ("t_stop", "x", "y", "phi", "beta_stop")
 #: the path's quantities, at fixed time (:attr:`Sensitivities.path`)
@@ -124,7 +127,8 @@ class Sensitivities:
 
 def check_parameters(parameters: Any) -> tuple[str, ...]:
     """Validate the parameter names: a non-empty sequence of distinct names of
-    :data:`PARAMETERS` (a single name is taken as a one-element tuple)."""
+    :data:`PARAMETERS` or :data:`EXTRA_PARAMETERS` (a single name is taken as a one-element
+    tuple)."""
     if isinstance(parameters, str):
         parameters = (parameters,)
     try:
@@ -134,13 +138,13 @@ def check_parameters(parameters: Any) -> tuple[str, ...]:
     ok = (
         names is not None
         and len(names) > 0
-        and all(isinstance(p, str) and p in PARAMETERS for p in names)
+        and all(isinstance(p, str) and p in PARAMETERS + EXTRA_PARAMETERS for p in names)
         and len(set(names)) == len(names)
     )
     if not ok:
         raise ValueError(
             f"parameters = {v._short(parameters)} is invalid; valid values: a non-empty "
-            f"sequence of distinct names among {', '.join(PARAMETERS)}"
+            f"sequence of distinct names among {', '.join(PARAMETERS + EXTRA_PARAMETERS)}"
         )
     return names  # type: ignore[return-value]
 
@@ -165,11 +169,12 @@ def _perturbed(
     body: Body, friction: FrictionTensor, state: State, name: str, value: float
 ) -> tuple[Body, FrictionTensor, State]:
     """The body, tensor and start with parameter ``name`` set to ``value``."""
-    if name in ("fx", "fy", "f"):
-        entries: dict[str, Any] = {name: value}
+    if name in ("fx", "fy", "f", "angle"):
+        # (angle_deg, an init-only alias that replace() would copy from the old angle)
+        entries: dict[str, Any] = {name: value, "angle_deg": None}
         return body, dataclasses.replace(friction, **entries), state
-    if name in ("vx", "vy", "omega"):
-        return body, friction, dataclasses.replace(state, **{name: value})
+    if name in ("vx", "vy", "omega", "phi0"):
+        return body, friction, dataclasses.replace(state, **{name.rstrip("0"): value})
     inertia = body.moment_of_inertia
     pressure = body.pressure
     if name == "moment_of_inertia":
@@ -187,10 +192,10 @@ def _perturbed(
 
 def _value(body: Body, friction: FrictionTensor, state: State, name: str) -> float:
     """The current value of parameter ``name`` (SI)."""
-    if name in ("fx", "fy", "f"):
+    if name in ("fx", "fy", "f", "angle"):
         return float(getattr(friction, name))
-    if name in ("vx", "vy", "omega"):
-        return float(getattr(state, name))
+    if name in ("vx", "vy", "omega", "phi0"):
+        return float(getattr(state, name.rstrip("0")))
     if name == "moment_of_inertia":
         return float(body.moment_of_inertia)  # type: ignore[arg-type]
     return float(_centre(body)[0 if name == "xi_c" else 1])
@@ -202,6 +207,8 @@ def _step(body: Body, friction: FrictionTensor, state: State, name: str) -> floa
         return REL_STEP * max(friction.fx, friction.fy)
     if name in ("xi_c", "eta_c"):
         return REL_STEP * body.length_unit
+    if name in ("angle", "phi0"):
+        return REL_STEP  # of a radian
     if name == "moment_of_inertia":
         return REL_STEP * float(body.moment_of_inertia)  # type: ignore[arg-type]
     k = body.radius_of_gyration
