@@ -339,6 +339,7 @@ class _Problem:
         except (ValueError, RuntimeError):
             return False
         sens = traj.sensitivities
+        assert sens is not None  # asked for above
         run = self.runs[k]
         t = run["t"] - run["t"][0]
         for name, i in cols:
