@@ -108,3 +108,16 @@ def test_unsupported_bodies_are_refused_not_unreachable():
     with pytest.raises(ValueError, match="height") as info:
         ss.aim(tall, ISO, (0.5, 0.0))
     assert not isinstance(info.value, ss.UnreachableTarget)
+
+
+def test_far_target_is_reached_to_the_resolution_of_the_simulation():
+    body = ss.Body(ss.Ellipse(0.1, 0.06), ss.UniformPressure(), 1.0)
+    fr = ss.FrictionTensor(0.42, 0.54)
+    got = ss.aim(body, fr, (1e3, 0.0))
+    assert abs(ss.simulate(body, fr, got).stop_state.x - 1e3) < 1e-9
+
+
+@pytest.mark.parametrize("target", [(True, False), (1.0, 2.0, 3.0, 4.0)])
+def test_bad_targets(target):
+    with pytest.raises(ValueError, match="target"):
+        ss.aim(DISK, ISO, target)

@@ -206,3 +206,28 @@ def test_refusals():
         warnings.simplefilter("error")
         plain = ss.simulate(body, fr, ss.State(vx=1.0, omega=3.0))
     assert plain.sensitivities is None
+
+
+def test_round_body_isotropic_beta_kink_is_nan_not_a_number_made_up():
+    # a disk under an isotropic tensor: every terminal direction is one; fx breaks the
+    # symmetry and β* changes like |Δfx| (no derivative), f keeps it (derivative 0)
+    disk = ss.Body(ss.Disk(0.1), ss.UniformPressure(), 1.0)
+    state = ss.State(vx=1.0, vy=0.5, omega=10.0)
+    with pytest.warns(RuntimeWarning, match="not differentiable"):
+        d = ss.stop_sensitivities(disk, ss.FrictionTensor(0.4, 0.4), state,
+                                  parameters=("fx", "f", "omega"))  # fmt: skip
+    assert math.isnan(d["fx"]["beta_stop"])
+    assert abs(d["f"]["beta_stop"]) < 1e-8
+    h = 4e-5
+    up = ss.simulate(disk, ss.FrictionTensor(0.4 + h, 0.4), state, rtol=1e-12).beta_stop
+    down = ss.simulate(disk, ss.FrictionTensor(0.4 - h, 0.4), state, rtol=1e-12).beta_stop
+    base = ss.simulate(disk, ss.FrictionTensor(0.4, 0.4), state, rtol=1e-12).beta_stop
+    assert up - base > 1e3 * abs(up - down)  # a kink: both sides move the same way
+    assert math.isfinite(d["fx"]["t_stop"]) and math.isfinite(d["omega"]["beta_stop"])
+
+
+def test_parameters_none_is_a_clear_error():
+    body = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), mass=1.0)
+    with pytest.raises(ValueError, match="parameters"):
+        ss.stop_sensitivities(body, ss.FrictionTensor(0.3, 0.3), ss.State(vx=1.0),
+                              parameters=None)  # fmt: skip

@@ -126,6 +126,7 @@ PUBLIC_MODULES = (
     "slidespin.cli.bench",
     "slidespin.cli.fit",
     "slidespin.cli.limit_surface",
+    "slidespin.cli.aim",
     "slidespin.cli.main",
     "slidespin.cli.reproduce",
 )

@@ -18,6 +18,7 @@ target); a target is hit when x and y are within ``tol`` metres and φ within ``
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Sequence
 from dataclasses import replace
 
@@ -37,6 +38,14 @@ AIM_FREE = ("vx", "vy", "omega")
 #: default miss tolerance [m] (the angle's in units of ℓ)
 TOL = 1e-10
 MAX_ITER = 60
+#: damping increases per Levenberg–Marquardt iteration before it gives up (λ × 4 each)
+MAX_TRIES = 12
+#: the smallest miss asked for, relative to the distances involved (round-off of the
+#: positions and the integration's own error set a floor far from the origin)
+REL_FLOOR = 1e-12
+#: a miss below NOISE · rtol · distance is as near as the simulated stop is resolved (its
+#: error grows with the distance slid): accepted, with a warning, when no closer one is found
+NOISE = 10.0
 
 
 class UnreachableTarget(ValueError):
@@ -71,7 +80,9 @@ class UnreachableTarget(ValueError):
 
 def _check_target(target) -> tuple[float, ...]:
     try:
-        t = tuple(float(x) for x in target)
+        t = tuple(float(x) for x in target if not isinstance(x, (bool, np.bool_)))
+        if len(t) != len(target):
+            t = ()
     except (TypeError, ValueError):
         t = ()
     if len(t) not in (2, 3) or not all(math.isfinite(x) for x in t):
@@ -124,7 +135,9 @@ def aim(
     rtol : float, default 1e-10
         Tolerance of the simulations (use the same to check the result with ``simulate``).
     tol : float, default 1e-10
-        Largest accepted miss in x and y [m] and in φ [rad], in [1e-14, 1].
+        Largest accepted miss in x and y [m] and in φ [rad], in [1e-14, 1]; at least 1e-12
+        of the distances involved (the target's and the start's distance from the origin,
+        the length unit), below which round-off of the positions sets the floor.
     max_iter : int, default 60
         Iterations per first guess.
 
@@ -176,6 +189,8 @@ def aim(
     if not isinstance(start, State):
         raise ValueError(f"start = {start!r} is invalid; valid values: a slidespin.State")
     tol = v.in_range("tol", tol, 1e-14, 1.0)
+    g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
+    rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
     if body.height > 0.0 or not law_is_constant(friction.speed_law):
         raise ValueError(
             f"aim works for a thin body under a constant friction law (the stop's sensitivities "
@@ -185,6 +200,9 @@ def aim(
     if isinstance(max_iter, bool) or not isinstance(max_iter, int) or not 1 <= max_iter <= 1000:
         raise ValueError(f"max_iter = {max_iter!r} is invalid; valid range: integer in [1, 1000]")
     ell = body.length_unit
+    far = max(ell, abs(tgt[0]), abs(tgt[1]), abs(start.x), abs(start.y))
+    turn = max(1.0, abs(start.phi), abs(tgt[2]) if len(tgt) == 3 else 0.0)
+    tol = max(tol, REL_FLOOR * far, REL_FLOOR * turn * ell)
     rest = replace(start, **dict.fromkeys(names, 0.0))
     r, _, _ = _miss(body, friction, tgt, rest, names, np.zeros(len(names)), g, rtol, False)
     if _hit(r, ell, tol):  # the target is where the free components at zero stop
@@ -195,6 +213,15 @@ def aim(
                                     max_iter)  # fmt: skip
         launch = replace(start, **dict(zip(names, q)))
         if hit:
+            return launch
+        if miss <= NOISE * rtol * far:  # as near as simulate itself resolves the stop
+            warnings.warn(
+                f"target = {tgt!r} reached to {miss:.3g} m, not to tol = {tol:.3g} m: that is "
+                f"the resolution of the simulated stop this far out ({NOISE:g} rtol x "
+                f"{far:.3g} m; a smaller rtol resolves it better)",
+                RuntimeWarning,
+                stacklevel=2,
+            )
             return launch
         if best is None or miss < best[0]:
             best = (miss, pose, launch)
@@ -292,12 +319,14 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
         A = Js.T @ Js
         gvec = Js.T @ r
         improved = False
-        while lam < 1e12:
+        for _ in range(MAX_TRIES):
             step = -np.linalg.solve(A + lam * np.diag(np.maximum(np.diag(A), 1e-12)), gvec)
             n_step = float(np.linalg.norm(step))
             if n_step > 0.5 * (1.0 + float(np.linalg.norm(q / typ))):
                 step *= 0.5 * (1.0 + float(np.linalg.norm(q / typ))) / n_step
             q_new = q + step * typ
+            if np.all(np.abs(step * typ) <= 1e-15 * (np.abs(q) + typ)):
+                break  # no step left that changes the launch: as near as it gets
             try:
                 r_new, J_new, pose_new = _miss(body, friction, tgt, start, names, q_new, g,
                                                rtol, True)  # fmt: skip

@@ -15,7 +15,7 @@ from collections.abc import Sequence
 
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
-from slidespin.motion.sensitivity import PARAMETERS, STOP_OUTPUTS
+from slidespin.motion.sensitivity import PARAMETERS, STOP_OUTPUTS, check_parameters
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 
@@ -41,10 +41,11 @@ def stop_sensitivities(
         A constant friction law (plane- or body-fixed, any angle).
     state : State
         The start (SI); it must move.
-    parameters : sequence of str, default all
+    parameters : sequence of str, default all nine below
         Among ``fx``, ``fy``, ``f`` (the tensor's entries), ``xi_c``, ``eta_c`` (the
         pressure centre = G in the body frame [m]), ``moment_of_inertia`` [kg m²], ``vx``,
-        ``vy`` [m/s], ``omega`` [rad/s] (the start's velocities).
+        ``vy`` [m/s], ``omega`` [rad/s] (the start's velocities); also ``angle`` (the
+        tensor's principal axes [rad]) and ``phi0`` (the start's body angle [rad]).
     g : float, default 9.81
         Gravitational acceleration [m/s²].
     rtol : float, default 1e-10
@@ -59,7 +60,9 @@ def stop_sensitivities(
         stays ∞ or 0); for an ending that does not attract them (a start on an invariant set,
         e.g. pure translation whose pure-sliding ending is unstable) β* jumps under a change
         that leaves the set, its derivative does not exist and is NaN, with a warning; so
-        for a spiral ending (no terminal direction).
+        for a spiral ending (no terminal direction), and for a round body under an isotropic
+        tensor with respect to ``fx``, ``fy``, ``xi_c``, ``eta_c``, which break its symmetry
+        (β* has a kink there).
 
     Raises
     ------
@@ -84,6 +87,7 @@ def stop_sensitivities(
     >>> round(d["vx"]["t_stop"], 6)  # t_stop = v0/(μ g)
     0.339789
     """
+    parameters = check_parameters(parameters)
     if not isinstance(state, State):
         raise ValueError(f"state = {state!r} is invalid; valid values: a slidespin.State")
     if (state.vx, state.vy, state.omega) == (0.0, 0.0, 0.0):

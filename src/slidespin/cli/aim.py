@@ -40,7 +40,8 @@ def configure(parser) -> None:
         "--target",
         required=True,
         metavar="X,Y[,PHI]",
-        help="where G must stop [m] and the body's total angle there [rad], e.g. 1.0,0.5,2.0",
+        help="where G must stop [m] and the body's total angle there [rad], e.g. 1.0,0.5,2.0 "
+        "(a value starting with '-' needs '=': --target=-1.0,0.5)",
     )
     parser.add_argument(
         "--free",
@@ -71,12 +72,17 @@ def _floats(text: str, name: str) -> tuple[float, ...]:
 def run(args) -> int:
     """Aim, print; returns the exit status (1 for an unreachable target)."""
     # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
-    from slidespin.analysis.aim import UnreachableTarget, aim
+    from slidespin.analysis.aim import AIM_FREE, UnreachableTarget, aim
     from slidespin.motion.simulate import simulate
     from slidespin.studies.case import read_case, refuse_unused
 
     target = _floats(args.target, "--target")
     free = tuple(x.strip() for x in args.free.split(",") if x.strip())
+    if not free or len(set(free)) != len(free) or not all(n in AIM_FREE for n in free):
+        raise ValueError(
+            f"--free = {args.free!r} is invalid; valid values: distinct names among "
+            f"{','.join(AIM_FREE)}, comma-separated (e.g. vx,vy)"
+        )
     case, data = read_case(args.case, initial_required=False)
     refuse_unused(args.case, data, "slidespin aim", UNUSED)
     try:
@@ -86,7 +92,8 @@ def run(args) -> int:
         if args.json:
             n, s = exc.nearest, exc.start
             print(json.dumps({
-                "reachable": False, "target": list(target), "miss": exc.miss,
+                "reachable": False, "message": str(exc), "target": list(target),
+                "free": list(free), "miss": exc.miss,
                 "position_miss": exc.position_miss, "angle_miss": exc.angle_miss,
                 "nearest": {"x": n.x, "y": n.y, "phi": n.phi},
                 "launch": {"vx": s.vx, "vy": s.vy, "omega": s.omega},

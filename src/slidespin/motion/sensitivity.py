@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -289,10 +290,23 @@ def compute(
     if ending == "mixed":
         s_phi = Y[NY + 7 :: NY][:npar]
         su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi)
+    kinked = _breaks_symmetry(par0, friction, names) if ending == "mixed" else ()
+    if kinked:
+        warnings.warn(
+            f"beta_stop is not differentiable with respect to {', '.join(kinked)} here: the "
+            "body is round about G under an isotropic tensor, so every direction of the "
+            "terminal velocity is one (a circle of terminal states), and a change of "
+            f"{', '.join(kinked)} breaks that symmetry (beta_stop changes like |change|); "
+            "their beta_stop derivatives are NaN",
+            RuntimeWarning,
+            stacklevel=3,
+        )
     for k, name in enumerate(names):
         S = Y[NY * (k + 1) : NY * (k + 2)]
         d = {"t_stop": S[4] * t_unit, "x": S[5] * a, "y": S[6] * a, "phi": S[7]}
         d["beta_stop"] = _beta_derivative(ending, u_stop, su[k], k0, dk[k]) * a
+        if name in kinked:
+            d["beta_stop"] = math.nan
         stop[name] = {q: float(d[q]) for q in STOP_OUTPUTS}
         path[name] = _fixed_time(rows, accel, rec[:, NY * (k + 1) : NY * (k + 2)], k0, dk[k],
                                  a, t_unit, v_unit)  # fmt: skip
@@ -351,8 +365,39 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi) -> NDArray:
         up = _sphere_flow(pars[1 + 2 * k], fe, fc, geos[1 + 2 * k], phi, u[None, :])[0]
         um = _sphere_flow(pars[2 + 2 * k], fe, fc, geos[2 + 2 * k], phi, u[None, :])[0]
         rhs = dphi * s_phi[k] + (up - um) / (2.0 * hs[k])
-        out[k] = B @ np.linalg.solve(jt, -(B.T @ rhs))
+        out[k] = B @ _solve_transverse(jt, -(B.T @ rhs))
     return out
+
+
+def _breaks_symmetry(par, friction: FrictionTensor, names: tuple[str, ...]) -> tuple[str, ...]:
+    """The parameters among ``names`` that break the rotational symmetry of a round body
+    (axisymmetric pressure about G) under an isotropic tensor (fx = fy, any f): at such a
+    point β* has a kink in them (MODEL §9: the terminal directions form a circle)."""
+    kin = friction.kinetic
+    if kin.fx != kin.fy:
+        return ()
+    if par[_engine.P_SHAPE] == _engine.SHAPE_FOOTPRINT:
+        round_body = par[_engine.P_RSYM] != 0.0
+    else:
+        round_body = par[_engine.P_BN] == 1.0 and par[_engine.P_XG] == par[_engine.P_YG] == 0.0
+    if not round_body:
+        return ()
+    return tuple(n for n in names if n in ("fx", "fy", "xi_c", "eta_c"))
+
+
+def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
+    """J_T x = b in the tangent plane; where J_T is singular (a body symmetric about G under an
+    isotropic tensor has a circle of terminal directions: the velocity's direction is free,
+    β* the same all along it), the part of b along the zero eigenvalue's eigenvector only
+    moves u* along that circle and is dropped: x is the response across it, which is what
+    changes β*."""
+    lam, vec = np.linalg.eig(jt)
+    big = float(np.max(np.abs(lam)))
+    if big == 0.0 or float(np.min(np.abs(lam))) > 1e-7 * big:
+        return np.linalg.solve(jt, b)
+    coef = np.linalg.solve(vec, b)
+    keep = np.abs(lam) > 1e-7 * big
+    return np.real(vec[:, keep] @ (coef[keep] / lam[keep]))
 
 
 def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) -> float:
