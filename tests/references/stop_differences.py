@@ -72,7 +72,9 @@ def derivatives(body, friction, state, name, rel=1e-3, g=9.81):
     def central(h):
         up = stop_values(*changed(body, friction, state, name, x0 + h), g)
         down = stop_values(*changed(body, friction, state, name, x0 - h), g)
-        return (up - down) / (2.0 * h)
+        with np.errstate(invalid="ignore"):  # β* = ∞ on both sides: NaN, skipped by tests
+            return (up - down) / (2.0 * h)
 
-    d = (4.0 * central(h / 2.0) - central(h)) / 3.0
+    with np.errstate(invalid="ignore"):
+        d = (4.0 * central(h / 2.0) - central(h)) / 3.0
     return dict(zip(OUTPUTS, d))
