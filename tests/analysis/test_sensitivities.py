@@ -231,3 +231,19 @@ def test_parameters_none_is_a_clear_error():
     with pytest.raises(ValueError, match="parameters"):
         ss.stop_sensitivities(body, ss.FrictionTensor(0.3, 0.3), ss.State(vx=1.0),
                               parameters=None)  # fmt: skip
+
+
+def test_sensitivities_in_json_and_pandas():
+    import json
+
+    pytest.importorskip("pandas")
+    body, friction, state, _ = CASES["ellipse_linear_skew"]
+    tr = ss.simulate(body, friction, state, sensitivities=("fx", "omega"))
+    doc = json.loads(tr.to_json())
+    assert doc["stop_sensitivities"]["fx"]["t_stop"] == pytest.approx(
+        tr.sensitivities.stop["fx"]["t_stop"], rel=1e-15
+    )
+    df = tr.to_pandas()
+    np.testing.assert_array_equal(df["d_x/d_omega"].to_numpy(), tr.sensitivities["omega"]["x"])
+    assert "d_vy/d_fx" in df.columns and len(df) == tr.t.size
+    assert "stop_sensitivities" not in json.loads(ss.simulate(body, friction, state).to_json())

@@ -118,6 +118,10 @@ class Sensitivities:
             )
         return self.path[name]
 
+    def columns(self) -> dict[str, NDArray[np.float64]]:
+        """The path's derivatives as named columns ``d_<q>/d_<parameter>`` (SI units)."""
+        return {f"d_{q}/d_{p}": self.path[p][q] for p in self.parameters for q in PATH_OUTPUTS}
+
     def to_dict(self) -> dict[str, Any]:
         """The stop's derivatives as a JSON-ready dict (``None`` for a non-finite value)."""
         return {

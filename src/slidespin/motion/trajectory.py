@@ -162,7 +162,9 @@ class Trajectory:
 
         Non-finite values are ``None`` (JSON ``null``), always for a reason that ``ending``
         gives: β* = ∞ for ``pure_sliding``, β* and ϑ* undefined for ``spiral`` and
-        ``at_rest``. Numbers stay numbers, so scripts need not parse strings.
+        ``at_rest``. Numbers stay numbers, so scripts need not parse strings. With
+        sensitivities, ``stop_sensitivities`` holds the stop's derivatives
+        (:meth:`slidespin.motion.sensitivity.Sensitivities.to_dict`).
         """
 
         def num(x):
@@ -185,6 +187,11 @@ class Trajectory:
             "saddle_energy": num(self.saddle_energy),
             "eigenvalue_ratio": num(self.eigenvalue_ratio),
             "n_steps": int(self.n_steps),
+            **(
+                {"stop_sensitivities": self.sensitivities.to_dict()}
+                if self.sensitivities is not None
+                else {}
+            ),
         }
 
     def to_json(self, path: str | PathLike[str] | None = None) -> str:
@@ -214,14 +221,19 @@ class Trajectory:
 
     def to_pandas(self) -> pd.DataFrame:
         """The trajectory as a :class:`pandas.DataFrame`, one row per recorded step, the
-        columns of :meth:`to_csv` (SI units); the stop summary is in ``DataFrame.attrs``.
+        columns of :meth:`to_csv` (SI units), and with sensitivities the columns
+        ``d_<q>/d_<parameter>`` (∂q/∂θ at fixed t); the stop summary (with the stop's
+        derivatives) is in ``DataFrame.attrs``.
         Needs pandas (``pip install pandas``)."""
         try:
             # lazy: pandas is optional and slow to import
             import pandas as pd  # type: ignore[import-untyped]
         except ImportError:  # pragma: no cover - depends on the environment
             raise ImportError("Trajectory.to_pandas needs pandas: pip install pandas") from None
-        df = pd.DataFrame({c: np.asarray(getattr(self, c), dtype=float) for c in self.COLUMNS})
+        cols = {c: np.asarray(getattr(self, c), dtype=float) for c in self.COLUMNS}
+        if self.sensitivities is not None:  # ∂q/∂θ along the path: columns d_q/d_θ
+            cols.update(self.sensitivities.columns())
+        df = pd.DataFrame(cols)
         df.attrs.update(self.summary())
         return df
 
