@@ -68,7 +68,7 @@ _LOADED_TAIL = (_A1, _F, _A1, _F, _A1, _F, _F, _A1, _F, _F, _F, _I)
 
 # integrate_sensitivities' result, and its arguments after (pars, fp, geos)
 _SENS = T.Tuple((_A1, _A1, _I, _I, _I, _A2))
-_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, _F, _I, _A1)
+_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, T.boolean, _I, _A1)
 
 # the batch loop of slidespin.motion._parallel without ``prange`` (pycc compiles no parallel
 # code; a prange in a serial function is a range): the same source, run case after case.
@@ -162,18 +162,18 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
         )  # fmt: skip
 
     @cc.export("sensitivities_ellipse", _SENS(_A2, _A2, *_SENS_TAIL))
-    def sensitivities_ellipse(pars, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus):
+    def sensitivities_ellipse(pars, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus):
         return integrate_sensitivities(
-            pars, None, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus
+            pars, None, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
         )
 
     @cc.export("sensitivities_footprint", _SENS(_A2, _A2, _A2, _A2, *_SENS_TAIL))
     def sensitivities_footprint(
-        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus
+        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
     ):
         fp = (fe, fc, geos[0])
         return integrate_sensitivities(
-            pars, fp, geos, hs, y0, rtol, atol, drop, conv, u_rate, steps, taus
+            pars, fp, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
         )
 
     @cc.export("stop_direction", T.Tuple((_A1, _A1))(_A2))

@@ -22,9 +22,12 @@ the issue's wish for analytic derivatives of the chord integrals: they are not w
 and each parameter costs two wrench evaluations per stage instead of a fraction of one.
 
 The integrator is the DOP853 pair of :mod:`slidespin.motion._integrator` (the same
-coefficients and error norm) on the joint vector (y, S), run until s has dropped by
-``ln_drop`` and the stop's sensitivities (t, x, y, φ, and u for a mixed ending) have converged;
-no projection and no tail (s is below 1e-15 s₀ there, and the tail is O(s)).
+coefficients and error norm) on the joint vector (y, S), its steps cut to land on the plain
+run's recorded times (or, with ``replay``, those steps themselves without an error test:
+an internal differentiation of the integrator in the sense of Bock, cheaper but not accurate
+enough at the plain run's tolerance), until s has dropped by ``ln_drop`` and the stop's
+sensitivities of t, x, y, φ have converged; no projection and no tail (s is below 1e-13 s₀
+there, and the tail is O(s)).
 """
 
 from __future__ import annotations
@@ -90,24 +93,14 @@ def joint_rhs(pars, kcs, W, fp, geos, hs, Y, out, yp, ym, gp, gm):
 
 
 @jit(error_model="numpy")
-def _converged_measure(Y, F, npar, rate, u_rate):
+def _converged_measure(Y, F, npar, rate):
     """How far the stop's sensitivities still move: the largest |dS/dτ| / rate over the
-    components t, x, y, φ, relative to 1 + |S|, and when ``u_rate`` > 0 over u and its
-    sensitivities, which converge at the slower rate ``u_rate`` · rate (the fixed point's
-    eigenvalue relative to the decay of ln s)."""
+    components t, x, y, φ, relative to 1 + |S| (they converge with s, at the rate of ln s)."""
     worst = 0.0
     for k in range(npar):
         off = NY * (k + 1)
-        for i in range(NY):
-            if i == 3 or i == 8 or (i < 3 and u_rate == 0.0):
-                continue
-            r = rate * u_rate if i < 3 else rate
-            d = abs(F[off + i]) / r / (1.0 + abs(Y[off + i]))
-            if d > worst:
-                worst = d
-    if u_rate > 0.0:
-        for i in range(3):
-            d = abs(F[i]) / (rate * u_rate)
+        for i in range(4, 8):
+            d = abs(F[off + i]) / rate / (1.0 + abs(Y[off + i]))
             if d > worst:
                 worst = d
     return worst
@@ -115,7 +108,7 @@ def _converged_measure(Y, F, npar, rate, u_rate):
 
 @jit(error_model="numpy")
 def integrate_sensitivities(
-    pars, fp, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, u_rate, max_steps, taus
+    pars, fp, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus
 ):
     """Integrate the joint system from ``Y0`` until the stop's sensitivities converge.
 
@@ -138,9 +131,10 @@ def integrate_sensitivities(
         Integration goes on at least until ln s < ln s₀ − ``ln_drop``.
     conv_tol : float
         Then until :func:`_converged_measure` is below it.
-    u_rate : float
-        0, or also wait for u and its sensitivities (a mixed ending: β* needs them), which
-        converge at ``u_rate`` times the decay rate of ln s.
+    replay : bool
+        Take the steps ``taus`` themselves (the accepted steps of the plain run, whose error
+        control chose them for the motion) without an error test, then go on with error
+        control to convergence; else cut the error-controlled steps to land on ``taus``.
     max_steps : int
         Step budget.
     taus : ndarray (n,)
@@ -194,7 +188,7 @@ def integrate_sensitivities(
         while True:
             hh = h
             landed = False
-            if nxt < taus.size and tau + hh >= taus[nxt]:
+            if nxt < taus.size and (replay or tau + hh >= taus[nxt]):
                 hh = taus[nxt] - tau
                 landed = True
             if not hh >= 1e-12 * (1.0 + tau):
@@ -227,6 +221,10 @@ def integrate_sensitivities(
             if not math.isfinite(en):
                 status = SS_NON_FINITE
                 break
+            if replay and landed:  # the plain run's own step: accepted as it was there
+                tau = taus[nxt]
+                h = hh
+                break
             if en < 1.0:
                 factor = 10.0 if en == 0.0 else min(10.0, 0.9 * en**exponent)
                 if rejected:
@@ -249,13 +247,13 @@ def integrate_sensitivities(
             nxt += 1
         if Y[3] < ln_s0 - ln_drop and nxt >= taus.size:
             rate = max(abs(F[3]), 1e-300)
-            if _converged_measure(Y, F, npar, rate, u_rate) < conv_tol:
+            if _converged_measure(Y, F, npar, rate) < conv_tol:
                 status = SS_CONVERGED
                 break
     return Y, F, status, nsteps, fails, rec
 
 
-def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, u_rate, max_steps, taus):
+def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus):
     """:func:`integrate_sensitivities` for the rows ``pars`` (and ``geos``) and the footprint
     arrays ``fe``, ``fc`` (empty for an ellipse): run by the ahead-of-time compiled core when
     the install built one from these sources (:mod:`slidespin._aot`), else by the JIT."""
@@ -264,7 +262,7 @@ def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, u_rate, max_s
     tail = (
         np.ascontiguousarray(hs, dtype=np.float64),
         np.ascontiguousarray(Y0, dtype=np.float64),
-        float(rtol), float(atol), float(ln_drop), float(conv_tol), float(u_rate),
+        float(rtol), float(atol), float(ln_drop), float(conv_tol), bool(replay),
         int(max_steps), np.ascontiguousarray(taus, dtype=np.float64),
     )  # fmt: skip
     footprint = pars[0, P_SHAPE] == SHAPE_FOOTPRINT
