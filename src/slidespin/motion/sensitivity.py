@@ -245,13 +245,12 @@ def compute(
     g: float,
     rtol: float,
     ending: str,
-    eigenvalue_ratio: float,
     taus: NDArray[np.float64],
     rows: NDArray[np.float64],
     accel: NDArray[np.float64],
 ) -> Sensitivities:
     """Run the sensitivities of a free motion whose plain run (:func:`slidespin.simulate`)
-    stopped with ``ending`` at the fixed point's ``eigenvalue_ratio``; ``taus`` are its
+    stopped with ``ending``; ``taus`` are its
     records' regularised times, ``rows`` its states there and then at the stop (natural units),
     ``accel`` the natural accelerations (Fx, Fy, M/k) at the rows (for the fixed-t
     conversion). Validated inputs only (``simulate`` checks them)."""

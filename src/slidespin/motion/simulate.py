@@ -293,12 +293,13 @@ def simulate(
     sensitivities : sequence of str, optional
         Parameters to differentiate the motion with respect to (MODEL §15): any of ``fx``,
         ``fy``, ``f``, ``xi_c``, ``eta_c``, ``moment_of_inertia``, ``vx``, ``vy``,
-        ``omega`` (the last three of the start). The variational equations are integrated
-        with the motion (:mod:`slidespin.motion.sensitivity`) and the trajectory's
-        ``sensitivities`` holds ∂q(t)/∂θ along it and the stop's derivatives (t_stop, the
-        stop pose, β*). Free motion under a constant law only (refused with a load, a slope,
-        ``t_end``, a pusher, a speed law or a tall body), and for a motion that stops (not a
-        spiral).
+        ``omega`` (the last three of the start), also ``angle`` (the tensor's) and ``phi0``
+        (the start's body angle). The variational equations are integrated with the motion
+        (:mod:`slidespin.motion.sensitivity`) and the trajectory's ``sensitivities`` holds
+        ∂q(t)/∂θ along it and the stop's derivatives (t_stop, the stop pose, β*). Free
+        motion under a constant law only (refused with a load, a slope, ``t_end``, a pusher,
+        a speed law or a tall body), for a motion that stops (status ``stopped``; a
+        spiral's β* has no derivative: NaN).
 
     Returns
     -------
@@ -485,8 +486,8 @@ def simulate(
             )
         accel = np.column_stack([fx, fy, mm / k])
         sens = compute_sensitivities(
-            body, friction, initial_state, sensitivities, g, rtol, ending, float(term[2]),
-            rec[:, 0], rows, accel,
+            body, friction, initial_state, sensitivities, g, rtol, ending, rec[:, 0], rows,
+            accel,
         )  # fmt: skip
     return Trajectory(
         t=rows[:, 4] * t_unit,
