@@ -121,3 +121,22 @@ def test_far_target_is_reached_to_the_resolution_of_the_simulation():
 def test_bad_targets(target):
     with pytest.raises(ValueError, match="target"):
         ss.aim(DISK, ISO, target)
+
+
+def test_aim_in_polar_form_speed_and_direction():
+    launch = ss.State(vx=1.0, vy=0.3, omega=5.0)
+    target = _stop(ELLIPSE, SKEW, launch)
+    got = ss.aim(ELLIPSE, SKEW, target, free=("speed", "direction", "omega"))
+    assert (got.vx, got.vy, got.omega) == pytest.approx((1.0, 0.3, 5.0), rel=1e-8)
+    # how hard to throw along a given line: only the speed free, the direction kept
+    stone = ss.Body(ss.Annulus(0.0595, 0.0655), ss.UniformPressure(), 19.96, 0.2113)
+    ice = ss.FrictionTensor(0.0068, 0.0068)
+    got = ss.aim(stone, ice, (0.0, 28.0), start=ss.State(vy=1.0, omega=0.7), free=("speed",))
+    assert abs(got.vx) < 1e-12 and got.omega == 0.7
+    stop = ss.simulate(stone, ice, got).stop_state
+    assert abs(stop.x) < 1e-9 and abs(stop.y - 28.0) < 1e-9
+
+
+def test_polar_and_cartesian_components_are_not_mixed():
+    with pytest.raises(ValueError, match="mixes"):
+        ss.aim(DISK, ISO, (1.0, 0.0), free=("vx", "speed"))

@@ -33,8 +33,10 @@ from slidespin.motion.state import State
 
 __all__ = ["aim", "UnreachableTarget", "AIM_FREE"]
 
-#: the start's components :func:`aim` may solve for
-AIM_FREE = ("vx", "vy", "omega")
+#: the start's components :func:`aim` may solve for: the velocity of G as (vx, vy) or as
+#: its ``speed`` [m/s] and ``direction`` [rad from OX] (not mixed), and the spin
+AIM_FREE = ("vx", "vy", "omega", "speed", "direction")
+_POLAR = ("speed", "direction")
 #: default miss tolerance [m] (the angle's in units of ℓ)
 TOL = 1e-10
 MAX_ITER = 60
@@ -100,7 +102,32 @@ def _check_free(free) -> tuple[str, ...]:
             f"free = {v._short(free)} is invalid; valid values: a non-empty set of distinct "
             f"names among {', '.join(AIM_FREE)}"
         )
+    if any(n in _POLAR for n in names) and any(n in ("vx", "vy") for n in names):
+        raise ValueError(
+            f"free = {v._short(free)} is invalid: it mixes vx, vy with speed, direction; "
+            "valid values: the velocity as vx, vy or as speed, direction (with or without "
+            "omega)"
+        )
     return names
+
+
+def _launch(start: State, names, q) -> State:
+    """``start`` with the free components ``names`` set to ``q`` (speed and direction set
+    the velocity of G in polar form, the other of the two kept from ``start``)."""
+    vals = dict(zip(names, (float(x) for x in q)))
+    if not any(n in _POLAR for n in names):
+        return replace(start, **vals)
+    speed = vals.get("speed", math.hypot(start.vx, start.vy))
+    direction = vals.get("direction", math.atan2(start.vy, start.vx))
+    omega = vals.get("omega", start.omega)
+    return replace(start, vx=speed * math.cos(direction), vy=speed * math.sin(direction),
+                   omega=omega)  # fmt: skip
+
+
+def _components(state: State, names) -> np.ndarray:
+    """The free components ``names`` of a state (polar ones from its velocity)."""
+    polar = {"speed": math.hypot(state.vx, state.vy), "direction": math.atan2(state.vy, state.vx)}
+    return np.array([polar[n] if n in _POLAR else getattr(state, n) for n in names])
 
 
 def aim(
@@ -108,7 +135,7 @@ def aim(
     friction: FrictionTensor,
     target: Sequence[float],
     start: State | None = None,
-    free: Sequence[str] = AIM_FREE,
+    free: Sequence[str] = ("vx", "vy", "omega"),
     g: float = 9.81,
     rtol: float = 1e-10,
     tol: float = TOL,
@@ -129,7 +156,10 @@ def aim(
         The launch position and angle, and the velocities that are not ``free``; its free
         velocities, if not all zero, are the first guess. Default: at the origin, at rest.
     free : sequence of str, default ("vx", "vy", "omega")
-        The start's components to solve for.
+        The start's components to solve for: any of ``vx``, ``vy``, ``omega``, or the
+        velocity of G in polar form, ``speed`` [m/s] and ``direction`` [rad from OX] (with
+        or without ``omega``; the other polar component kept from ``start``): e.g.
+        ``free=("speed",)`` for how hard to throw along a given line.
     g : float, default 9.81
         Gravitational acceleration [m/s²].
     rtol : float, default 1e-10
@@ -203,15 +233,16 @@ def aim(
     far = max(ell, abs(tgt[0]), abs(tgt[1]), abs(start.x), abs(start.y))
     turn = max(1.0, abs(start.phi), abs(tgt[2]) if len(tgt) == 3 else 0.0)
     tol = max(tol, REL_FLOOR * far, REL_FLOOR * turn * ell)
-    rest = replace(start, **dict.fromkeys(names, 0.0))
-    r, _, _ = _miss(body, friction, tgt, rest, names, np.zeros(len(names)), g, rtol, False)
+    zero = np.array([0.0 if n != "direction" else _components(start, names)[i]
+                     for i, n in enumerate(names)])  # fmt: skip
+    r, _, _ = _miss(body, friction, tgt, start, names, zero, g, rtol, False)
     if _hit(r, ell, tol):  # the target is where the free components at zero stop
-        return rest
+        return _launch(start, names, zero)
     best: tuple[float, State, State] | None = None
     for guess in _guesses(body, friction, tgt, start, names, g):
         q, miss, hit, pose = _solve(body, friction, tgt, start, names, guess, g, rtol, tol,
                                     max_iter)  # fmt: skip
-        launch = replace(start, **dict(zip(names, q)))
+        launch = _launch(start, names, q)
         if hit:
             return launch
         if miss <= NOISE * rtol * far:  # as near as simulate itself resolves the stop
@@ -248,8 +279,8 @@ def aim(
 
 def _guesses(body, friction, tgt, start, names, g):
     """First guesses of the free velocities (module docstring)."""
-    own = np.array([getattr(start, n) for n in names])
-    if np.any(own != 0.0):
+    own = _components(start, names)
+    if np.any([x != 0.0 for x, n in zip(own, names) if n != "direction"]):
         yield own
     dx, dy = tgt[0] - start.x, tgt[1] - start.y
     d = math.hypot(dx, dy)
@@ -265,25 +296,39 @@ def _guesses(body, friction, tgt, start, names, g):
         mu = 0.5 * (kin.fx + kin.fy)
         alpha = (2.0 / 3.0) * mu * body.mass * g * body.length_unit / body.moment_of_inertia
         vel = {"vx": 0.0, "vy": 0.0, "omega": math.copysign(math.sqrt(2 * alpha * abs(dphi)), dphi)}
-    base = np.array([vel[n] if vel[n] != 0.0 or getattr(start, n) == 0.0 else getattr(start, n)
-                     for n in names])  # fmt: skip
+    guess = State(vx=vel["vx"], vy=vel["vy"], omega=vel["omega"])
+    mine = _components(guess, names)
+    fixed = _components(start, names)
+    base = np.where((mine != 0.0) | (fixed == 0.0), mine, fixed)
     for f in (1.0, 0.7, 1.4):
-        yield base * f
+        yield np.array([x if n == "direction" else x * f for x, n in zip(base, names)])
 
 
 def _miss(body, friction, tgt, start, names, q, g, rtol, jac):
     """(miss vector, its Jacobian or None, stop pose) of the launch with free velocities q."""
-    launch = replace(start, **dict(zip(names, (float(x) for x in q))))
-    tr = simulate(body, friction, launch, g, rtol, sensitivities=names if jac else None)
+    launch = _launch(start, names, q)
+    polar = any(n in _POLAR for n in names)
+    wanted = tuple(n for n in names if n not in _POLAR) + (("vx", "vy") if polar else ())
+    tr = simulate(body, friction, launch, g, rtol, sensitivities=wanted if jac else None)
     s = tr.stop_state
     ell = body.length_unit
     r = [s.x - tgt[0], s.y - tgt[1]] + ([(s.phi - tgt[2]) * ell] if len(tgt) == 3 else [])
     J = None
     if jac:
         d = tr.sensitivities.stop  # type: ignore[union-attr]
-        rows = [[d[n]["x"] for n in names], [d[n]["y"] for n in names]]
+        speed = math.hypot(launch.vx, launch.vy)
+        c, sn = (launch.vx / speed, launch.vy / speed) if speed > 0.0 else (1.0, 0.0)
+
+        def column(n, q):  # ∂q_stop/∂n, polar components by the chain rule
+            if n == "speed":
+                return c * d["vx"][q] + sn * d["vy"][q]
+            if n == "direction":
+                return -launch.vy * d["vx"][q] + launch.vx * d["vy"][q]
+            return d[n][q]
+
+        rows = [[column(n, "x") for n in names], [column(n, "y") for n in names]]
         if len(tgt) == 3:
-            rows.append([d[n]["phi"] * ell for n in names])
+            rows.append([column(n, "phi") * ell for n in names])
         J = np.array(rows)
     return np.array(r), J, s
 
@@ -299,8 +344,10 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
     k = body.radius_of_gyration
     q = np.asarray(q0, dtype=float)
     scale = max(float(np.max(np.abs([x * (k if n == "omega" else 1.0)
-                                     for x, n in zip(q, names)]))), 1e-3)  # fmt: skip
-    typ = np.array([scale / k if n == "omega" else scale for n in names])
+                                     for x, n in zip(q, names) if n != "direction"] or [0.0]))),
+                1e-3)  # fmt: skip
+    typ = np.array([scale / k if n == "omega" else 1.0 if n == "direction" else scale
+                    for n in names])  # fmt: skip
     ell = body.length_unit
     try:
         r, J, pose = _miss(body, friction, tgt, start, names, q, g, rtol, True)

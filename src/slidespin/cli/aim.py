@@ -47,8 +47,8 @@ def configure(parser) -> None:
         "--free",
         default="vx,vy,omega",
         metavar="NAMES",
-        help="the launch components to solve for (default vx,vy,omega); the others are the "
-        "case's [initial] values",
+        help="the launch components to solve for (default vx,vy,omega; the velocity may be "
+        "given as speed,direction instead of vx,vy); the others are the case's [initial] values",
     )
     parser.add_argument(
         "--tol", type=float, default=1e-10, help="largest miss in m and rad (default 1e-10)"
