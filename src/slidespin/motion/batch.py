@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -41,7 +41,9 @@ from slidespin.motion._cases import CASE_FIELDS, validated_columns
 from slidespin.motion._report import _html_table
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.outcomes import ENDINGS, STATUSES
-from slidespin.motion.simulate import check_solver_options
+from slidespin.motion.sensitivity import STOP_OUTPUTS, check_parameters
+from slidespin.motion.simulate import check_solver_options, simulate
+from slidespin.motion.state import State
 
 if TYPE_CHECKING:
     import pandas as pd  # type: ignore[import-untyped]  # pandas ships no type information
@@ -110,6 +112,10 @@ class StopResults:
         The initial states the cases started from, rows (x, y, phi, vx, vy, omega) in SI
         units (a copy; velocities given as speed and direction are converted). None only
         for results built by hand.
+    sensitivities : dict or None
+        With ``simulate_many(..., sensitivities=...)``: the stop's derivatives per case as
+        columns ``d_<q>/d_<parameter>`` (q in t_stop, x, y, phi, beta_stop; SI units; NaN
+        where a case has none: at rest, or not stopped), MODEL §15.
     """
 
     t_stop: np.ndarray
@@ -124,6 +130,7 @@ class StopResults:
     n_steps: np.ndarray
     saddle_energy: np.ndarray
     initial_states: np.ndarray | None = field(default=None, repr=False)
+    sensitivities: dict[str, np.ndarray] | None = field(default=None, repr=False)
 
     def __len__(self) -> int:
         return self.t_stop.size
@@ -201,6 +208,8 @@ class StopResults:
         }
         out["ending"] = self.ending
         out["status"] = self.status
+        if self.sensitivities is not None:
+            out.update(self.sensitivities)
         return out
 
 
@@ -400,6 +409,7 @@ def simulate_many(
     max_steps: int = 200_000,
     *,
     progress: bool | None = None,
+    sensitivities: Iterable[str] | None = None,
 ) -> StopResults:
     """Integrate one body from N initial states to their stops, in parallel.
 
@@ -436,6 +446,12 @@ def simulate_many(
         if stderr is a terminal. With a bar the cases run in chunks of about 1 % of the
         batch (``chunk_size``) so that it moves, at a cost of 1–2 % of the run time;
         the chunking changes no number.
+    sensitivities : sequence of str, optional
+        Parameters (as in :func:`slidespin.stop_sensitivities`) whose stop derivatives each
+        case gets, as the columns ``d_<q>/d_<parameter>`` of ``StopResults.sensitivities``
+        (and of ``as_dict``, ``to_pandas``). Computed case by case in Python (one
+        sensitivity run each, MODEL §15), not in the parallel batch engine: about 20–60
+        plain runs' time per case.
 
     Returns
     -------
@@ -467,7 +483,8 @@ def simulate_many(
         cidx[:, 1] = fc.shape[0]
         return fe, fc, eidx, cidx, np.repeat(geo[None, :], m, axis=0)
 
-    return _integrate_all(
+    names = None if sensitivities is None else check_parameters(sensitivities)
+    res = _integrate_all(
         st.shape[0],
         lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
         body.length_unit,
@@ -479,6 +496,31 @@ def simulate_many(
         progress=progress,
         desc="simulate_many",
     )
+    if names is not None:
+        cols = _stop_sensitivity_columns(body, friction, st, names, g, rtol, max_steps, progress)
+        res = replace(res, sensitivities=cols)
+    return res
+
+
+def _stop_sensitivity_columns(body, friction, st, names, g, rtol, max_steps, progress):
+    """The stop's derivatives of each case (rows of ``st``) as columns d_<q>/d_<parameter>;
+    NaN for a case at rest or one that does not stop."""
+    cols = {f"d_{q}/d_{p}": np.full(st.shape[0], np.nan) for p in names for q in STOP_OUTPUTS}
+    with progress_bar(st.shape[0], "sensitivities", enabled=progress) as bar:
+        for i, row in enumerate(st):
+            state = State(*(float(x) for x in row))
+            if (state.vx, state.vy, state.omega) != (0.0, 0.0, 0.0):
+                try:
+                    sens = simulate(body, friction, state, g, rtol, max_steps=max_steps,
+                                    sensitivities=names).sensitivities  # fmt: skip
+                except ValueError:  # the motion does not stop: no derivatives (NaN)
+                    sens = None
+                if sens is not None:
+                    for p in names:
+                        for q in STOP_OUTPUTS:
+                            cols[f"d_{q}/d_{p}"][i] = sens.stop[p][q]
+            bar.update(1)
+    return cols
 
 
 def simulate_bodies(
