@@ -140,3 +140,13 @@ def test_aim_in_polar_form_speed_and_direction():
 def test_polar_and_cartesian_components_are_not_mixed():
     with pytest.raises(ValueError, match="mixes"):
         ss.aim(DISK, ISO, (1.0, 0.0), free=("vx", "speed"))
+
+
+def test_polar_speed_may_turn_negative_and_direction_needs_a_speed():
+    # a target behind the start on its line: the speed found is negative (thrown backwards)
+    start = ss.State(vx=0.1, vy=0.05)
+    got = ss.aim(DISK, ISO, (-1.0, -0.5), start=start, free=("speed",))
+    stop = ss.simulate(DISK, ISO, got).stop_state
+    assert abs(stop.x + 1.0) < 1e-9 and abs(stop.y + 0.5) < 1e-9
+    with pytest.raises(ValueError, match="zero speed"):
+        ss.aim(DISK, ISO, (1.0, 0.0), free=("direction",))

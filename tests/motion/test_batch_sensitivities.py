@@ -38,3 +38,27 @@ def test_no_columns_unless_asked_and_bad_names():
     pd = pytest.importorskip("pandas")
     df = ss.simulate_many(BODY, FRICTION, STATES[:1], sensitivities="vx").to_pandas()
     assert isinstance(df, pd.DataFrame) and np.isfinite(df["d_x/d_vx"][0])
+
+
+def test_a_parameter_the_body_cannot_vary_is_refused_before_any_run():
+    blade = ss.Body(ss.Blade(0.2), ss.UniformPressure(), mass=1.0)
+    with pytest.raises(ValueError, match="xi_c"):
+        ss.simulate_many(blade, FRICTION, STATES[:1], sensitivities=("fx", "xi_c"))
+
+
+def test_every_entry_gives_the_same_beta_rule():
+    # a pure spin of a disk, whose pure-spinning ending does not attract (the start lies on
+    # the invariant set): a velocity makes β* jump; NaN everywhere, not 0 somewhere
+    disk = ss.Body(ss.Ellipse(0.1, 0.1), ss.UniformPressure(), mass=1.0)
+    iso = ss.FrictionTensor(0.3, 0.3)
+    spin = ss.State(omega=10.0)
+    tr = ss.simulate(disk, iso, spin)
+    if tr.eigenvalue_ratio < 0.0:
+        pytest.skip("this pure spin attracts nearby motions here")
+    with pytest.warns(RuntimeWarning, match="jumps"):
+        one = ss.stop_sensitivities(disk, iso, spin, parameters=("vx",))
+    with pytest.warns(RuntimeWarning, match="jumps"):
+        many = ss.simulate_many(disk, iso, [spin], sensitivities=("vx",))
+    assert math.isnan(one["vx"]["beta_stop"]) and math.isnan(
+        many.sensitivities["d_beta_stop/d_vx"][0]
+    )

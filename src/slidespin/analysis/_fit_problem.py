@@ -322,7 +322,12 @@ class _Problem:
         computed for this run (its motion does not stop, or does not move)."""
         sl = self.slices[k]
         w = self.weights()[sl]
-        body, fr = self.objects(self.physical(p))
+        vals = self.physical(p)
+        body, fr = self.objects(vals)
+        if ("xi_c" in self.free or "eta_c" in self.free) and (
+            body.pressure.centroid != (vals["xi_c"], vals["eta_c"])
+        ):
+            return False  # G projected onto the core: the residual's is another function
         cols = [(name, i) for i, name in enumerate(self.free)]
         for j, i in self.start_index[k]:
             comp = START[j]

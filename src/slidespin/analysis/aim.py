@@ -74,10 +74,13 @@ class UnreachableTarget(ValueError):
         self.nearest = nearest
         self.start = start
         self.miss = miss
-        #: the distance of the nearest stop's G from the target (x, y) [m]
+        #: the distance of the nearest stop's G from the target (x, y) [m] (inf when no
+        #: launch could be simulated: ``nearest`` is then the start)
         self.position_miss = math.hypot(nearest.x - target[0], nearest.y - target[1])
         #: its angle's miss [rad] (0 for a target without an angle)
         self.angle_miss = abs(nearest.phi - target[2]) if len(target) == 3 else 0.0
+        if not math.isfinite(miss):
+            self.position_miss = self.angle_miss = math.inf
 
 
 def _check_target(target) -> tuple[float, ...]:
@@ -229,6 +232,11 @@ def aim(
         )
     if isinstance(max_iter, bool) or not isinstance(max_iter, int) or not 1 <= max_iter <= 1000:
         raise ValueError(f"max_iter = {max_iter!r} is invalid; valid range: integer in [1, 1000]")
+    if "direction" in names and "speed" not in names and start.vx == start.vy == 0.0:
+        raise ValueError(
+            f"free = {names!r} with start = {start!r}: the direction of a launch at zero speed "
+            "moves nothing; valid: a start with a speed (vx, vy not both 0), or 'speed' free too"
+        )
     ell = body.length_unit
     far = max(ell, abs(tgt[0]), abs(tgt[1]), abs(start.x), abs(start.y))
     turn = max(1.0, abs(start.phi), abs(tgt[2]) if len(tgt) == 3 else 0.0)
@@ -309,21 +317,26 @@ def _miss(body, friction, tgt, start, names, q, g, rtol, jac):
     launch = _launch(start, names, q)
     polar = any(n in _POLAR for n in names)
     wanted = tuple(n for n in names if n not in _POLAR) + (("vx", "vy") if polar else ())
-    tr = simulate(body, friction, launch, g, rtol, sensitivities=wanted if jac else None)
+    with warnings.catch_warnings():  # about β*'s derivatives, which aiming does not use
+        warnings.simplefilter("ignore", RuntimeWarning)
+        tr = simulate(body, friction, launch, g, rtol, sensitivities=wanted if jac else None)
     s = tr.stop_state
     ell = body.length_unit
     r = [s.x - tgt[0], s.y - tgt[1]] + ([(s.phi - tgt[2]) * ell] if len(tgt) == 3 else [])
     J = None
     if jac:
         d = tr.sensitivities.stop  # type: ignore[union-attr]
-        speed = math.hypot(launch.vx, launch.vy)
-        c, sn = (launch.vx / speed, launch.vy / speed) if speed > 0.0 else (1.0, 0.0)
+        # the polar values _launch used (a negative speed is a launch the other way)
+        vals = dict(zip(names, (float(x) for x in q)))
+        speed = vals.get("speed", math.hypot(start.vx, start.vy))
+        angle = vals.get("direction", math.atan2(start.vy, start.vx))
+        c, sn = math.cos(angle), math.sin(angle)
 
         def column(n, q):  # ∂q_stop/∂n, polar components by the chain rule
             if n == "speed":
                 return c * d["vx"][q] + sn * d["vy"][q]
             if n == "direction":
-                return -launch.vy * d["vx"][q] + launch.vx * d["vy"][q]
+                return speed * (-sn * d["vx"][q] + c * d["vy"][q])
             return d[n][q]
 
         rows = [[column(n, "x") for n in names], [column(n, "y") for n in names]]

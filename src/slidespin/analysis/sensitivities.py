@@ -9,8 +9,6 @@ whole path is ``simulate(..., sensitivities=...)``.
 
 from __future__ import annotations
 
-import math
-import warnings
 from collections.abc import Sequence
 
 from slidespin.contact.body import Body
@@ -19,7 +17,7 @@ from slidespin.motion.sensitivity import PARAMETERS, STOP_OUTPUTS, check_paramet
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 
-__all__ = ["stop_sensitivities", "PARAMETERS", "STOP_OUTPUTS"]
+__all__ = ["stop_sensitivities"]
 
 
 def stop_sensitivities(
@@ -97,35 +95,5 @@ def stop_sensitivities(
         )
     tr = simulate(body, friction, state, g, rtol, sensitivities=parameters)
     assert tr.sensitivities is not None
-    stop = {p: dict(d) for p, d in tr.sensitivities.stop.items()}
-    if tr.ending == "spiral":
-        warnings.warn(
-            "the motion ends in a spiral (its direction keeps turning: no terminal direction "
-            "and no beta_stop): the derivatives of beta_stop are NaN",
-            RuntimeWarning,
-            stacklevel=2,
-        )
-    if tr.ending in ("pure_sliding", "pure_spinning") and not tr.eigenvalue_ratio < 0.0:
-        moved = [p for p, d in stop.items() if _leaves_invariant_set(tr, p)]
-        for p in moved:
-            stop[p]["beta_stop"] = math.nan
-        if moved:
-            warnings.warn(
-                f"the motion ends {tr.ending} at a fixed point that does not attract nearby "
-                f"motions (eigenvalue ratio {tr.eigenvalue_ratio:.3g} >= 0): beta_stop jumps "
-                f"under a change of {', '.join(moved)}, and its derivative is NaN",
-                RuntimeWarning,
-                stacklevel=2,
-            )
+    stop = tr.sensitivities.stop
     return {p: {q: float(stop[p][q]) for q in STOP_OUTPUTS} for p in stop}
-
-
-def _leaves_invariant_set(tr, name: str) -> bool:
-    """Whether a change of parameter ``name`` takes the motion off its invariant set. Pure
-    translation stays pure translation under any parameter but the spin (the traction has
-    one direction, and its moment about the pressure centroid G vanishes); pure spin about G
-    stays pure spin (the pressure is centrally symmetric about G, MODEL §9) unless the start
-    gets a velocity or G moves."""
-    if tr.ending == "pure_sliding":
-        return name == "omega"
-    return name in ("vx", "vy", "xi_c", "eta_c")

@@ -22,6 +22,7 @@ change any number.
 from __future__ import annotations
 
 import math
+import warnings
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
@@ -41,7 +42,7 @@ from slidespin.motion._cases import CASE_FIELDS, validated_columns
 from slidespin.motion._report import _html_table
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.outcomes import ENDINGS, STATUSES
-from slidespin.motion.sensitivity import STOP_OUTPUTS, check_parameters
+from slidespin.motion.sensitivity import STOP_OUTPUTS, check_parameters, check_setup
 from slidespin.motion.simulate import check_solver_options, simulate
 from slidespin.motion.state import State
 
@@ -497,29 +498,42 @@ def simulate_many(
         desc="simulate_many",
     )
     if names is not None:
-        cols = _stop_sensitivity_columns(body, friction, st, names, g, rtol, max_steps, progress)
+        cols = _stop_sensitivity_columns(
+            body, friction, st, res.status, names, g, rtol, max_steps, progress
+        )
         res = replace(res, sensitivities=cols)
     return res
 
 
-def _stop_sensitivity_columns(body, friction, st, names, g, rtol, max_steps, progress):
+def _stop_sensitivity_columns(body, friction, st, status, names, g, rtol, max_steps, progress):
     """The stop's derivatives of each case (rows of ``st``) as columns d_<q>/d_<parameter>;
-    NaN for a case at rest or one that does not stop."""
+    NaN for a case that does not stop (``status`` of the batch run; at rest included), and
+    for one whose sensitivity run fails (counted in a warning)."""
+    check_setup(body, names)  # a parameter the body cannot vary: refused before any run
     cols = {f"d_{q}/d_{p}": np.full(st.shape[0], np.nan) for p in names for q in STOP_OUTPUTS}
+    failed = 0
     with progress_bar(st.shape[0], "sensitivities", enabled=progress) as bar:
         for i, row in enumerate(st):
-            state = State(*(float(x) for x in row))
-            if (state.vx, state.vy, state.omega) != (0.0, 0.0, 0.0):
+            if status[i] == "stopped":
+                state = State(*(float(x) for x in row))
                 try:
                     sens = simulate(body, friction, state, g, rtol, max_steps=max_steps,
                                     sensitivities=names).sensitivities  # fmt: skip
-                except ValueError:  # the motion does not stop: no derivatives (NaN)
+                except RuntimeError:
+                    failed += 1
                     sens = None
                 if sens is not None:
                     for p in names:
                         for q in STOP_OUTPUTS:
                             cols[f"d_{q}/d_{p}"][i] = sens.stop[p][q]
             bar.update(1)
+    if failed:
+        warnings.warn(
+            f"{failed} case(s) of {st.shape[0]}: the sensitivity run did not converge; their "
+            "derivative columns are NaN",
+            RuntimeWarning,
+            stacklevel=3,
+        )
     return cols
 
 

@@ -52,6 +52,7 @@ __all__ = [
     "PATH_OUTPUTS",
     "Sensitivities",
     "check_parameters",
+    "check_setup",
     "compute",
 ]
 
@@ -132,6 +133,14 @@ class Sensitivities:
             p: {q: (x if math.isfinite(x) else None) for q, x in d.items()}
             for p, d in self.stop.items()
         }
+
+
+def check_setup(body: Body, names: tuple[str, ...]) -> None:
+    """Refuse, before any run, parameters the body cannot vary: ``xi_c``, ``eta_c`` need a
+    pressure centre that can move (the uniform or linear law on an ellipse or an area
+    footprint)."""
+    if "xi_c" in names or "eta_c" in names:
+        _centre(body)
 
 
 def check_parameters(parameters: Any) -> tuple[str, ...]:
@@ -245,12 +254,13 @@ def compute(
     g: float,
     rtol: float,
     ending: str,
+    eigenvalue_ratio: float,
     taus: NDArray[np.float64],
     rows: NDArray[np.float64],
     accel: NDArray[np.float64],
 ) -> Sensitivities:
     """Run the sensitivities of a free motion whose plain run (:func:`slidespin.simulate`)
-    stopped with ``ending``; ``taus`` are its
+    stopped with ``ending`` at a fixed point with ``eigenvalue_ratio``; ``taus`` are its
     records' regularised times, ``rows`` its states there and then at the stop (natural units),
     ``accel`` the natural accelerations (Fx, Fy, M/k) at the rows (for the fixed-t
     conversion). Validated inputs only (``simulate`` checks them)."""
@@ -298,6 +308,22 @@ def compute(
         s_phi = Y[NY + 7 :: NY][:npar]
         su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi)
     kinked = _breaks_symmetry(par0, friction, names) if ending == "mixed" else ()
+    jumps = _leaves_invariant_set(ending, eigenvalue_ratio, names)
+    if ending == "spiral":
+        warnings.warn(
+            "the motion ends in a spiral (its direction keeps turning: no terminal direction "
+            "and no beta_stop): the derivatives of beta_stop are NaN",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+    if jumps:
+        warnings.warn(
+            f"the motion ends {ending} at a fixed point that does not attract nearby motions "
+            f"(eigenvalue ratio {eigenvalue_ratio:.3g} >= 0): beta_stop jumps under a change "
+            f"of {', '.join(jumps)}, and its derivative is NaN",
+            RuntimeWarning,
+            stacklevel=3,
+        )
     if kinked:
         warnings.warn(
             f"beta_stop is not differentiable with respect to {', '.join(kinked)} here: the "
@@ -312,7 +338,7 @@ def compute(
         S = Y[NY * (k + 1) : NY * (k + 2)]
         d = {"t_stop": S[4] * t_unit, "x": S[5] * a, "y": S[6] * a, "phi": S[7]}
         d["beta_stop"] = _beta_derivative(ending, u_stop, su[k], k0, dk[k]) * a
-        if name in kinked:
+        if name in kinked or name in jumps:
             d["beta_stop"] = math.nan
         stop[name] = {q: float(d[q]) for q in STOP_OUTPUTS}
         path[name] = _fixed_time(rows, accel, rec[:, NY * (k + 1) : NY * (k + 2)], k0, dk[k],
@@ -376,6 +402,19 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi) -> NDArray:
     return out
 
 
+def _leaves_invariant_set(ending: str, ratio: float, names: tuple[str, ...]) -> tuple[str, ...]:
+    """The parameters among ``names`` whose change takes a motion off the invariant set it
+    ends on when that ending does not attract nearby motions (eigenvalue ratio ≥ 0: the
+    start lies on the set): β* jumps there. Pure translation stays pure translation under
+    any parameter but the spin (the traction has one direction and no moment about the
+    pressure centroid G); pure spin about G stays pure spin (the pressure is centrally
+    symmetric about G, MODEL §9) unless the start gets a velocity or G moves."""
+    if ending not in ("pure_sliding", "pure_spinning") or ratio < 0.0:
+        return ()
+    moving = ("omega",) if ending == "pure_sliding" else ("vx", "vy", "xi_c", "eta_c")
+    return tuple(n for n in names if n in moving)
+
+
 def _breaks_symmetry(par, friction: FrictionTensor, names: tuple[str, ...]) -> tuple[str, ...]:
     """The parameters among ``names`` that break the rotational symmetry of a round body
     (axisymmetric pressure about G) under an isotropic tensor (fx = fy, any f): at such a
@@ -400,9 +439,12 @@ def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
     changes β*."""
     lam, vec = np.linalg.eig(jt)
     big = float(np.max(np.abs(lam)))
-    if big == 0.0 or float(np.min(np.abs(lam))) > 1e-7 * big:
-        return np.linalg.solve(jt, b)
-    coef = np.linalg.solve(vec, b)
+    try:
+        if big == 0.0 or float(np.min(np.abs(lam))) > 1e-7 * big:
+            return np.linalg.solve(jt, b)
+        coef = np.linalg.solve(vec, b)
+    except np.linalg.LinAlgError:  # a defective J_T: the least-squares response
+        return np.linalg.lstsq(jt, b, rcond=1e-7)[0]
     keep = np.abs(lam) > 1e-7 * big
     return np.real(vec[:, keep] @ (coef[keep] / lam[keep]))
 

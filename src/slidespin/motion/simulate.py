@@ -40,7 +40,7 @@ from slidespin.motion._law_motion import simulate_law
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES
-from slidespin.motion.sensitivity import check_parameters
+from slidespin.motion.sensitivity import check_parameters, check_setup
 from slidespin.motion.sensitivity import compute as compute_sensitivities
 from slidespin.motion.springs import Spring
 from slidespin.motion.state import State
@@ -346,6 +346,7 @@ def simulate(
     if sensitivities is not None:
         sensitivities = check_parameters(sensitivities)
         _check_differentiable(body, friction, load, incline, t_end, pusher)
+        check_setup(body, sensitivities)
     if pusher is not None:
         return _pushed(body, friction, initial_state, g, rtol, max_steps, max_step, load,
                        incline, t_end, scan_step, pusher, outline)  # fmt: skip
@@ -486,8 +487,8 @@ def simulate(
             )
         accel = np.column_stack([fx, fy, mm / k])
         sens = compute_sensitivities(
-            body, friction, initial_state, sensitivities, g, rtol, ending, rec[:, 0], rows,
-            accel,
+            body, friction, initial_state, sensitivities, g, rtol, ending, float(term[2]),
+            rec[:, 0], rows, accel,
         )  # fmt: skip
     return Trajectory(
         t=rows[:, 4] * t_unit,
