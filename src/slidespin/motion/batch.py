@@ -451,8 +451,8 @@ def simulate_many(
         Parameters (as in :func:`slidespin.stop_sensitivities`) whose stop derivatives each
         case gets, as the columns ``d_<q>/d_<parameter>`` of ``StopResults.sensitivities``
         (and of ``as_dict``, ``to_pandas``). Computed case by case in Python (one
-        sensitivity run each, MODEL §15), not in the parallel batch engine: about 20–60
-        plain runs' time per case.
+        sensitivity run each, MODEL §15), not in the parallel batch engine (a sensitivity run
+        costs 18–55 plain runs for 6 parameters: docs/sensitivities.md).
 
     Returns
     -------

@@ -231,6 +231,8 @@ def _step(body: Body, friction: FrictionTensor, state: State, name: str) -> floa
         return REL_STEP * float(body.moment_of_inertia)  # type: ignore[arg-type]
     k = body.radius_of_gyration
     speed = math.sqrt(state.vx**2 + state.vy**2 + (k * state.omega) ** 2)
+    if not speed > 0.0:  # (simulate refuses a start at rest before this)
+        raise ValueError(f"state = {state!r} is at rest: no velocity to vary")
     return REL_STEP * (speed if name != "omega" else speed / k)
 
 
