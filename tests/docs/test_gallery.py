@@ -17,21 +17,27 @@ GALLERY = Path(__file__).resolve().parents[2] / "docs" / "gallery"
 G = 9.81
 
 
-def run(name: str, label: str, tmp_path) -> float:
-    """Run a gallery script in a fresh interpreter; return the number printed after label."""
-    env = dict(os.environ, MPLBACKEND="Agg")
+def story_output(name: str, tmp_path) -> str:
+    """Run a gallery script in a fresh interpreter (in ``tmp_path``, figures off screen);
+    return what it printed, after checking that it ran."""
     proc = subprocess.run(
         [sys.executable, str(GALLERY / name)],
         cwd=tmp_path,
-        env=env,
+        env=dict(os.environ, MPLBACKEND="Agg"),
         capture_output=True,
         text=True,
         timeout=600,
         check=False,
     )
     assert proc.returncode == 0, proc.stderr[-3000:]
-    m = re.search(r"^" + re.escape(label) + r" = ([-+0-9.eE]+)", proc.stdout, re.MULTILINE)
-    assert m, f"{name} printed no '{label} = <number>':\n{proc.stdout}"
+    return proc.stdout
+
+
+def run(name: str, label: str, tmp_path) -> float:
+    """Run a gallery script in a fresh interpreter; return the number printed after label."""
+    out = story_output(name, tmp_path)
+    m = re.search(r"^" + re.escape(label) + r" = ([-+0-9.eE]+)", out, re.MULTILINE)
+    assert m, f"{name} printed no '{label} = <number>':\n{out}"
     assert not os.listdir(tmp_path), "a gallery script left files behind"
     return float(m.group(1))
 

@@ -8,27 +8,16 @@ from __future__ import annotations
 import math
 import os
 import re
-import subprocess
-import sys
 
 import pytest
-from test_gallery import GALLERY
+from test_gallery import story_output
 
 NUM = r"([-+0-9.eE]+)"
 
 
 def test_aiming_story(tmp_path):
-    proc = subprocess.run(
-        [sys.executable, str(GALLERY / "plot_15_aiming.py")],
-        cwd=tmp_path,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=600,
-        check=False,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
-    out = proc.stdout
+    stdout = story_output("plot_15_aiming.py", tmp_path)
+    out = stdout
 
     draws = re.findall(
         r"^draw, spin " + NUM + r" rad/s: release speed = " + NUM + r" m/s \(closed form "

@@ -8,28 +8,17 @@ from __future__ import annotations
 
 import os
 import re
-import subprocess
-import sys
 
 import pytest
-from test_gallery import GALLERY
+from test_gallery import story_output
 
 
 def test_curling_story(tmp_path):
-    proc = subprocess.run(
-        [sys.executable, str(GALLERY / "plot_13_curling_curl.py")],
-        cwd=tmp_path,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=600,
-        check=False,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
+    stdout = story_output("plot_13_curling_curl.py", tmp_path)
 
     def value(label):
-        m = re.search(r"^" + re.escape(label) + r" = ([-+0-9.eE]+)", proc.stdout, re.MULTILINE)
-        assert m, f"no '{label} = <number>' in:\n{proc.stdout}"
+        m = re.search(r"^" + re.escape(label) + r" = ([-+0-9.eE]+)", stdout, re.MULTILINE)
+        assert m, f"no '{label} = <number>' in:\n{stdout}"
         return float(m.group(1))
 
     # the spin turns the shift by a little: |r_p| = h μ to within (ω R / v)² ~ 5e-4

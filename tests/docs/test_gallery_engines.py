@@ -6,33 +6,22 @@ from __future__ import annotations
 
 import os
 import re
-import subprocess
-import sys
 
 import pytest
-from test_gallery import GALLERY
+from test_gallery import story_output
 
 pytest.importorskip("mujoco")
 
 
 def test_mujoco_box_story(tmp_path):
-    proc = subprocess.run(
-        [sys.executable, str(GALLERY / "plot_14_mujoco_box.py")],
-        cwd=tmp_path,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=600,
-        check=False,
-    )
-    assert proc.returncode == 0, proc.stderr[-3000:]
+    stdout = story_output("plot_14_mujoco_box.py", tmp_path)
 
     def errors(name):
         pattern = (
             re.escape(name) + r": distance error = ([-+0-9.eE]+), rotation error = ([-+0-9.eE]+)"
         )
-        m = re.search(pattern, proc.stdout)
-        assert m, f"no errors of {name!r} in:\n{proc.stdout}"
+        m = re.search(pattern, stdout)
+        assert m, f"no errors of {name!r} in:\n{stdout}"
         return float(m.group(1)), float(m.group(2))
 
     dist, rot = errors("MuJoCo + slidespin")

@@ -83,7 +83,8 @@ class UnreachableTarget(ValueError):
             self.position_miss = self.angle_miss = math.inf
 
 
-def _check_target(target) -> tuple[float, ...]:
+def check_target(target) -> tuple[float, ...]:
+    """Validate a target: (x, y) or (x, y, phi), finite numbers (not booleans)."""
     try:
         t = tuple(float(x) for x in target if not isinstance(x, (bool, np.bool_)))
         if len(t) != len(target):
@@ -215,7 +216,7 @@ def aim(
         raise ValueError(f"body = {body!r} is invalid; valid values: a slidespin.Body")
     if not isinstance(friction, FrictionTensor):
         raise ValueError(f"friction = {friction!r} is invalid; valid values: a FrictionTensor")
-    tgt = _check_target(target)
+    tgt = check_target(target)
     names = _check_free(free)
     if start is None:
         start = State()

@@ -12,7 +12,6 @@ reached. What aiming cannot use is refused, never ignored (:data:`UNUSED`): ``[l
 from __future__ import annotations
 
 import json
-import math
 
 # nothing heavy at the top: the parser is built from this module (`slidespin --help`)
 
@@ -56,27 +55,20 @@ def configure(parser) -> None:
     parser.add_argument("--json", action="store_true", help="print the result as JSON")
 
 
-def _floats(text: str, name: str) -> tuple[float, ...]:
-    try:
-        vals = tuple(float(x) for x in text.split(","))
-    except ValueError:
-        vals = ()
-    if len(vals) not in (2, 3) or not all(math.isfinite(x) for x in vals):
-        raise ValueError(
-            f"{name} = {text!r} is invalid; valid values: x,y or x,y,phi (finite numbers, m "
-            "and rad), e.g. 1.0,0.5,2.0"
-        )
-    return vals
-
-
 def run(args) -> int:
     """Aim, print; returns the exit status (1 for an unreachable target)."""
     # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
-    from slidespin.analysis.aim import AIM_FREE, UnreachableTarget, aim
+    from slidespin.analysis.aim import AIM_FREE, UnreachableTarget, aim, check_target
     from slidespin.motion.simulate import simulate
     from slidespin.studies.case import read_case, refuse_unused
 
-    target = _floats(args.target, "--target")
+    try:
+        target = check_target(args.target.split(","))
+    except ValueError:
+        raise ValueError(
+            f"--target = {args.target!r} is invalid; valid values: x,y or x,y,phi (finite "
+            "numbers, m and rad), e.g. 1.0,0.5,2.0"
+        ) from None
     free = tuple(x.strip() for x in args.free.split(",") if x.strip())
     if not free or len(set(free)) != len(free) or not all(n in AIM_FREE for n in free):
         raise ValueError(
