@@ -388,14 +388,18 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
             q_new = q + step * typ
             if np.all(np.abs(step * typ) <= 1e-15 * (np.abs(q) + typ)):
                 break  # no step left that changes the launch: as near as it gets
-            try:
-                r_new, J_new, pose_new = _miss(body, friction, tgt, start, names, q_new, g,
+            try:  # a trial is judged by a plain run; the Jacobian only where it is taken
+                r_new, _, pose_new = _miss(body, friction, tgt, start, names, q_new, g, rtol,
+                                           False)  # fmt: skip
+                accepted = np.linalg.norm(r_new) < miss or (hit(r_new) and not hit(r))
+                if accepted and not hit(r_new):
+                    r_new, J, pose_new = _miss(body, friction, tgt, start, names, q_new, g,
                                                rtol, True)  # fmt: skip
             except (ValueError, RuntimeError):
                 lam *= 4.0
                 continue
-            if np.linalg.norm(r_new) < miss or (hit(r_new) and not hit(r)):
-                q, r, J, pose = q_new, r_new, J_new, pose_new
+            if accepted:
+                q, r, pose = q_new, r_new, pose_new
                 lam = max(lam / 5.0, 1e-12)
                 improved = True
                 break
