@@ -276,8 +276,9 @@ def aim(
     got = f"({pose.x:.10g}, {pose.y:.10g}" + (f", {pose.phi:.10g})" if len(tgt) == 3 else ")")
     raise UnreachableTarget(
         f"target = {wanted} cannot be reached by varying {', '.join(names)} (the other start "
-        f"components fixed): the nearest stop found is {got}, {miss:.3g} m away (the angle's "
-        f"miss weighted by the length unit {ell:.6g} m), from the launch {launch!r}; valid: "
+        f"components fixed): the nearest stop found is {got}, {miss:.3g} m away"
+        + (f" (the angle's miss weighted by the length unit {ell:.6g} m)" if len(tgt) == 3 else "")
+        + f", from the launch {launch!r}; valid: "
         "a target within tol = {:.3g} m of a reachable stop, or more free components".format(tol),
         tgt,
         pose,
