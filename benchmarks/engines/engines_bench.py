@@ -24,7 +24,6 @@ import time
 import numpy as np
 
 import slidespin as ss
-from slidespin.contact._engine import TwistWrench
 from slidespin.engines import _native
 from slidespin.engines.scenes import mujoco_xml
 
@@ -211,44 +210,80 @@ def push_and_slope() -> None:
 
 
 # -- the coupling's overhead per step --------------------------------------------------------
+PLATE = ss.Body(ss.Ellipse(0.09, 0.05), ss.UniformPressure(), mass=0.6)
+OVERHEAD = {  # (body, friction, a long slide: twist vx, vy [m/s], omega [rad/s])
+    "box (footprint)": (BOX, ss.FrictionTensor(0.35, 0.35), (30.0, 0.0, 40.0)),
+    "puck (disk)": (PUCK, ss.FrictionTensor(0.3, 0.3), (30.0, 0.0, 60.0)),
+    "curling stone (ring)": (STONE, ss.FrictionTensor(0.012, 0.012), (3.0, 0.0, 2.0)),
+    "plate (ellipse kernel)": (PLATE, ss.FrictionTensor(0.2, 0.3, f=0.05), (30.0, 5.0, 40.0)),
+}
+
+
+def kernel_us(body, friction, n: int = 20000) -> float:
+    """One evaluation of the patch's wrench in compiled code [µs] (array loop, no Python)."""
+    rng = np.random.default_rng(1)
+    vx, vy, om = rng.normal(size=(3, n))
+    ss.friction_wrench(body, friction, vx[:10], vy[:10], om[:10])
+    t = time.perf_counter()
+    ss.friction_wrench(body, friction, vx, vy, om, phi=0.3)
+    return (time.perf_counter() - t) / n * 1e6
+
+
 def overhead(n: int = 5000) -> None:
+    """The coupling's cost per body and step against plain ``mj_step`` (the same scene with
+    MuJoCo's own friction), split into its fixed part (a body at rest: no wrench evaluation)
+    and the wrench evaluations of a slide (counted by the coupling, each timed in compiled
+    code); and how many steps the compiled steady step did."""
     import mujoco
 
     import slidespin.mujoco as smj
 
-    body, friction = BOX, ss.FrictionTensor(0.35, 0.35)
-
-    def per_step(coupled, twist):
-        m = mujoco.MjModel.from_xml_string(mujoco_xml(body))
+    def per_step(body, friction, dt, coupled, twist):
+        """µs per step, wrench evaluations and compiled steps per step; ``coupled`` False:
+        the same scene, contacts frictionless (condim 1, as coupled) but no callback."""
+        m = mujoco.MjModel.from_xml_string(mujoco_xml(body, timestep=dt))
         d = mujoco.MjData(m)
-        if coupled:
-            smj.attach(m, d, "body", body, friction)
-        for _ in range(200):
-            mujoco.mj_step(m, d)
-        best = math.inf
-        for _ in range(3):
-            smj.set_twist(m, d, "body", *twist)
+        c = smj.attach(m, d, "body", body, friction)
+        saved = mujoco.get_mjcb_passive()
+        if not coupled:
+            mujoco.set_mjcb_passive(None)
+        try:
+            for _ in range(int(0.2 / dt)):
+                mujoco.mj_step(m, d)
+            best, evals, compiled = math.inf, 0.0, 0.0
             for _ in range(3):
-                mujoco.mj_step(m, d)
-            t = time.perf_counter()
-            for _ in range(n // 10):
-                mujoco.mj_step(m, d)
-            best = min(best, (time.perf_counter() - t) / (n // 10))
-        if coupled:
+                smj.set_twist(m, d, "body", *twist)
+                for _ in range(5):
+                    mujoco.mj_step(m, d)
+                e0, c0 = c.friction.evaluations, c.friction.compiled_steps
+                t = time.perf_counter()
+                for _ in range(n // 10):
+                    mujoco.mj_step(m, d)
+                best = min(best, (time.perf_counter() - t) / (n // 10))
+                evals = (c.friction.evaluations - e0) / (n // 10)
+                compiled = (c.friction.compiled_steps - c0) / (n // 10)
+        finally:
+            mujoco.set_mjcb_passive(saved)
             smj.detach(m, d)
-        return best * 1e6
+        return best * 1e6, evals, compiled
 
-    tw = TwistWrench(body, friction)
-    t = time.perf_counter()
-    for _ in range(n):
-        tw(0.1, 5.0, 1.0, 20.0)
-    wrench_us = (time.perf_counter() - t) / n * 1e6
-    print("\nThe coupling's cost per MuJoCo step (best of 3, µs; a box, one body)")
-    for label, twist in (("sliding and spinning", (30.0, 0.0, 40.0)), ("at rest", (0.0, 0.0, 0.0))):
-        plain, coupled = per_step(False, twist), per_step(True, twist)
-        print(f"  {label:22s} plain mj_step {plain:6.1f}   coupled {coupled:6.1f}   "
-              f"overhead {coupled - plain:6.1f} ({(coupled - plain) / wrench_us:.0f} wrench "
-              f"evaluations of {wrench_us:.2f} µs)")  # fmt: skip
+    print("\nThe coupling's cost per MuJoCo step and body (best of 3; µs)")
+    print(f"  {'':24s} {'dt':>5s} {'plain':>6s} {'at rest':>8s} {'sliding':>8s} "
+          f"{'evals':>6s} {'× eval':>7s} {'compiled':>9s}")  # fmt: skip
+    for name, (body, friction, twist) in OVERHEAD.items():
+        k_us = kernel_us(body, friction)
+        for dt in (1e-3, 1e-2):
+            plain, _, _ = per_step(body, friction, dt, False, twist)
+            rest, _, _ = per_step(body, friction, dt, True, (0.0, 0.0, 0.0))
+            slide, evals, compiled = per_step(body, friction, dt, True, twist)
+            print(f"  {name:24s} {dt * 1e3:3.0f}ms {plain:6.1f} {rest - plain:8.1f} "
+                  f"{slide - plain:8.1f} {evals:6.2f} {k_us:6.2f}µ {compiled:8.0%}")  # fmt: skip
+    print(
+        "  (plain: mj_step of the same scene, its contacts frictionless as coupled, no "
+        "callback; at rest, sliding: the coupling's overhead over plain; evals: wrench "
+        "evaluations per sliding step, each costing '× eval' in compiled code; compiled: "
+        "the share of sliding steps the compiled steady step did)"
+    )
 
 
 def main() -> None:

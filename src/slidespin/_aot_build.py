@@ -9,8 +9,9 @@ second implementation): :func:`slidespin.motion._integrator.integrate_fp` for an
 for a footprint, the batch loop of :mod:`slidespin.motion._parallel` run serially (for small
 batches), the ``wrench_world`` entries and ``wrench_array`` loops of the ellipse and footprint
 kernels (one twist, called from Python by the statics, and many), and the loaded
-engine's one entry :func:`slidespin.motion._loaded_core.run_loaded` for each, and the
-sensitivity run :func:`slidespin.motion._sensitivity_core.integrate_sensitivities` for each. The result
+engine's one entry :func:`slidespin.motion._loaded_core.run_loaded` for each, the
+sensitivity run :func:`slidespin.motion._sensitivity_core.integrate_sensitivities` for each,
+and the MuJoCo coupling's steady step :mod:`slidespin.engines._stepcore` for each. The result
 is an ordinary extension module, ``slidespin/_aot_core.*.so`` (it needs neither numba
 nor LLVM at runtime), and beside it ``_aot_core.json``: the numba version, the CPU it was
 compiled for, and the SHA-256 of every slidespin source file imported while compiling.
@@ -39,6 +40,7 @@ from slidespin.contact._kernel_ellipse import wrench_loop as _ellipse_wrench_arr
 from slidespin.contact._kernel_ellipse import wrench_world as _ellipse_wrench_world
 from slidespin.contact._kernel_footprint import wrench_array as _footprint_wrench_array
 from slidespin.contact._kernel_footprint import wrench_world as _footprint_wrench_world
+from slidespin.engines._stepcore import steady_ellipse, steady_footprint
 from slidespin.motion._integrator import integrate_fp
 from slidespin.motion._loaded_core import run_loaded
 from slidespin.motion._parallel import _integrate_many, _stop_direction
@@ -69,6 +71,10 @@ _LOADED_TAIL = (_A1, _F, _A1, _F, _A1, _F, _F, _A1, _F, _F, _F, _I)
 # integrate_sensitivities' result, and its arguments after (pars, fp, geos)
 _SENS = T.Tuple((_A1, _A1, _I, _I, _I, _A2))
 _SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, T.boolean, _I, _A1)
+
+# the MuJoCo coupling's steady step: MuJoCo's arrays, the contacts' geom pairs (a strided
+# int32 view), body, dof, time, step, state, then the kernel's arguments
+_STEADY = (_A1, _A2, _A2, _A2, _A1, _A1, _A2, _A1, T.Array(T.int32, 2, "A"), _I, _I, _F, _F, _A1)
 
 # the batch loop of slidespin.motion._parallel without ``prange`` (pycc compiles no parallel
 # code; a prange in a serial function is a range): the same source, run case after case.
@@ -174,6 +180,16 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
         fp = (fe, fc, geos[0])
         return integrate_sensitivities(
             pars, fp, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
+        )
+
+    @cc.export("steady_ellipse", _I(*_STEADY, _A1))
+    def steady_ellipse_aot(qv, xm, xi, xp, qc, qa, xf, qp, geom, b, a, t, h, s, par):
+        return steady_ellipse(qv, xm, xi, xp, qc, qa, xf, qp, geom, b, a, t, h, s, par)
+
+    @cc.export("steady_footprint", _I(*_STEADY, _A1, _A2, _A2, _A1))
+    def steady_footprint_aot(qv, xm, xi, xp, qc, qa, xf, qp, geom, b, a, t, h, s, par, fe, fc, geo):
+        return steady_footprint(
+            qv, xm, xi, xp, qc, qa, xf, qp, geom, b, a, t, h, s, par, fe, fc, geo
         )
 
     @cc.export("stop_direction", T.Tuple((_A1, _A1))(_A2))

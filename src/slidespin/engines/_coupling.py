@@ -36,7 +36,8 @@ leave ~1e-19 m/s).
 Whether w_req ∈ C is decided from bounds first: the gauge γ of C is at least (d·w)/h(d) for the
 last outward normal d, and at most γ_ref + |w − w_ref|/r_in from the last exact evaluation
 (γ is subadditive; r_in, the radius of a ball inside C, is σ_min(𝔽) × the static ratio × the
-inradius of the isotropic unit set, found once). Only in between is the exact load factor of
+inradius of the isotropic unit set, found once; a plane-frame tensor's C turns with the body,
+which :func:`slidespin.engines._stepcore.gauge_upper` bounds too). Only in between is the exact load factor of
 :mod:`slidespin.contact.statics` computed (an optimisation of a few milliseconds).
 
 May import: :mod:`slidespin.contact` (and below). Works on plain floats; the engines'
@@ -55,17 +56,20 @@ from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.outline import body_outline
 from slidespin.contact.static_set import check_anisotropy, static_support
 from slidespin.contact.statics import _load_factor_nat, _onset_nat
+from slidespin.engines import _stepcore as sc
 
 __all__ = ["SteppedFriction", "check_coupled"]
 
 #: a load jumping by this many times the friction's capacity within a step is an impulse
-JUMP = 5.0
+JUMP = sc.JUMP
 #: a twist below this fraction of one step's change by friction is rest
-_REST = 1e-9
+_REST = sc.REST
 #: fixed-point iterations of the implicit step before the onset solver takes over
-_FIXED_POINT_ITERATIONS = 8
+_FIXED_POINT_ITERATIONS = sc.FIXED_POINT_ITERATIONS
 #: … to this change of the twist's direction (the engine's own errors are far larger)
-_FIXED_POINT_TOL = 1e-8
+_FIXED_POINT_TOL = sc.FIXED_POINT_TOL
+_STATES = {sc.FREE: "free", sc.SLIP: "slip", sc.STICK: "stick"}
+_CODES = {name: code for code, name in _STATES.items()}
 #: safety factor on the inner ball of C (the bound only decides when to compute exactly)
 _INNER_MARGIN = 0.98
 
@@ -127,6 +131,37 @@ def _unit_inradius(tw: TwistWrench) -> float:
     return value
 
 
+class _Held:
+    """An attribute of :class:`SteppedFriction` held in its state array ``s`` (the layout of
+    :mod:`slidespin.engines._stepcore`, which the compiled steady step reads and writes): a
+    float (``n`` 1), or a tuple of ``n`` floats that is None while ``s[flag]`` is 0."""
+
+    def __init__(self, i: int, n: int = 1, flag: int | None = None, kind=float) -> None:
+        self.i, self.n, self.flag, self.kind = i, n, flag, kind
+
+    def __get__(self, obj, cls=None):
+        if obj is None:
+            return self
+        s = obj.s
+        if self.flag is not None and s[self.flag] == 0.0:
+            return None
+        if self.n == 1:
+            return self.kind(s[self.i])
+        return tuple(s[self.i : self.i + self.n].tolist())
+
+    def __set__(self, obj, value) -> None:
+        s = obj.s
+        if value is None:
+            s[self.flag] = 0.0
+            return
+        if self.n == 1:
+            s[self.i] = value
+        else:
+            s[self.i : self.i + self.n] = value
+        if self.flag is not None:
+            s[self.flag] = 1.0
+
+
 class SteppedFriction:
     """The friction of one body for an engine, step by step (MODEL §16).
 
@@ -153,12 +188,69 @@ class SteppedFriction:
         step's acceleration); NaN before any stop.
     exact_checks : int
         How many exact static-set tests the bounds could not spare (a counter).
+    evaluations : int
+        How many times the patch's kinetic wrench was evaluated (a counter).
+    steps, compiled_steps : int
+        How many steps were taken, and how many of them by the compiled steady step
+        (:mod:`slidespin.engines._stepcore`; counters).
+    s : ndarray
+        The state, shared with the compiled steady step (layout in
+        :mod:`slidespin.engines._stepcore`).
     """
+
+    dt = _Held(sc.S_DT)
+    stop_time = _Held(sc.S_STOP)
+    exact_checks = _Held(sc.S_EXACT, kind=int)
+    evaluations = _Held(sc.S_EVALS, kind=int)
+    steps = _Held(sc.S_STEPS, kind=int)
+    compiled_steps = _Held(sc.S_FAST, kind=int)
+    _slipping = _Held(sc.S_SLIPPING, kind=bool)
+    _nu = _Held(sc.S_NU, 3, sc.S_NU_OK)
+    _w = _Held(sc.S_W, 3)
+    _key = _Held(sc.S_KEY, 6, sc.S_KEY_OK)
+    _u = _Held(sc.S_U, 3, sc.S_U_OK)
+    _u_raw = _Held(sc.S_URAW, 3)
+    _known = _Held(sc.S_KNOWN, 3, sc.S_KNOWN_OK)
+
+    @property
+    def state(self) -> str:
+        return _STATES[float(self.s[sc.S_STATE])]
+
+    @state.setter
+    def state(self, value: str) -> None:
+        self.s[sc.S_STATE] = _CODES[value]
+
+    @property
+    def _t(self) -> float | None:
+        t = float(self.s[sc.S_T])
+        return None if math.isnan(t) else t
+
+    @_t.setter
+    def _t(self, value: float | None) -> None:
+        self.s[sc.S_T] = math.nan if value is None else value
+
+    @property
+    def _ref(self) -> tuple | None:
+        """(φ, body-frame wrench, γ) of the last exact gauge, or None."""
+        s = self.s
+        if s[sc.S_REF_OK] == 0.0:
+            return None
+        return float(s[sc.S_REF_PHI]), s[sc.S_REF_B : sc.S_REF_B + 3].copy(), float(s[sc.S_REF_G])
+
+    @_ref.setter
+    def _ref(self, value: tuple | None) -> None:
+        s = self.s
+        if value is None:
+            s[sc.S_REF_OK] = 0.0
+            return
+        s[sc.S_REF_PHI], s[sc.S_REF_B : sc.S_REF_B + 3], s[sc.S_REF_G] = value
+        s[sc.S_REF_OK] = 1.0
 
     def __init__(
         self, body: Body, friction: FrictionTensor, mass: float, inertia: float, dt: float
     ) -> None:
         check_coupled(body, friction)
+        self.s = np.zeros(sc.NSTATE)
         self.body = body
         self.friction = friction
         self.ell = float(body.length_unit)
@@ -195,20 +287,27 @@ class SteppedFriction:
         self.stop_time = math.nan
         self.exact_checks = 0
         self._w_last: tuple | None = None
+        st = self.s
+        st[sc.S_M], st[sc.S_I], st[sc.S_ELL], st[sc.S_K] = self.m, self.inertia, self.ell, self.k
+        st[sc.S_CAP], st[sc.S_RIN], st[sc.S_ROUT] = self.capacity, self.r_in, self.r_out
+        st[sc.S_BODYFRAME] = float(
+            friction.frame == "body" or (friction.fx == friction.fy and friction.f == 0.0)
+        )
         self.reset()
 
     def reset(self) -> None:
         """Forget the previous step (a new contact, a reset engine): the next step's load is
         then the one given to :meth:`step`, or 0."""
-        self._t: float | None = None
-        self._nu: tuple | None = (0.0, 0.0, 0.0)
-        self._w: tuple[float, float, float] = (0.0, 0.0, 0.0)
-        self._key: tuple | None = None
-        self._ref: tuple | None = None  # (phi, b natural, gamma) of the last exact test
+        self._t = None
+        self._nu = (0.0, 0.0, 0.0)
+        self._w = (0.0, 0.0, 0.0)
+        self._key = None
+        self._ref = None  # (phi, b natural, gamma) of the last exact test
         self._d: np.ndarray | None = None  # the last outward normal of C
-        self._u: tuple | None = None  # the last accepted unknown part of the load
-        self._u_raw: tuple | None = None  # … and the last estimate of it
-        self._known: tuple | None = None  # the part of the load the adapter knew
+        self._u = None  # the last accepted unknown part of the load
+        self._u_raw = (0.0, 0.0, 0.0)  # … and the last estimate of it
+        self._known = None  # the part of the load the adapter knew
+        self.s[sc.S_NH] = 0.0  # no slip steps to predict from
 
     def airborne(self, t: float) -> None:
         """Record a step at time ``t`` [s] without load on the support (no contact, or a
@@ -218,6 +317,7 @@ class SteppedFriction:
         self._slipping = False
         self._t, self._nu, self._w, self._key = t, None, (0.0, 0.0, 0.0), None
         self._known = None
+        self.s[sc.S_NH] = 0.0
 
     # -- the wrench of the patch --------------------------------------------------------
     def _gauge(self, b: np.ndarray, phi: float) -> float:
@@ -225,17 +325,11 @@ class SteppedFriction:
         nb = float(np.linalg.norm(b))
         if nb == 0.0:
             return 0.0
-        body_frame = self.friction.frame == "body" or (
-            self.friction.fx == self.friction.fy and self.friction.f == 0.0
-        )
         c, s = math.cos(phi), math.sin(phi)
         bb = np.array([c * b[0] + s * b[1], -s * b[0] + c * b[1], b[2]])  # body frame
-        if self._ref is not None:
-            phi_r, b_ref, g_ref = self._ref
-            if body_frame or abs(phi - phi_r) <= 1e-12:
-                upper = g_ref + float(np.linalg.norm(bb - b_ref)) / self.r_in
-                if upper <= 1.0:
-                    return upper
+        upper = sc.gauge_upper.py_func(self.s, float(b[0]), float(b[1]), float(b[2]), phi)
+        if upper <= 1.0:
+            return upper
         sup = static_support(self.tw, self.friction, phi)
         if self._d is not None:
             h, _ = sup(self._d)
@@ -332,9 +426,13 @@ class SteppedFriction:
             self._u = self._u_raw = (0.0, 0.0, 0.0)
         self._slipping = self.state == "slip" and consecutive
         self._t_now = t
+        self._midpoint = False
         w = self._decide(n0, n1, n2, phi, normal, f0, f1, f2, h, launch)
+        # the friction of a slip at its implicit midpoint starts the next step's iteration
+        sc.push_history.py_func(self.s, w[0], w[1], w[2], normal, self.ell, self._midpoint)
         self._t, self._nu, self._w, self._key = t, (n0, n1, n2), w, key
         self._known = kn
+        self.s[sc.S_STEPS] += 1.0
         return w
 
     def _stop_time(self, n0, n1, n2, f0, f1, f2, h) -> float:
@@ -357,6 +455,7 @@ class SteppedFriction:
         tw, c = self.tw, normal / self.m
 
         def acc(u):
+            self.s[sc.S_EVALS] += 1.0
             fx, fy, mo = tw(phi, u[0] / ell, u[1] / ell, u[2] / k)
             return np.array([c * fx, c * fy, c * mo * ell / k])
 
@@ -372,7 +471,14 @@ class SteppedFriction:
         x0, x1, x2 = x
         a0, a1, a2 = a
         g0, g1, g2 = x0, x1, x2
-        if self._slipping:  # start from the friction of the step before: two calls suffice
+        if self._slipping and self.s[sc.S_NH] > 0.0:
+            # start from the friction of the last slip steps, extrapolated (one evaluation
+            # then usually meets the tolerance; the compiled steady step does the same)
+            pf = sc.predicted_friction.py_func
+            g0 += tau * (a0 + c * pf(self.s, 0))
+            g1 += tau * (a1 + c * pf(self.s, 1))
+            g2 += tau * (a2 + c * pf(self.s, 2) * ell / k)
+        elif self._slipping:  # start from the friction of the step before
             w0, w1, w2 = self._w
             g0 += tau * (a0 + w0 / self.m)
             g1 += tau * (a1 + w1 / self.m)
@@ -383,6 +489,7 @@ class SteppedFriction:
             ng = math.sqrt(g0 * g0 + g1 * g1 + g2 * g2)
         u0, u1, u2 = g0 / ng, g1 / ng, g2 / ng
         for _ in range(_FIXED_POINT_ITERATIONS):  # a contraction while |τ A| ≪ |x|
+            self.s[sc.S_EVALS] += 1.0
             fx, fy, mo = tw(phi, u0 / ell, u1 / ell, u2 / k)
             z0 = x0 + tau * (a0 + c * fx)
             z1 = x1 + tau * (a1 + c * fy)
@@ -429,6 +536,7 @@ class SteppedFriction:
         if launch:
             # the leapfrog start: the twist is the launch's, at the positions' time; half
             # the step's impulse of every load
+            self.s[sc.S_EVALS] += 1.0
             fx, fy, mo = self.tw(float(phi), n0 / ell, n1 / ell, n2)
             c = 0.5 * normal
             return (c * fx - 0.5 * f0, c * fy - 0.5 * f1, c * mo * ell - 0.5 * f2)
@@ -437,6 +545,7 @@ class SteppedFriction:
         # implicit midpoint: second order, and stable where the twist nears zero); if the
         # twist would stop by then and cannot stick at the end, the implicit Euler step
         z = self._implicit(x, a, 0.5 * h, phi, normal) if moving else None
+        self._midpoint = z is not None
         if z is None:
             z = self._implicit(x, a, h, phi, normal) if moving else None
         if z is None:  # at rest, breaking away: the onset direction (MODEL §11)
@@ -450,5 +559,6 @@ class SteppedFriction:
             z = got[0]
         if self._w_last is not None:
             return self._w_last
+        self.s[sc.S_EVALS] += 1.0
         fx, fy, mo = self.tw(float(phi), z[0] / ell, z[1] / ell, z[2] / k)
         return (normal * fx, normal * fy, normal * mo * ell)

@@ -25,6 +25,17 @@ against each MuJoCo release; the passive callback runs inside ``mj_step`` (and `
 after the collision and before the constraint solve, which is when the wrench is known, and
 costs one Python call per step.
 
+**Cost.** A *steady* step (the same contact as in the step before, a normal force changing by
+less than 1 %, a slip whose implicit midpoint converges, or a rest that the cheap bound on the
+static set confirms: nearly every step of a slide or a rest) is done whole by one compiled
+call (:mod:`slidespin.engines._stepcore`, in the ahead-of-time core), which reads MuJoCo's
+arrays in place and adds the wrench to ``qfrc_passive`` itself, usually with one wrench
+evaluation: 3–4 µs per body and step in all, sliding or at rest, measured
+(``benchmarks/engines/engines_bench.py``). Any other step (a first contact, a launch or a
+kick, a touchdown, a stop within the step, a breakaway, a gauge the bounds cannot decide, a
+moving support) is done by the Python path below, from the same state (the tests run every
+scene both ways and compare them step by step).
+
 **The normal force** N is the engine's: the normal component of the constraint force on the
 body in the previous step (``data.qfrc_constraint`` of its free joint, along the support's
 normal; a push with a component along the normal adds to it, as it loads the contact). At the
@@ -57,9 +68,11 @@ from typing import Any
 
 import numpy as np
 
+from slidespin import _aot
 from slidespin import _validate as v
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
+from slidespin.engines import _stepcore as sc
 from slidespin.engines._coupling import SteppedFriction, check_coupled
 from slidespin.studies.case import Case, load_case
 
@@ -75,7 +88,7 @@ __all__ = ["Coupling", "attach", "attached", "detach", "set_twist"]
 #: the engine's normal force is steady when it changes by less than this from one step to the
 #: next: the previous step's is then used; else (a touchdown, a bounce) this step's own, from a
 #: frictionless ``mj_forward`` on a copy of the data
-_STEADY = 1e-2
+_STEADY = sc.STEADY
 _RK4 = int(mujoco.mjtIntegrator.mjINT_RK4)
 
 #: data address → (weak reference to the data, weak reference to its model, {body id →
@@ -146,6 +159,49 @@ class Coupling:
         RuntimeWarning said so: an exception cannot cross MuJoCo's C stack); None.
     """
 
+    @property
+    def wrench(self) -> tuple[float, float, float]:
+        return tuple(self.s[sc.C_WRENCH : sc.C_WRENCH + 3].tolist())  # type: ignore[return-value]
+
+    @wrench.setter
+    def wrench(self, value) -> None:
+        self.s[sc.C_WRENCH : sc.C_WRENCH + 3] = value
+
+    @property
+    def normal_force(self) -> float:
+        return float(self.s[sc.C_NORMAL])
+
+    @normal_force.setter
+    def normal_force(self, value: float) -> None:
+        self.s[sc.C_NORMAL] = value
+
+    @property
+    def _last(self) -> tuple | None:
+        """(time, N used, the engine's N of the step before it, read then) of the last step
+        in contact, or None."""
+        s = self.s
+        if s[sc.C_LAST_OK] == 0.0:
+            return None
+        return float(s[sc.C_LAST_T]), float(s[sc.C_LAST_N]), float(s[sc.C_LAST_LAG])
+
+    @_last.setter
+    def _last(self, value: tuple | None) -> None:
+        s = self.s
+        if value is None:
+            s[sc.C_LAST_OK] = 0.0
+            return
+        s[sc.C_LAST_T], s[sc.C_LAST_N], s[sc.C_LAST_LAG] = value
+        s[sc.C_LAST_OK] = 1.0
+
+    @property
+    def _debt(self) -> float:
+        """Normal force taken ahead of the engine's (a first step's weight)."""
+        return float(self.s[sc.C_DEBT])
+
+    @_debt.setter
+    def _debt(self, value: float) -> None:
+        self.s[sc.C_DEBT] = value
+
     def __init__(self, model, data, body_id: int, body: Body, friction: FrictionTensor, support):
         self.body_name = model.body(body_id).name
         self.body_id = body_id
@@ -163,11 +219,10 @@ class Coupling:
         zb = data.xmat[body_id].reshape(3, 3)[:, 2]
         izz = float(zb @ inertia_world @ zb)
         self.friction = SteppedFriction(body, friction, mass, izz, float(model.opt.timestep))
-        self.wrench: tuple[float, float, float] = (0.0, 0.0, 0.0)
+        self.s = self.friction.s  # the state, shared with the compiled steady step
+        self.wrench = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
-        # (time, N used, the engine's N of the step before it, read then) of the last step
-        # in contact
-        self._last: tuple | None = None
+        self._last = None
         self._bset = {int(g) for g in self.geoms}
         self._sset = {int(g) for g in self.support}
         self._frames: dict[int, tuple] = {}
@@ -177,7 +232,19 @@ class Coupling:
         self.error: Exception | None = None
         self._warned_rk4 = False
         self._weight = tuple((mass * model.opt.gravity).tolist())
-        self._debt = 0.0  # normal force taken ahead of the engine's (a first step's weight)
+        self.s[sc.C_WEIGHT : sc.C_WEIGHT + 3] = self._weight
+        self._debt = 0.0
+        # the compiled steady step (slidespin.engines._stepcore) and its arguments: MuJoCo's
+        # arrays of this data (views of its buffers, which do not move), the kernel's
+        tw = self.friction.tw
+        self._arrays = (
+            data.qvel, data.xmat, data.xipos, data.xpos, data.qfrc_constraint,
+            data.qfrc_applied, data.xfrc_applied, data.qfrc_passive,
+        )  # fmt: skip
+        self._kernel_args = (tw.par, tw.edges, tw.circles, tw.geo) if tw.footprint else (tw.par,)
+        self._steady = steady_kernel(tw.footprint)
+        #: whether steady steps go to the compiled step (the tests compare both paths)
+        self.compiled = True
 
     def _frame(self, m, d, i: int, sg: int, sign: float):
         """(n, e1, e2, point on the plane) of the support at contact ``i`` (support geom
@@ -209,9 +276,27 @@ class Coupling:
     def _apply(self, m, d) -> None:
         if d.ncon == 0:
             return self._free(d)
+        pairs = d.contact.geom
+        opt = m.opt
+        if (  # a steady step: compiled, from MuJoCo's arrays to qfrc_passive
+            self.compiled
+            and opt.integrator != _RK4
+            and self._steady(
+                *self._arrays,
+                pairs,
+                self.body_id,
+                self.dof,
+                d.time,
+                opt.timestep,
+                self.s,
+                *self._kernel_args,
+            )  # fmt: skip
+            == sc.DONE
+        ):
+            return None
         bset, sset = self._bset, self._sset
         found = -1
-        for i, (g1, g2) in enumerate(d.contact.geom.tolist()):
+        for i, (g1, g2) in enumerate(pairs.tolist()):
             if g1 in sset and g2 in bset:
                 found, sg, sign = i, g1, 1.0
                 break
@@ -220,7 +305,18 @@ class Coupling:
                 break
         if found < 0:
             return self._free(d)
-        (n0, n1, n2), (a0, a1, a2), (c0, c1, c2), pc = self._frame(m, d, found, sg, sign)
+        frame = self._frame(m, d, found, sg, sign)
+        (n0, n1, n2), (a0, a1, a2), (c0, c1, c2), pc = frame
+        # the contact found, for the compiled steady step of the next step: its geom pair,
+        # and its support's frame if the support is static
+        st = self.s
+        st[sc.C_CI] = found
+        st[sc.C_G1], st[sc.C_G2] = pairs[found]
+        st[sc.C_FRAME_OK] = 0.0
+        if sg in self._frames and not self._support_body(m, sg):
+            st[sc.C_N : sc.C_N + 3], st[sc.C_E1 : sc.C_E1 + 3] = frame[0], frame[1]
+            st[sc.C_E2 : sc.C_E2 + 3], st[sc.C_PC : sc.C_PC + 3] = frame[2], frame[3]
+            st[sc.C_FRAME_OK] = 1.0
         b, a = self.body_id, self.dof
         gx, gy, gz = d.xipos[b].tolist()
         ox, oy, oz = d.xpos[b].tolist()
@@ -361,6 +457,15 @@ class Coupling:
         fr = self.friction
         load = (fr.m * float(acc @ e1), fr.m * float(acc @ e2), fr.inertia * float(alpha @ n))
         return normal, load
+
+
+def steady_kernel(footprint: bool):
+    """The compiled steady step for an ellipse or a footprint: the ahead-of-time compiled
+    core's entry when the install built it (:mod:`slidespin._aot`), else the JIT's (compiled
+    on the first steady step, then cached)."""
+    name = "steady_footprint" if footprint else "steady_ellipse"
+    aot = getattr(_aot.core(), name, None)
+    return aot if aot is not None else getattr(sc, name)
 
 
 def _body_id(model, body_name) -> int:
