@@ -103,11 +103,13 @@ def test_a_target_at_the_start_is_the_start_at_rest():
     assert ss.aim(DISK, ISO, (0.3, -0.2, 0.5), start=start) == start
 
 
-def test_unsupported_bodies_are_refused_not_unreachable():
+def test_a_tall_body_is_aimed_by_differences():
+    """A tall body's sensitivities are not built (MODEL §14): aim's Jacobian is then by
+    differences. In translation it stops like a thin body: v = √(2 μ g d)."""
     tall = ss.Body(ss.Rectangle(0.2, 0.1), ss.UniformPressure(), mass=1.0, height=0.1)
-    with pytest.raises(ValueError, match="height") as info:
-        ss.aim(tall, ISO, (0.5, 0.0))
-    assert not isinstance(info.value, ss.UnreachableTarget)
+    got = ss.aim(tall, ISO, (0.5, 0.0), free=("vx",), g=9.81)
+    mu = ISO.fx
+    assert got.vx == pytest.approx(math.sqrt(2 * mu * 9.81 * 0.5), rel=1e-9)
 
 
 def test_far_target_is_reached_to_the_resolution_of_the_simulation():

@@ -49,3 +49,27 @@ def test_aim_bad_target(target):
     r = _run(CASE, "--target", target)
     assert r.returncode != 0
     assert "--target" in r.stderr
+
+
+def test_aim_a_case_on_a_slope(tmp_path):
+    """A case's [incline] is aimed on (the Jacobian by differences), and the stop printed is
+    where ``simulate`` has the body at rest."""
+    case_file = tmp_path / "slope.toml"
+    case_file.write_text(CASE.read_text() + "\n[incline]\nangle_deg = 8.0\ndownhill_deg = 30.0\n")
+    r = _run(case_file, "--target", "0.4,0.2,1.0", "--json")
+    assert r.returncode == 0, r.stderr
+    doc = json.loads(r.stdout)
+    case = ss.load_case(case_file)
+    lau = doc["launch"]
+    start = ss.State(lau["x"], lau["y"], lau["phi"], lau["vx"], lau["vy"], lau["omega"])
+    tr = ss.simulate(case.body, case.friction, start, case.g, case.rtol, incline=case.incline)
+    assert tr.ending == "stopped_stuck"
+    assert abs(tr.x[-1] - 0.4) < 1e-9 and abs(tr.y[-1] - 0.2) < 1e-9
+    assert abs(tr.phi[-1] - 1.0) < 1e-9
+    assert doc["stop"]["t_stop"] == pytest.approx(tr.t[-1], rel=1e-12)
+
+
+def test_aim_refuses_a_pushed_case():
+    r = _run(ROOT / "examples" / "finger_box.toml", "--target", "0.3,0.1")
+    assert r.returncode != 0
+    assert "pusher" in r.stderr

@@ -1,12 +1,17 @@
 """Aiming: the launch whose motion stops at a target pose (MODEL §15).
 
-:func:`aim` finds the start velocities (any of vx, vy, ω, the others fixed) whose free motion
+:func:`aim` finds the start velocities (any of vx, vy, ω, the others fixed) whose motion
 stops with G at the target (x, y) and, if given, the body at the target angle φ, by a
-Levenberg–Marquardt iteration on the stop's exact sensitivities
-(:func:`slidespin.stop_sensitivities`: one sensitivity run per iteration gives the miss and
-its Jacobian). The miss is measured with :func:`slidespin.simulate` itself, at the same
-tolerance, so the launch returned stops where ``simulate`` says it does. When no launch
-reaches the target, :class:`UnreachableTarget` says so, with the nearest stop pose found.
+Levenberg–Marquardt iteration. The miss is measured with :func:`slidespin.simulate` itself,
+at the same tolerance, so the launch returned stops where ``simulate`` says it does. Its
+Jacobian: for free motion of a thin body under a constant law, the stop's exact
+sensitivities (:func:`slidespin.stop_sensitivities`: one sensitivity run per iteration);
+under loads, springs or on a slope (MODEL §11), and for tall bodies and speed laws, whose
+sensitivities are not built, central differences of whole simulations (two runs per free
+component and iteration; the Jacobian only steers the iteration, the miss is exact). With a
+load the stop is where the body first sticks (the run ``simulate`` makes without ``t_end``).
+When no launch reaches the target, :class:`UnreachableTarget` says so, with the nearest stop
+pose found.
 
 The target angle is the body's total angle at the stop, as :func:`slidespin.simulate`
 reports it (not reduced modulo 2π: a stone that turns one and a quarter times stops at
@@ -27,7 +32,10 @@ import numpy as np
 from slidespin import _validate as v
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
+from slidespin.contact.incline import Incline
 from slidespin.contact.speed_laws import law_is_constant
+from slidespin.motion.loaded_trajectory import LoadedTrajectory
+from slidespin.motion.loads import Load
 from slidespin.motion.simulate import simulate
 from slidespin.motion.state import State
 
@@ -45,6 +53,10 @@ MAX_TRIES = 12
 #: the smallest miss asked for, relative to the distances involved (round-off of the
 #: positions and the integration's own error set a floor far from the origin)
 REL_FLOOR = 1e-12
+#: relative step of the central differences that give the Jacobian where the sensitivities
+#: are not built (of the free component, or of its typical size): the simulations' own error
+#: (rtol) over the step stays far below the Jacobian accuracy the iteration needs
+DIFF_STEP = 1e-5
 #: a miss below NOISE · rtol · distance is as near as the simulated stop is resolved (its
 #: error grows with the distance slid): accepted, with a warning, when no closer one is found
 NOISE = 10.0
@@ -144,15 +156,19 @@ def aim(
     rtol: float = 1e-10,
     tol: float = TOL,
     max_iter: int = MAX_ITER,
+    *,
+    load=None,
+    incline: Incline | None = None,
+    t_end: float | None = None,
 ) -> State:
-    """The start whose free motion stops at ``target`` (MODEL §15).
+    """The start whose motion stops at ``target`` (MODEL §15).
 
     Parameters
     ----------
     body : Body
-        Any body :func:`slidespin.simulate` runs free (a thin body).
+        Any body :func:`slidespin.simulate` runs to a stop.
     friction : FrictionTensor
-        A constant friction law.
+        Its friction (any law ``simulate`` runs).
     target : (x, y) or (x, y, phi)
         Where G must stop [m] and, if given, the body's total angle there [rad] (as
         ``simulate`` reports it: not reduced modulo 2π).
@@ -174,6 +190,16 @@ def aim(
         the length unit), below which round-off of the positions sets the floor.
     max_iter : int, default 60
         Iterations per first guess.
+    load : Load, Spring, list of them, or None
+        Applied loads during the motion (as in :func:`slidespin.simulate`); the stop is where
+        the body first sticks. Loads static friction cannot hold (the body need never stop)
+        are refused.
+    incline : Incline or None
+        The plane's tilt (as in :func:`slidespin.simulate`), one static friction can hold.
+    t_end : float or None
+        With a load or tilt varying in time (which ``simulate`` runs to a given end): the
+        time [s] at which the body must be at rest at the target; None: where it first
+        sticks.
 
     Returns
     -------
@@ -198,10 +224,13 @@ def aim(
 
     Levenberg–Marquardt on the miss r(q) = (x_stop − x, y_stop − y, ℓ(φ_stop − φ)) over the
     free velocities q, with r from :func:`slidespin.simulate` and its Jacobian from the
-    stop's sensitivities (:mod:`slidespin.motion.sensitivity`). First guesses: the free
-    velocities of ``start`` if not all zero, then launches along the line to the target at
-    the speed that stops there in pure translation (v² = 2 μ g d), with the spin that turns
-    the body by Δφ over the same time (ω = Δφ v/d), scaled by 1, 0.7 and 1.4.
+    stop's sensitivities (:mod:`slidespin.motion.sensitivity`) or, where those are not built
+    (loads, slopes, tall bodies, speed laws), central differences of whole simulations.
+    First guesses: the free velocities of ``start`` if not all zero, then launches along the
+    line to the target at the speed that stops there in pure translation (v² = 2 a d, with
+    a = μ g cos α less the slope's and a constant load's pull along the line, when that is
+    positive), with the spin that turns the body by Δφ over the same time (ω = Δφ v/d),
+    scaled by 1, 0.7 and 1.4.
 
     Examples
     --------
@@ -225,12 +254,21 @@ def aim(
     tol = v.in_range("tol", tol, 1e-14, 1.0)
     g = v.bounded("g", g, *v.GRAVITY, "m/s^2")
     rtol = v.in_range("rtol", rtol, 0.0, 1e-3, lo_open=True)
-    if body.height > 0.0 or not law_is_constant(friction.speed_law):
+    if incline is not None and not isinstance(incline, Incline):
         raise ValueError(
-            f"aim works for a thin body under a constant friction law (the stop's sensitivities "
-            f"are built for those, MODEL §15); here body.height = {body.height!r} m, "
-            f"friction.speed_law = {friction.speed_law!r}; valid: height 0 and speed_law None"
+            f"incline = {incline!r} is invalid; valid values: a slidespin.Incline or None"
         )
+    # the stop's exact sensitivities where they are built; else central differences
+    exact = (
+        load is None and incline is None and body.height == 0.0
+        and law_is_constant(friction.speed_law)
+    )  # fmt: skip
+    if t_end is not None and load is None and incline is None:
+        raise ValueError(
+            f"t_end = {t_end!r} is invalid without a load or an incline; valid: None (free "
+            "motion runs to its stop)"
+        )
+    run = _Runs(body, friction, g, rtol, load, incline, t_end, exact)
     if isinstance(max_iter, bool) or not isinstance(max_iter, int) or not 1 <= max_iter <= 1000:
         raise ValueError(f"max_iter = {max_iter!r} is invalid; valid range: integer in [1, 1000]")
     if "direction" in names and "speed" not in names and start.vx == start.vy == 0.0:
@@ -244,13 +282,22 @@ def aim(
     tol = max(tol, REL_FLOOR * far, REL_FLOOR * turn * ell)
     zero = np.array([0.0 if n != "direction" else _components(start, names)[i]
                      for i, n in enumerate(names)])  # fmt: skip
-    r, _, _ = _miss(body, friction, tgt, start, names, zero, g, rtol, False)
+    try:  # bad input (a load, a slope, a t_end) is refused here, before any aiming
+        r, _, _ = _miss(run, tgt, start, names, zero, False)
+    except _NoStop:  # the free components at zero do not end at rest: aim on
+        r = np.full(len(tgt), np.inf)
+    except ValueError as exc:
+        if "need never stop" not in str(exc):
+            raise
+        raise ValueError(
+            f"load = {load!r}, incline = {incline!r} are invalid for aim: the body need never "
+            f"stop ({exc}); valid: loads and slopes that static friction can hold"
+        ) from None
     if _hit(r, ell, tol):  # the target is where the free components at zero stop
         return _launch(start, names, zero)
     best: tuple[float, State, State] | None = None
-    for guess in _guesses(body, friction, tgt, start, names, g):
-        q, miss, hit, pose = _solve(body, friction, tgt, start, names, guess, g, rtol, tol,
-                                    max_iter)  # fmt: skip
+    for guess in _guesses(run, tgt, start, names):
+        q, miss, hit, pose = _solve(run, tgt, start, names, guess, tol, max_iter)
         launch = _launch(start, names, q)
         if hit:
             return launch
@@ -287,8 +334,50 @@ def aim(
     )
 
 
-def _guesses(body, friction, tgt, start, names, g):
+class _NoStop(ValueError):
+    """A launch whose run does not end at rest (it tips, or runs out of steps or phases)."""
+
+
+class _Runs:
+    """The simulations aim makes: the problem's fixed data, and how the Jacobian is had."""
+
+    def __init__(self, body, friction, g, rtol, load, incline, t_end, exact) -> None:
+        self.body, self.friction, self.g, self.rtol = body, friction, g, rtol
+        self.load, self.incline, self.t_end, self.exact = load, incline, t_end, exact
+
+    def stop(self, launch: State, sensitivities=None):
+        """(stop pose, sensitivities or None) of ``launch``; ValueError if it does not stop."""
+        if self.load is None and self.incline is None:
+            tr = simulate(self.body, self.friction, launch, self.g, self.rtol,
+                          sensitivities=sensitivities)  # fmt: skip
+        else:
+            tr = simulate(self.body, self.friction, launch, self.g, self.rtol, load=self.load,
+                          incline=self.incline, t_end=self.t_end)  # fmt: skip
+        if isinstance(tr, LoadedTrajectory):  # loads, slopes, a tall body
+            if tr.status != "ok" or tr.ending not in ("stopped_stuck", "at_rest_throughout"):
+                raise _NoStop(f"the launch {launch!r} does not stop: {tr.ending}, {tr.status}")
+            return State(x=float(tr.x[-1]), y=float(tr.y[-1]), phi=float(tr.phi[-1])), None
+        if tr.status not in ("stopped", "at_rest"):
+            raise _NoStop(f"the launch {launch!r} does not stop: {tr.status}")
+        return tr.stop_state, tr.sensitivities
+
+    def pull(self, start: State) -> tuple[float, float, float]:
+        """(a_x, a_y, cos α): the acceleration [m/s²] of the slope's and a constant load's
+        pull at the start, and the normal load's factor (for the first guesses)."""
+        ax = ay = 0.0
+        cos_a = 1.0
+        if self.incline is not None and self.incline.is_constant:
+            gx, gy = self.incline.gravity_force(1.0, self.g)
+            ax, ay, cos_a = gx, gy, self.incline.normal_factor
+        if isinstance(self.load, Load) and self.load.is_constant:
+            fx, fy, _ = self.load.wrench(0.0, phi=start.phi, mass_centre=(start.x, start.y))
+            ax, ay = ax + fx / self.body.mass, ay + fy / self.body.mass
+        return ax, ay, cos_a
+
+
+def _guesses(run, tgt, start, names):
     """First guesses of the free velocities (module docstring)."""
+    body, friction, g = run.body, run.friction, run.g
     own = _components(start, names)
     if np.any([x != 0.0 for x, n in zip(own, names) if n != "direction"]):
         yield own
@@ -299,7 +388,9 @@ def _guesses(body, friction, tgt, start, names, g):
     if d > 0.0:
         ex, ey = dx / d, dy / d
         mu = kin.fx * ex * ex + kin.fy * ey * ey
-        speed = math.sqrt(2.0 * mu * g * d)
+        ax, ay, cos_a = run.pull(start)
+        decel = mu * g * cos_a - (ax * ex + ay * ey)
+        speed = math.sqrt(2.0 * (decel if decel > 0.0 else mu * g) * d)
         omega = dphi * speed / d
         vel = {"vx": speed * ex, "vy": speed * ey, "omega": omega}
     else:  # a turn on the spot: a spinning disk of radius ℓ, M = (2/3) μ m g ℓ
@@ -314,20 +405,33 @@ def _guesses(body, friction, tgt, start, names, g):
         yield np.array([x if n == "direction" else x * f for x, n in zip(base, names)])
 
 
-def _miss(body, friction, tgt, start, names, q, g, rtol, jac):
-    """(miss vector, its Jacobian or None, stop pose) of the launch with free velocities q."""
+def _miss(run, tgt, start, names, q, jac, typ=None):
+    """(miss vector, its Jacobian or None, stop pose) of the launch with free velocities q
+    (the Jacobian by central differences of steps DIFF_STEP × ``typ`` where the
+    sensitivities are not built)."""
     launch = _launch(start, names, q)
     polar = any(n in _POLAR for n in names)
     wanted = tuple(n for n in names if n not in _POLAR) + (("vx", "vy") if polar else ())
     with warnings.catch_warnings():  # about β*'s derivatives, which aiming does not use
         warnings.simplefilter("ignore", RuntimeWarning)
-        tr = simulate(body, friction, launch, g, rtol, sensitivities=wanted if jac else None)
-    s = tr.stop_state
-    ell = body.length_unit
+        s, sens = run.stop(launch, wanted if jac and run.exact else None)
+    ell = run.body.length_unit
     r = [s.x - tgt[0], s.y - tgt[1]] + ([(s.phi - tgt[2]) * ell] if len(tgt) == 3 else [])
     J = None
-    if jac:
-        d = tr.sensitivities.stop  # type: ignore[union-attr]
+    if jac and not run.exact:
+        typ = np.ones(len(names)) if typ is None else typ
+        cols = []
+        for i in range(len(names)):
+            h = DIFF_STEP * max(abs(float(q[i])), float(typ[i]))
+            qp, qm = np.array(q, dtype=float), np.array(q, dtype=float)
+            qp[i] += h
+            qm[i] -= h
+            rp, _, _ = _miss(run, tgt, start, names, qp, False)
+            rm, _, _ = _miss(run, tgt, start, names, qm, False)
+            cols.append((rp - rm) / (2.0 * h))
+        J = np.array(cols).T
+    elif jac:
+        d = sens.stop  # type: ignore[union-attr]
         # the polar values _launch used (a negative speed is a launch the other way)
         vals = dict(zip(names, (float(x) for x in q)))
         speed = vals.get("speed", math.hypot(start.vx, start.vy))
@@ -353,9 +457,10 @@ def _hit(r, ell: float, tol: float) -> bool:
     return max(abs(r[0]), abs(r[1]), abs(r[2]) / ell if r.size == 3 else 0.0) <= tol
 
 
-def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
+def _solve(run, tgt, start, names, q0, tol, max_iter):
     """Levenberg–Marquardt from ``q0``; returns (q, miss, hit, stop pose) of the best
     point (``hit``: within ``tol`` in x and y [m] and φ [rad])."""
+    body = run.body
     k = body.radius_of_gyration
     q = np.asarray(q0, dtype=float)
     scale = max(float(np.max(np.abs([x * (k if n == "omega" else 1.0)
@@ -365,7 +470,7 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
                     for n in names])  # fmt: skip
     ell = body.length_unit
     try:
-        r, J, pose = _miss(body, friction, tgt, start, names, q, g, rtol, True)
+        r, J, pose = _miss(run, tgt, start, names, q, True, typ)
     except (ValueError, RuntimeError):
         return q, math.inf, False, None
     lam = 1e-3
@@ -390,12 +495,10 @@ def _solve(body, friction, tgt, start, names, q0, g, rtol, tol, max_iter):
             if np.all(np.abs(step * typ) <= 1e-15 * (np.abs(q) + typ)):
                 break  # no step left that changes the launch: as near as it gets
             try:  # a trial is judged by a plain run; the Jacobian only where it is taken
-                r_new, _, pose_new = _miss(body, friction, tgt, start, names, q_new, g, rtol,
-                                           False)  # fmt: skip
+                r_new, _, pose_new = _miss(run, tgt, start, names, q_new, False)
                 accepted = np.linalg.norm(r_new) < miss or (hit(r_new) and not hit(r))
                 if accepted and not hit(r_new):
-                    r_new, J, pose_new = _miss(body, friction, tgt, start, names, q_new, g,
-                                               rtol, True)  # fmt: skip
+                    r_new, J, pose_new = _miss(run, tgt, start, names, q_new, True, typ)
             except (ValueError, RuntimeError):
                 lam *= 4.0
                 continue

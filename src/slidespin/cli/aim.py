@@ -1,12 +1,14 @@
 """``slidespin aim CASE.toml --target x,y[,phi]``: the launch that stops at a target (MODEL §15).
 
-Reads the body, friction tensor, g and tolerance of a case file, and its ``[initial]`` table
-as the launch position and angle, the velocities that stay fixed and (if not zero) the
-first guess of the free ones; prints the launch found by :func:`slidespin.aim` (``--json``:
-as JSON), or exits with status 1 and the nearest reachable stop when the target cannot be
-reached. What aiming cannot use is refused, never ignored (:data:`UNUSED`): ``[load]``,
-``[spring]``, ``[incline]``, ``[pusher]``, ``[solver] t_end``. Plugin of
-:mod:`slidespin.cli.main` (``configure(parser)``, ``run(args)``).
+Reads the body, friction tensor, g and tolerance of a case file, its ``[load]``,
+``[spring]``, ``[incline]`` and ``[solver] t_end`` (the stop is then where the body first
+sticks, or where it rests at ``t_end``), and its ``[initial]`` table as the launch position
+and angle, the velocities that stay fixed and (if not zero) the first guess of the free ones;
+prints the launch found by :func:`slidespin.aim` (``--json``: as JSON), or exits with status
+1 and the nearest reachable stop when the target cannot be reached. What aiming cannot use
+is refused, never ignored (:data:`UNUSED`): ``[pusher]`` (a pushed body's motion is the
+pusher's, not a launch's). Plugin of :mod:`slidespin.cli.main` (``configure(parser)``,
+``run(args)``).
 """
 
 from __future__ import annotations
@@ -17,14 +19,9 @@ import json
 
 __all__ = ["configure", "run", "UNUSED"]
 
-_FREE_ONLY = "aiming solves for a free motion's launch; slidespin simulate runs this case"
 #: what a case file may give that ``slidespin aim`` cannot honour (refused)
 UNUSED = (
-    ("pusher", None, _FREE_ONLY),
-    ("load", None, _FREE_ONLY),
-    ("spring", None, _FREE_ONLY),
-    ("incline", None, _FREE_ONLY),
-    ("solver", ("t_end",), "an aimed motion runs to its stop"),
+    ("pusher", None, "aiming solves for a launch; a pushed body moves as the pusher drives it"),
 )
 
 
@@ -59,7 +56,10 @@ def run(args) -> int:
     """Aim, print; returns the exit status (1 for an unreachable target)."""
     # deferred: keeps `slidespin --help` fast (the numerical stack is not imported for parsing)
     from slidespin.analysis.aim import AIM_FREE, UnreachableTarget, aim, check_target
+    from slidespin.motion.loaded_trajectory import LoadedTrajectory
     from slidespin.motion.simulate import simulate
+    from slidespin.motion.state import State
+    from slidespin.motion.trajectory import Trajectory
     from slidespin.studies.case import read_case, refuse_unused
 
     try:
@@ -79,7 +79,8 @@ def run(args) -> int:
     refuse_unused(args.case, data, "slidespin aim", UNUSED)
     try:
         start = aim(case.body, case.friction, target, start=case.initial_state, free=free,
-                    g=case.g, rtol=case.rtol, tol=args.tol)  # fmt: skip
+                    g=case.g, rtol=case.rtol, tol=args.tol, load=case.load,
+                    incline=case.incline, t_end=case.t_end)  # fmt: skip
     except UnreachableTarget as exc:
         if args.json:
             n, s = exc.nearest, exc.start
@@ -93,14 +94,22 @@ def run(args) -> int:
         else:
             print(f"unreachable        : {exc}")
         return 1
-    tr = simulate(case.body, case.friction, start, case.g, case.rtol)
-    stop = tr.stop_state
+    tr = simulate(case.body, case.friction, start, case.g, case.rtol, load=case.load,
+                  incline=case.incline, t_end=case.t_end)  # fmt: skip
+    if isinstance(tr, LoadedTrajectory):  # at rest where it first sticks (or at t_end)
+        stop = State(x=float(tr.x[-1]), y=float(tr.y[-1]), phi=float(tr.phi[-1]))
+        last = tr.phases[-1] if tr.phases else ("slip", 0.0, 0.0)
+        t_stop = last[1] if last[0] == "stick" else float(tr.t[-1])
+    elif isinstance(tr, Trajectory):
+        stop, t_stop = tr.stop_state, tr.t_stop
+    else:  # pragma: no cover - a [pusher] is refused above
+        raise RuntimeError(f"slidespin aim: unexpected {type(tr).__name__}")
     if args.json:
         print(json.dumps({
             "reachable": True, "target": list(target), "free": list(free),
             "launch": {"x": start.x, "y": start.y, "phi": start.phi, "vx": start.vx,
                        "vy": start.vy, "omega": start.omega},
-            "stop": {"t_stop": tr.t_stop, "x": stop.x, "y": stop.y, "phi": stop.phi},
+            "stop": {"t_stop": t_stop, "x": stop.x, "y": stop.y, "phi": stop.phi},
         }, indent=2))  # fmt: skip
         return 0
     print(f"case               : {case.name or args.case}")
@@ -108,5 +117,5 @@ def run(args) -> int:
     print(f"launch             : vx = {start.vx:.12g} m/s, vy = {start.vy:.12g} m/s, "
           f"omega = {start.omega:.12g} rad/s (free: {', '.join(free)})")  # fmt: skip
     print(f"stops              : x = {stop.x:.12g} m, y = {stop.y:.12g} m, phi = "
-          f"{stop.phi:.12g} rad at t = {tr.t_stop:.10g} s")  # fmt: skip
+          f"{stop.phi:.12g} rad at t = {t_stop:.10g} s")  # fmt: skip
     return 0
