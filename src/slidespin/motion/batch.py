@@ -485,6 +485,8 @@ def simulate_many(
         return fe, fc, eidx, cidx, np.repeat(geo[None, :], m, axis=0)
 
     names = None if sensitivities is None else check_parameters(sensitivities)
+    if names is not None:
+        _check_setups([body], names)
     res = _integrate_all(
         st.shape[0],
         lambda lo, hi: np.repeat(par[None, :], hi - lo, axis=0),
@@ -499,26 +501,44 @@ def simulate_many(
     )
     if names is not None:
         cols = _stop_sensitivity_columns(
-            body, friction, st, res.status, names, g, rtol, max_steps, progress
-        )
+            [body] * st.shape[0], [friction] * st.shape[0], st, res.status, names, g, rtol,
+            max_steps, progress,
+        )  # fmt: skip
         res = replace(res, sensitivities=cols)
     return res
 
 
-def _stop_sensitivity_columns(body, friction, st, status, names, g, rtol, max_steps, progress):
-    """The stop's derivatives of each case (rows of ``st``) as columns d_<q>/d_<parameter>;
-    NaN for a case that does not stop (``status`` of the batch run; at rest included), and
-    for one whose sensitivity run fails (counted in a warning)."""
-    check_setup(body, names)  # a parameter the body cannot vary: refused before any run
-    cols = {f"d_{q}/d_{p}": np.full(st.shape[0], np.nan) for p in names for q in STOP_OUTPUTS}
+def sensitivity_columns(names) -> tuple[str, ...]:
+    """The names of the stop's derivative columns, ``d_<q>/d_<parameter>``, in order."""
+    return tuple(f"d_{q}/d_{p}" for p in names for q in STOP_OUTPUTS)
+
+
+def _check_setups(bodies, names) -> None:
+    """Refuse, before any run, a parameter a case's body cannot vary (naming the case)."""
+    checked: set = set()
+    for i, b in enumerate(bodies):
+        if id(b) not in checked:
+            checked.add(id(b))
+            try:
+                check_setup(b, names)
+            except ValueError as exc:
+                raise ValueError(f"case {i}: {exc}" if len(bodies) > 1 else str(exc)) from None
+
+
+def _stop_sensitivity_columns(bodies, frictions, st, status, names, g, rtol, max_steps,
+                              progress):  # fmt: skip
+    """The stop's derivatives of each case (rows of ``st``, its body and tensor) as columns
+    d_<q>/d_<parameter>; NaN for a case that does not stop (``status`` of the batch run; at
+    rest included), and for one whose sensitivity run fails (counted in a warning)."""
+    cols = {c: np.full(st.shape[0], np.nan) for c in sensitivity_columns(names)}
     failed = 0
     with progress_bar(st.shape[0], "sensitivities", enabled=progress) as bar:
         for i, row in enumerate(st):
             if status[i] == "stopped":
                 state = State(*(float(x) for x in row))
                 try:
-                    sens = simulate(body, friction, state, g, rtol, max_steps=max_steps,
-                                    sensitivities=names).sensitivities  # fmt: skip
+                    sens = simulate(bodies[i], frictions[i], state, g, rtol,
+                                    max_steps=max_steps, sensitivities=names).sensitivities  # fmt: skip
                 except RuntimeError:
                     failed += 1
                     sens = None
@@ -544,6 +564,7 @@ def simulate_bodies(
     g: float = 9.81,
     rtol: float = 1e-10,
     max_steps: int = 200_000,
+    sensitivities: Iterable[str] | None = None,
 ) -> StopResults:
     """Integrate N cases, one :class:`~slidespin.Body` per case, in parallel.
 
@@ -559,6 +580,9 @@ def simulate_bodies(
         As in :func:`simulate_many`, with N rows.
     g, rtol, max_steps
         As in :func:`simulate_many` (g shared by all cases).
+    sensitivities : sequence of str, optional
+        As in :func:`simulate_many`: the stop's derivatives of each case as the columns
+        ``d_<q>/d_<parameter>`` (case by case, one sensitivity run each).
 
     Returns
     -------
@@ -623,6 +647,15 @@ def simulate_bodies(
         geos = np.ascontiguousarray(np.array([e[3] for e in engines[lo:hi]]))
         return edges, circles, eidx, cidx, geos
 
-    return _integrate_all(
+    names = None if sensitivities is None else check_parameters(sensitivities)
+    if names is not None:
+        _check_setups(bodies, names)
+    res = _integrate_all(
         n, lambda lo, hi: pars[lo:hi], length, g, states, rtol, max_steps, footprints_of
     )
+    if names is not None:
+        cols = _stop_sensitivity_columns(
+            bodies, frictions, st, res.status, names, g, rtol, max_steps, False
+        )
+        res = replace(res, sensitivities=cols)
+    return res

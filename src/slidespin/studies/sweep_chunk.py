@@ -15,7 +15,7 @@ import sys
 import numpy as np
 
 from slidespin._jit import set_threads
-from slidespin.motion.batch import simulate_bodies, simulate_cases
+from slidespin.motion.batch import sensitivity_columns, simulate_bodies, simulate_cases
 from slidespin.studies._sweep_inputs import _case_fields, _case_inputs, _input_table
 from slidespin.studies.sweep_loads import (
     LOAD_COLUMNS,
@@ -139,7 +139,7 @@ def chunk_columns(spec: SweepSpec) -> tuple:
         return inputs + LOAD_COLUMNS + STATICS_COLUMNS
     if spec.mode == "loaded":
         return inputs + LOAD_COLUMNS + LOADED_COLUMNS
-    return inputs + RESULT_COLUMNS
+    return inputs + RESULT_COLUMNS + sensitivity_columns(spec.sensitivities)
 
 
 def _degree_columns(spec: SweepSpec) -> tuple:
@@ -166,7 +166,7 @@ def compute_chunk(spec_data: dict | SweepSpec, index: int, on_case=None) -> dict
     rtol = float(spec.data.get("rtol", 1e-10))
     # the engines' own default budget unless the spec gives one (the same number)
     budget = {"max_steps": spec.max_steps} if "max_steps" in spec.data else {}
-    if spec.shape == "ellipse" and spec.mode == "stop":
+    if spec.shape == "ellipse" and spec.mode == "stop" and not spec.sensitivities:
         fields = _case_fields(cols)
         out = _input_table(cols, fields)
         out.update({k: np.asarray(cols[k], dtype=float) for k in _degree_columns(spec)})
@@ -191,16 +191,18 @@ def compute_chunk(spec_data: dict | SweepSpec, index: int, on_case=None) -> dict
         parts = []
         for gv in np.unique(inp.g):
             sel = np.flatnonzero(inp.g == gv)
+            # (a parameter a body cannot vary was refused when the spec was read)
             res = simulate_bodies(
                 [inp.bodies[i] for i in sel],
                 [inp.frictions[i] for i in sel],
                 inp.states[sel],
                 float(gv),
                 rtol,
+                sensitivities=spec.sensitivities or None,
                 **budget,
             ).as_dict()
             parts.append((sel, res))
-        for k in RESULT_COLUMNS:
+        for k in RESULT_COLUMNS + sensitivity_columns(spec.sensitivities):
             col = None
             for sel, res in parts:
                 val = np.asarray(res[k])

@@ -18,6 +18,8 @@ import numpy as np
 
 from slidespin import _validate as v
 from slidespin.motion._cases import SHAPE_KEYS
+from slidespin.motion.sensitivity import EXTRA_PARAMETERS, check_parameters, check_setup
+from slidespin.motion.sensitivity import PARAMETERS as SENSITIVITY_PARAMETERS
 from slidespin.studies._sweep_inputs import _case_fields, _case_inputs
 from slidespin.studies.case import MAX_STEPS_LIMIT, check_document, check_name, read_toml
 from slidespin.studies.sweep_loads import LOAD_PARAMETERS, MODES
@@ -42,6 +44,26 @@ from slidespin.studies.sweep_spec import (
 )
 
 __all__ = ["load_spec"]
+
+
+def _check_sensitivities(data: dict, mode: str) -> None:
+    """The ``sensitivities`` key: parameters of :func:`slidespin.stop_sensitivities`, with
+    compute = "stop" (their canonical order kept as given)."""
+    names = data["sensitivities"]
+    if mode != "stop":
+        raise SweepError(
+            f"sensitivities = {names!r} is for compute = 'stop' (the derivatives of the stop); "
+            f"valid: leave it out with compute = {mode!r}"
+        )
+    if isinstance(names, str) or not isinstance(names, list) or not names:
+        raise SweepError(
+            f"sensitivities = {names!r} is invalid; valid values: a non-empty list of "
+            f"parameter names among {', '.join(SENSITIVITY_PARAMETERS + EXTRA_PARAMETERS)}"
+        )
+    try:
+        check_parameters(names)
+    except ValueError as exc:
+        raise SweepError(str(exc).replace("parameters =", "sensitivities =", 1)) from None
 
 
 def _validate_spec(data: dict) -> SweepSpec:
@@ -79,6 +101,8 @@ def _validate_spec(data: dict) -> SweepSpec:
                 f"pad_shape = {pad_shape!r} does not take {k!r}; valid size keys: "
                 f"{', '.join(sorted(own[pad_shape]))}"
             )
+    if "sensitivities" in data:
+        _check_sensitivities(data, mode)
     if mode == "stop":
         for k in sorted(given & set(LOAD_PARAMETERS)):
             raise SweepError(
@@ -205,11 +229,26 @@ def _validate_spec(data: dict) -> SweepSpec:
     # fails before any work starts, naming the parameter
     for start in range(0, spec.n_cases, 200_000):
         cols = spec.parameters(start, start + 200_000)
-        if spec.shape == "ellipse" and spec.mode == "stop":
+        if spec.shape == "ellipse" and spec.mode == "stop" and not spec.sensitivities:
             _case_fields(cols)
         else:  # builds each distinct body once (a footprint checks itself on construction)
-            _case_inputs(spec, cols)
+            inp = _case_inputs(spec, cols)
+            if spec.sensitivities:  # a parameter a case's body cannot vary
+                _check_sensitivity_bodies(spec, inp.bodies, cols["case_id"])
     return spec
+
+
+def _check_sensitivity_bodies(spec: SweepSpec, bodies, case_ids) -> None:
+    """Refuse a ``sensitivities`` parameter some case's body cannot vary, naming the case."""
+    seen: set = set()
+    for body, case in zip(bodies, case_ids):
+        if id(body) in seen:
+            continue
+        seen.add(id(body))
+        try:
+            check_setup(body, spec.sensitivities)
+        except ValueError as exc:
+            raise SweepError(f"case {int(case)}: sensitivities: {exc}") from None
 
 
 def load_spec(spec) -> SweepSpec:

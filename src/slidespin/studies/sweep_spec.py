@@ -50,7 +50,11 @@ tilt keys of :mod:`slidespin.studies.sweep_loads`. The top-level key ``max_steps
 [1, 1e9], default :data:`DEFAULT_MAX_STEPS`) is each case's budget of integrator steps (stop
 and loaded sweeps): it bounds the work of every case, whatever ``t_end``; a case that runs out
 has the status ``max_steps``. ``compute = "statics"`` (a body at rest) integrates nothing and
-refuses ``rtol``, ``max_steps`` and the start state other than ``phi0``.
+refuses ``rtol``, ``max_steps`` and the start state other than ``phi0``. The top-level key
+``sensitivities`` (a list of the parameters of :func:`slidespin.stop_sensitivities`, with
+``compute = "stop"``) adds each case's stop derivatives as the columns
+``d_<q>/d_<parameter>`` (q: ``t_stop``, ``x``, ``y``, ``phi``, ``beta_stop``; MODEL §15), one
+sensitivity run per case (18–55 plain runs' cost for 6 parameters).
 
 Limits (checked before any work, with the key and the valid range in the message): at most
 :data:`MAX_CASES` cases, :data:`MAX_AXIS` values per grid axis or list, :data:`MAX_CHUNK`
@@ -182,6 +186,7 @@ _TOP_KEYS = {
     "random",
     "compute",
     "max_steps",
+    "sensitivities",
 }
 #: the budget of integrator steps of each case unless ``max_steps`` says otherwise (that of
 #: :func:`slidespin.simulate`)
@@ -242,6 +247,13 @@ class SweepSpec:
         """Each case's budget of integrator steps (``max_steps``; default
         :data:`DEFAULT_MAX_STEPS`)."""
         return int(self.data.get("max_steps", DEFAULT_MAX_STEPS))
+
+    @property
+    def sensitivities(self) -> tuple[str, ...]:
+        """The parameters whose stop derivatives each case gets as columns
+        ``d_<q>/d_<parameter>`` (the top-level key ``sensitivities``, compute = "stop"; none
+        by default)."""
+        return tuple(self.data.get("sensitivities", ()))
 
     @property
     def mode(self) -> str:
