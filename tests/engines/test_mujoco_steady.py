@@ -13,6 +13,7 @@ most steps, with about one wrench evaluation each (counted, not timed).
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -260,3 +261,34 @@ def test_the_steady_step_comes_from_the_ahead_of_time_core_when_built():
         pytest.skip(f"no ahead-of-time core in use: {_aot.status()}")
     assert engine_mujoco.steady_kernel(True) is core.steady_footprint
     assert engine_mujoco.steady_kernel(False) is core.steady_ellipse
+
+
+def test_on_a_table_welded_to_the_world_the_steady_step_is_compiled_too():
+    """A support whose body has no joint (a table) is fixed: its plane is kept and the
+    compiled step does the steady steps, with the Python path's numbers."""
+    body, friction, twist = LAUNCHES["box"]
+    top = 0.4
+    xml = smj.mujoco_xml(body, timestep=1e-3)
+    z = float(re.search(r'<body name="body" pos="0 0 ([^"]+)"', xml).group(1))
+    xml = xml.replace(
+        '<geom name="floor" type="plane" size="0 0 1" euler="0 0 0" condim="1"/>',
+        f'<body name="table" pos="0.3 0 {top / 2}"><geom name="top" type="box" '
+        f'size="1 1 {top / 2}"/></body>',
+    ).replace(f'<body name="body" pos="0 0 {z!r}"', f'<body name="body" pos="0 0 {top + z!r}"')
+    runs = []
+    for compiled in (True, False):
+        m = mujoco.MjModel.from_xml_string(xml)
+        d = mujoco.MjData(m)
+        c = smj.attach(m, d, "body", body, friction, support="top")
+        c.compiled = compiled
+        try:
+            for i in range(800):
+                if i == 200:
+                    smj.set_twist(m, d, "body", *twist)
+                mujoco.mj_step(m, d)
+            runs.append((d.qpos[:3].copy(), c.friction.steps, c.friction.compiled_steps))
+        finally:
+            smj.detach(m, d)
+    assert np.abs(runs[0][0] - runs[1][0]).max() <= 1e-9
+    assert runs[0][0][0] > 0.1  # it slid
+    assert runs[0][1] - runs[0][2] <= 15 and runs[1][2] == 0

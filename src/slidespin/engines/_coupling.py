@@ -37,11 +37,16 @@ Whether w_req ∈ C is decided from bounds first: the gauge γ of C is at least 
 last outward normal d, and at most γ_ref + |w − w_ref|/r_in from the last exact evaluation
 (γ is subadditive; r_in, the radius of a ball inside C, is σ_min(𝔽) × the static ratio × the
 inradius of the isotropic unit set, found once; a plane-frame tensor's C turns with the body,
-which :func:`slidespin.engines._stepcore.gauge_upper` bounds too). Only in between is the exact load factor of
-:mod:`slidespin.contact.statics` computed (an optimisation of a few milliseconds).
+which :func:`slidespin.engines._stepcore.gauge_upper` bounds too). Only in between is the
+exact load factor of :mod:`slidespin.contact.statics` computed (a few milliseconds).
 
-May import: :mod:`slidespin.contact` (and below). Works on plain floats; the engines'
-adapters (:mod:`slidespin.engines.mujoco`, :mod:`slidespin.engines.drake`) own the frames.
+The state lives in one float array ``s`` (layout in :mod:`slidespin.engines._stepcore`),
+shared with the MuJoCo coupling's compiled steady step, which does most steps of a coupled
+body from the same state with the same arithmetic; this class does the others.
+
+May import: :mod:`slidespin.contact` (and below), :mod:`slidespin.engines._stepcore`. Works
+on plain floats; the engines' adapters (:mod:`slidespin.engines.mujoco`,
+:mod:`slidespin.engines.drake`) own the frames.
 """
 
 from __future__ import annotations

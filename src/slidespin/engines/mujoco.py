@@ -157,6 +157,12 @@ class Coupling:
     error : Exception or None
         An exception the coupling met in a step (the step then applied no friction, and a
         RuntimeWarning said so: an exception cannot cross MuJoCo's C stack); None.
+    compiled : bool
+        Whether steady steps go to the compiled steady step (default True); False does every
+        step in Python (the same numbers to round-off, 5–8 times the cost: for comparisons).
+    s : ndarray
+        The state of the body's coupling (that of ``friction``), read and written by the
+        compiled steady step.
     """
 
     @property
@@ -243,13 +249,12 @@ class Coupling:
         )  # fmt: skip
         self._kernel_args = (tw.par, tw.edges, tw.circles, tw.geo) if tw.footprint else (tw.par,)
         self._steady = steady_kernel(tw.footprint)
-        #: whether steady steps go to the compiled step (the tests compare both paths)
         self.compiled = True
 
     def _frame(self, m, d, i: int, sg: int, sign: float):
         """(n, e1, e2, point on the plane) of the support at contact ``i`` (support geom
         ``sg``; ``sign`` turns the contact normal to point from the support to the body).
-        Kept for a static support (its plane does not move)."""
+        Kept for a support fixed in the world (its plane does not move)."""
         cached = self._frames.get(sg)
         if cached is not None:
             return cached
@@ -263,7 +268,7 @@ class Coupling:
         e1 /= np.linalg.norm(e1)
         e2 = np.cross(n, e1)
         out = (tuple(n.tolist()), tuple(e1.tolist()), tuple(e2.tolist()), tuple(con.pos[i]))
-        if m.geom_bodyid[sg] == 0:
+        if _fixed_in_world(m, int(m.geom_bodyid[sg])):
             self._frames[sg] = out
         return out
 
@@ -457,6 +462,16 @@ class Coupling:
         fr = self.friction
         load = (fr.m * float(acc @ e1), fr.m * float(acc @ e2), fr.inertia * float(alpha @ n))
         return normal, load
+
+
+def _fixed_in_world(m, body: int) -> bool:
+    """Whether a body cannot move: the world, or a body that neither it nor any ancestor
+    has dofs or is a mocap body (a table welded to the world, say)."""
+    while body > 0:
+        if m.body_dofnum[body] > 0 or m.body_mocapid[body] >= 0:
+            return False
+        body = int(m.body_parentid[body])
+    return True
 
 
 def steady_kernel(footprint: bool):
