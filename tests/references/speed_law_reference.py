@@ -460,7 +460,7 @@ def _jacobi(npts, al, be):
 def _adaptive_jacobi(core, lo0, al0, hi0, be0, a, b, tol, depth=0):
     """∫_a^b core(x) (x − lo0)^al0 (hi0 − x)^be0 dx, [a, b] ⊂ [lo0, hi0], by Gauss–Jacobi
     rules (24 and 40 points) that carry the end factors owned by [a, b], bisected until the
-    two rules agree to ``tol``."""
+    two rules agree to ``tol`` (or to 1e-14 of the panel's value, the round-off floor)."""
     al = al0 if a == lo0 else 0.0
     be = be0 if b == hi0 else 0.0
     h = 0.5 * (b - a)
@@ -476,7 +476,10 @@ def _adaptive_jacobi(core, lo0, al0, hi0, be0, a, b, tol, depth=0):
         return float(wt @ f) * h ** (al + be + 1.0)
 
     coarse, fine = rule(24), rule(40)
-    if abs(fine - coarse) <= tol or depth > 60:
+    # the rules' agreement cannot go below round-off of the panel's own value: an absolute
+    # target under it (a far ICR makes the radial integrals large) would bisect every panel
+    # to the depth limit, 2^60 panels, and never end
+    if abs(fine - coarse) <= max(tol, 1e-14 * abs(fine)) or depth > 60:
         return fine
     m = a + h
     return _adaptive_jacobi(core, lo0, al0, hi0, be0, a, m, tol / 2, depth + 1) + _adaptive_jacobi(
