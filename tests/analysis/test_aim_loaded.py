@@ -105,3 +105,25 @@ def test_unreachable_under_a_load_names_the_nearest_stop():
 def test_bad_loaded_input(kwargs, match):
     with pytest.raises(ValueError, match=match):
         ss.aim(BOX, ANISO, (0.5, 0.1), **kwargs)
+
+
+def test_an_xy_target_far_under_a_push_is_hit_with_the_start_s_own_spin():
+    """With (vx, vy, ω) free and no target angle every spin has a launch: the start's own
+    (here none) is tried first, so the aim neither drifts into large spins nor stalls."""
+    kw = dict(load=ss.Load(force=(0.3, 0.0)))
+    got = ss.aim(BOX, ANISO, (3.0, 1.0), g=G, **kw)
+    assert got.omega == 0.0
+    x, y, _ = _rest(BOX, ANISO, got, **kw)
+    assert max(abs(x - 3.0), abs(y - 1.0)) <= 1e-9
+
+
+def test_a_launch_against_a_push_is_found():
+    """A push that carries the body on: to stop behind the start it is launched backwards."""
+    fr = ss.FrictionTensor(0.5, 0.5)
+    kw = dict(
+        load=ss.Load.piecewise_linear([0.0, 0.5, 1.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.0]),
+        t_end=3.0,
+    )
+    x, y, _ = _rest(DISK, fr, ss.State(vx=-1.5), **kw)
+    got = ss.aim(DISK, fr, (x, y), free=("vx",), g=G, **kw)
+    assert got.vx == pytest.approx(-1.5, rel=1e-8)

@@ -73,3 +73,11 @@ def test_aim_refuses_a_pushed_case():
     r = _run(ROOT / "examples" / "finger_box.toml", "--target", "0.3,0.1")
     assert r.returncode != 0
     assert "pusher" in r.stderr
+
+
+def test_aim_finds_a_launch_against_the_case_s_push():
+    r = _run(ROOT / "examples" / "pushed_box.toml", "--target", "0.5,0", "--json")
+    assert r.returncode == 0, r.stdout + r.stderr
+    doc = json.loads(r.stdout)
+    assert doc["launch"]["vx"] < 0.0
+    assert abs(doc["stop"]["x"] - 0.5) < 1e-9

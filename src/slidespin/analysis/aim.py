@@ -23,6 +23,7 @@ target); a target is hit when x and y are within ``tol`` metres and φ within ``
 from __future__ import annotations
 
 import math
+import re
 import warnings
 from collections.abc import Sequence
 from dataclasses import replace
@@ -219,7 +220,9 @@ def aim(
     -----
     Where several launches stop at the target (a spin of either sign, when only ω is free),
     the one found is the one reached from the first guess: give the free components a
-    nonzero value in ``start`` to choose. A target hit means |Δx| ≤ ``tol``, |Δy| ≤ ``tol``
+    nonzero value in ``start`` to choose. A target (x, y) without an angle, with the velocity
+    and the spin all free, has a launch for every spin: the one with the start's own spin is
+    tried first (the spin free only if it cannot reach the target). A target hit means |Δx| ≤ ``tol``, |Δy| ≤ ``tol``
     and |Δφ| ≤ ``tol`` (so the straight-line miss is at most √2 ``tol``).
 
     Levenberg–Marquardt on the miss r(q) = (x_stop − x, y_stop − y, ℓ(φ_stop − φ)) over the
@@ -230,7 +233,8 @@ def aim(
     line to the target at the speed that stops there in pure translation (v² = 2 a d, with
     a = μ g cos α less the slope's and a constant load's pull along the line, when that is
     positive), with the spin that turns the body by Δφ over the same time (ω = Δφ v/d),
-    scaled by 1, 0.7 and 1.4.
+    scaled by 1, 0.7 and 1.4 (and, under a load or on a slope, by −1 and −0.5: a launch
+    against the push).
 
     Examples
     --------
@@ -289,33 +293,46 @@ def aim(
     except ValueError as exc:
         if "need never stop" not in str(exc):
             raise
+        factor = re.search(r"load factor ([0-9.eE+-]+)", str(exc))
+        parts = [f"{k} = {x!r}" for k, x in (("load", load), ("incline", incline))
+                 if x is not None]  # fmt: skip
         raise ValueError(
-            f"load = {load!r}, incline = {incline!r} are invalid for aim: the body need never "
-            f"stop ({exc}); valid: loads and slopes that static friction can hold"
+            f"{', '.join(parts)} {'is' if len(parts) == 1 else 'are'} invalid for aim: static friction "
+            "cannot hold the body against it"
+            + (f" (load factor {factor.group(1)} < 1)" if factor else "")
+            + ", so the body need never stop; valid: loads and slopes that static friction can "
+            "hold (load factor >= 1)"
         ) from None
     if _hit(r, ell, tol):  # the target is where the free components at zero stop
         return _launch(start, names, zero)
     best: tuple[float, State, State] | None = None
-    for guess in _guesses(run, tgt, start, names):
-        q, miss, hit, pose = _solve(run, tgt, start, names, guess, tol, max_iter)
-        launch = _launch(start, names, q)
-        if hit:
-            return launch
-        if miss <= NOISE * rtol * far:  # as near as simulate itself resolves the stop
-            warnings.warn(
-                f"target = {tgt!r} reached to {miss:.3g} m, not to tol = {tol:.3g} m: that is "
-                f"the resolution of the simulated stop this far out ({NOISE:g} rtol x "
-                f"{far:.3g} m; a smaller rtol resolves it better)",
-                RuntimeWarning,
-                stacklevel=2,
-            )
-            return launch
-        if best is None or miss < best[0]:
-            best = (miss, pose, launch)
+    # a target without an angle and a free spin: first the launch with the start's own spin
+    # (any spin would do; this one adds none), then the spin free too
+    attempts = [names]
+    if len(tgt) == 2 and "omega" in names and len(names) == 3:
+        attempts.insert(0, tuple(n for n in names if n != "omega"))
+    for sub in attempts:
+        for guess in _guesses(run, tgt, start, sub):
+            q, miss, hit, pose = _solve(run, tgt, start, sub, guess, tol, max_iter)
+            launch = _launch(start, sub, q)
+            if hit:
+                return launch
+            if sub == names and miss <= NOISE * rtol * far:  # as near as simulate resolves
+                warnings.warn(
+                    f"target = {tgt!r} reached to {miss:.3g} m, not to tol = {tol:.3g} m: that "
+                    f"is the resolution of the simulated stop this far out ({NOISE:g} rtol x "
+                    f"{far:.3g} m; a smaller rtol resolves it better)",
+                    RuntimeWarning,
+                    stacklevel=2,
+                )
+                return launch
+            if best is None or miss < best[0]:
+                best = (miss, pose, launch)
     if best is None or best[1] is None:
+        why = f" (the runs end otherwise: {run.no_stop})" if run.no_stop else ""
         raise UnreachableTarget(
             f"target = {tgt!r}: no launch from the first guesses could be simulated to a stop "
-            f"while varying {', '.join(names)}; valid: a target some launch reaches",
+            f"while varying {', '.join(names)}{why}; valid: a target some launch reaches",
             tgt, start, start, math.inf,
         )  # fmt: skip
     miss, pose, launch = best
@@ -344,6 +361,7 @@ class _Runs:
     def __init__(self, body, friction, g, rtol, load, incline, t_end, exact) -> None:
         self.body, self.friction, self.g, self.rtol = body, friction, g, rtol
         self.load, self.incline, self.t_end, self.exact = load, incline, t_end, exact
+        self.no_stop = ""  # how the last run that did not end at rest ended
 
     def stop(self, launch: State, sensitivities=None):
         """(stop pose, sensitivities or None) of ``launch``; ValueError if it does not stop."""
@@ -355,9 +373,13 @@ class _Runs:
                           incline=self.incline, t_end=self.t_end)  # fmt: skip
         if isinstance(tr, LoadedTrajectory):  # loads, slopes, a tall body
             if tr.status != "ok" or tr.ending not in ("stopped_stuck", "at_rest_throughout"):
-                raise _NoStop(f"the launch {launch!r} does not stop: {tr.ending}, {tr.status}")
+                self.no_stop = f"ending {tr.ending!r}, status {tr.status!r}" + (
+                    f" at t_end = {self.t_end!r} s" if self.t_end is not None else ""
+                )
+                raise _NoStop(f"the launch {launch!r} does not stop: {self.no_stop}")
             return State(x=float(tr.x[-1]), y=float(tr.y[-1]), phi=float(tr.phi[-1])), None
         if tr.status not in ("stopped", "at_rest"):
+            self.no_stop = f"status {tr.status!r}"
             raise _NoStop(f"the launch {launch!r} does not stop: {tr.status}")
         return tr.stop_state, tr.sensitivities
 
@@ -401,7 +423,9 @@ def _guesses(run, tgt, start, names):
     mine = _components(guess, names)
     fixed = _components(start, names)
     base = np.where((mine != 0.0) | (fixed == 0.0), mine, fixed)
-    for f in (1.0, 0.7, 1.4):
+    # under a load or on a slope the launch may have to go against it: also backwards
+    loaded = run.load is not None or run.incline is not None
+    for f in (1.0, 0.7, 1.4) + ((-1.0, -0.5) if loaded else ()):
         yield np.array([x if n == "direction" else x * f for x, n in zip(base, names)])
 
 

@@ -484,7 +484,7 @@ def simulate_many(
         cidx[:, 1] = fc.shape[0]
         return fe, fc, eidx, cidx, np.repeat(geo[None, :], m, axis=0)
 
-    names = None if sensitivities is None else check_parameters(sensitivities)
+    names = None if sensitivities is None else _check_names(sensitivities)
     if names is not None:
         _check_setups([body], names)
     res = _integrate_all(
@@ -513,6 +513,14 @@ def sensitivity_columns(names) -> tuple[str, ...]:
     return tuple(f"d_{q}/d_{p}" for p in names for q in STOP_OUTPUTS)
 
 
+def _check_names(sensitivities) -> tuple[str, ...]:
+    """The ``sensitivities`` names (an error naming that keyword)."""
+    try:
+        return check_parameters(sensitivities)
+    except ValueError as exc:
+        raise ValueError(str(exc).replace("parameters =", "sensitivities =", 1)) from None
+
+
 def _check_setups(bodies, names) -> None:
     """Refuse, before any run, a parameter a case's body cannot vary (naming the case)."""
     checked: set = set()
@@ -531,7 +539,7 @@ def _stop_sensitivity_columns(bodies, frictions, st, status, names, g, rtol, max
     d_<q>/d_<parameter>; NaN for a case that does not stop (``status`` of the batch run; at
     rest included), and for one whose sensitivity run fails (counted in a warning)."""
     cols = {c: np.full(st.shape[0], np.nan) for c in sensitivity_columns(names)}
-    failed = 0
+    failed: list[int] = []
     with progress_bar(st.shape[0], "sensitivities", enabled=progress) as bar:
         for i, row in enumerate(st):
             if status[i] == "stopped":
@@ -540,7 +548,7 @@ def _stop_sensitivity_columns(bodies, frictions, st, status, names, g, rtol, max
                     sens = simulate(bodies[i], frictions[i], state, g, rtol,
                                     max_steps=max_steps, sensitivities=names).sensitivities  # fmt: skip
                 except RuntimeError:
-                    failed += 1
+                    failed.append(i)
                     sens = None
                 if sens is not None:
                     for p in names:
@@ -549,8 +557,8 @@ def _stop_sensitivity_columns(bodies, frictions, st, status, names, g, rtol, max
             bar.update(1)
     if failed:
         warnings.warn(
-            f"{failed} case(s) of {st.shape[0]}: the sensitivity run did not converge; their "
-            "derivative columns are NaN",
+            f"{len(failed)} case(s) of {st.shape[0]} (rows {v._short(failed, 80)}): the "
+            "sensitivity run did not converge; their derivative columns are NaN",
             RuntimeWarning,
             stacklevel=3,
         )
@@ -647,7 +655,7 @@ def simulate_bodies(
         geos = np.ascontiguousarray(np.array([e[3] for e in engines[lo:hi]]))
         return edges, circles, eidx, cidx, geos
 
-    names = None if sensitivities is None else check_parameters(sensitivities)
+    names = None if sensitivities is None else _check_names(sensitivities)
     if names is not None:
         _check_setups(bodies, names)
     res = _integrate_all(
