@@ -219,6 +219,7 @@ class SteppedFriction:
 
     @property
     def state(self) -> str:
+        """``"slip"``, ``"stick"`` or ``"free"`` after the last step."""
         return _STATES[float(self.s[sc.S_STATE])]
 
     @state.setter

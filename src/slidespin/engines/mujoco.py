@@ -167,6 +167,7 @@ class Coupling:
 
     @property
     def wrench(self) -> tuple[float, float, float]:
+        """The last wrench (Fx, Fy [N] along the support's axes, M [N m] about its normal)."""
         return tuple(self.s[sc.C_WRENCH : sc.C_WRENCH + 3].tolist())  # type: ignore[return-value]
 
     @wrench.setter
@@ -175,6 +176,7 @@ class Coupling:
 
     @property
     def normal_force(self) -> float:
+        """The last normal force N [N]."""
         return float(self.s[sc.C_NORMAL])
 
     @normal_force.setter

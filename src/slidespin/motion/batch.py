@@ -484,7 +484,7 @@ def simulate_many(
         cidx[:, 1] = fc.shape[0]
         return fe, fc, eidx, cidx, np.repeat(geo[None, :], m, axis=0)
 
-    names = None if sensitivities is None else _check_names(sensitivities)
+    names = None if sensitivities is None else check_parameters(sensitivities, "sensitivities")
     if names is not None:
         _check_setups([body], names)
     res = _integrate_all(
@@ -513,24 +513,13 @@ def sensitivity_columns(names) -> tuple[str, ...]:
     return tuple(f"d_{q}/d_{p}" for p in names for q in STOP_OUTPUTS)
 
 
-def _check_names(sensitivities) -> tuple[str, ...]:
-    """The ``sensitivities`` names (an error naming that keyword)."""
-    try:
-        return check_parameters(sensitivities)
-    except ValueError as exc:
-        raise ValueError(str(exc).replace("parameters =", "sensitivities =", 1)) from None
-
-
 def _check_setups(bodies, names) -> None:
     """Refuse, before any run, a parameter a case's body cannot vary (naming the case)."""
     checked: set = set()
     for i, b in enumerate(bodies):
         if id(b) not in checked:
             checked.add(id(b))
-            try:
-                check_setup(b, names)
-            except ValueError as exc:
-                raise ValueError(f"case {i}: {exc}" if len(bodies) > 1 else str(exc)) from None
+            check_setup(b, names, case=i if len(bodies) > 1 else None)
 
 
 def _stop_sensitivity_columns(bodies, frictions, st, status, names, g, rtol, max_steps,
@@ -655,7 +644,7 @@ def simulate_bodies(
         geos = np.ascontiguousarray(np.array([e[3] for e in engines[lo:hi]]))
         return edges, circles, eidx, cidx, geos
 
-    names = None if sensitivities is None else _check_names(sensitivities)
+    names = None if sensitivities is None else check_parameters(sensitivities, "sensitivities")
     if names is not None:
         _check_setups(bodies, names)
     res = _integrate_all(

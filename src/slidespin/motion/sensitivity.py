@@ -135,18 +135,18 @@ class Sensitivities:
         }
 
 
-def check_setup(body: Body, names: tuple[str, ...]) -> None:
+def check_setup(body: Body, names: tuple[str, ...], case: int | None = None) -> None:
     """Refuse, before any run, parameters the body cannot vary: ``xi_c``, ``eta_c`` need a
     pressure centre that can move (the uniform or linear law on an ellipse or an area
-    footprint)."""
+    footprint); ``case``, if given, is named in the message (a batch's row)."""
     if "xi_c" in names or "eta_c" in names:
-        _centre(body)
+        _centre(body, case)
 
 
-def check_parameters(parameters: Any) -> tuple[str, ...]:
+def check_parameters(parameters: Any, name: str = "parameters") -> tuple[str, ...]:
     """Validate the parameter names: a non-empty sequence of distinct names of
     :data:`PARAMETERS` or :data:`EXTRA_PARAMETERS` (a single name is taken as a one-element
-    tuple)."""
+    tuple); an error names the argument ``name``."""
     if isinstance(parameters, str):
         parameters = (parameters,)
     try:
@@ -161,13 +161,13 @@ def check_parameters(parameters: Any) -> tuple[str, ...]:
     )
     if not ok:
         raise ValueError(
-            f"parameters = {v._short(parameters)} is invalid; valid values: a non-empty "
+            f"{name} = {v._short(parameters)} is invalid; valid values: a non-empty "
             f"sequence of distinct names among {', '.join(PARAMETERS + EXTRA_PARAMETERS)}"
         )
     return names  # type: ignore[return-value]
 
 
-def _centre(body: Body) -> tuple[float, float]:
+def _centre(body: Body, case: int | None = None) -> tuple[float, float]:
     """(ξc, ηc) of a body whose pressure centre can move: the linear law's, or the uniform
     law's centroid (the linear law with that centroid is the uniform law)."""
     p = body.pressure
@@ -176,7 +176,8 @@ def _centre(body: Body) -> tuple[float, float]:
     if isinstance(p, UniformPressure) and type(body.patch).__name__ != "Blade":
         return body.mass_centre
     raise ValueError(
-        f"parameters xi_c, eta_c need a pressure centre that can move: pressure = "
+        ("" if case is None else f"case {case}: ")
+        + "parameters xi_c, eta_c need a pressure centre that can move: pressure = "
         f"{body.pressure!r} on patch = {type(body.patch).__name__}(...) has none; valid "
         "values: UniformPressure() or LinearPressure(xi_c, eta_c) on an Ellipse or an area "
         "footprint"

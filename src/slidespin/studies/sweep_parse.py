@@ -61,9 +61,9 @@ def _check_sensitivities(data: dict, mode: str) -> None:
             f"parameter names among {', '.join(SENSITIVITY_PARAMETERS + EXTRA_PARAMETERS)}"
         )
     try:
-        check_parameters(names)
+        check_parameters(names, "sensitivities")
     except ValueError as exc:
-        raise SweepError(str(exc).replace("parameters =", "sensitivities =", 1)) from None
+        raise SweepError(str(exc)) from None
 
 
 def _validate_spec(data: dict) -> SweepSpec:
@@ -246,9 +246,9 @@ def _check_sensitivity_bodies(spec: SweepSpec, bodies, case_ids) -> None:
             continue
         seen.add(id(body))
         try:
-            check_setup(body, spec.sensitivities)
-        except ValueError as exc:
-            raise SweepError(f"case {int(case)}: sensitivities: {exc}") from None
+            check_setup(body, spec.sensitivities, case=int(case))
+        except ValueError as exc:  # (it names the case)
+            raise SweepError(str(exc)) from None
 
 
 def load_spec(spec) -> SweepSpec:
