@@ -292,3 +292,28 @@ def test_on_a_table_welded_to_the_world_the_steady_step_is_compiled_too():
     assert np.abs(runs[0][0] - runs[1][0]).max() <= 1e-9
     assert runs[0][0][0] > 0.1  # it slid
     assert runs[0][1] - runs[0][2] <= 15 and runs[1][2] == 0
+
+
+@pytest.mark.parametrize("t0", [0.0, 2e6])
+def test_forward_then_step_is_one_step_at_any_time(t0):
+    """mj_forward before each mj_step evaluates each time twice: one step each, also late in
+    a long simulation (where 1e-9 of the time exceeds the step), the same on both paths."""
+    body, friction, twist = LAUNCHES["box"]
+    runs = []
+    for compiled in (True, False):
+        m = mujoco.MjModel.from_xml_string(smj.mujoco_xml(body))
+        d = mujoco.MjData(m)
+        d.time = t0
+        c = smj.attach(m, d, "body", body, friction)
+        c.compiled = compiled
+        try:
+            for i in range(600):
+                if i == 200:
+                    smj.set_twist(m, d, "body", *twist)
+                mujoco.mj_forward(m, d)
+                mujoco.mj_step(m, d)
+            runs.append((d.qpos[:2].copy(), c.friction.steps))
+        finally:
+            smj.detach(m, d)
+    assert runs[0][1] == runs[1][1] == 600
+    assert np.abs(runs[0][0] - runs[1][0]).max() <= 1e-9

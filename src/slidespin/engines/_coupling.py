@@ -387,7 +387,9 @@ class SteppedFriction:
             return self._w
         h = self.dt
         m, inertia, ell = self.m, self.inertia, self.ell
-        consecutive = self._t is not None and abs(t - self._t - h) <= 1e-9 * max(h, abs(t))
+        consecutive = self._t is not None and abs(t - self._t - h) <= min(
+            1e-9 * max(h, abs(t)), 0.5 * h
+        )
         # a twist below round-off of one step's change is rest (engines leave ~1e-19 m/s)
         tol = _REST * h * normal * self.capacity / m
         moving = n0 * n0 + n1 * n1 + (ell * n2) ** 2 > tol * tol

@@ -210,7 +210,7 @@ def steady_step(
     Returns
     -------
     int
-        :data:`DONE`, or :data:`PYTHON` (nothing read into the state, nothing written).
+        :data:`DONE`, or :data:`PYTHON` (nothing written but the evaluations counter).
     """
     # -- the same contact as in the step just before, on a static support ------------------
     if s[C_LAST_OK] == 0.0 or s[C_FRAME_OK] == 0.0 or s[C_DEBT] != 0.0 or h != s[S_DT]:
@@ -218,7 +218,11 @@ def steady_step(
     ci = int(s[C_CI])
     if ci >= geom.shape[0] or geom[ci, 0] != s[C_G1] or geom[ci, 1] != s[C_G2]:
         return PYTHON
-    tol_t = 1e-9 * max(h, abs(t))
+    if t == s[C_LAST_T] or t == s[S_T]:
+        return PYTHON  # the same step again (mj_forward, then mj_step): the Python path
+    # the step just after the last one (the Python path's test, kept below half a step at
+    # any time, so that a repeated time never passes for the next step)
+    tol_t = min(1e-9 * max(h, abs(t)), 0.5 * h)
     if not abs(t - s[C_LAST_T] - h) <= tol_t or not abs(t - s[S_T] - h) <= tol_t:
         return PYTHON
     if s[S_NU_OK] == 0.0 or s[S_U_OK] == 0.0:

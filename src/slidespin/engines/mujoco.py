@@ -368,7 +368,7 @@ class Coupling:
         last = self._last
         if last is not None and last[0] == t:
             normal, lag = last[1], last[2]  # the same step again (mj_forward, then mj_step)
-        elif last is not None and abs(t - last[0] - h) <= 1e-9 * max(h, t):
+        elif last is not None and abs(t - last[0] - h) <= min(1e-9 * max(h, t), 0.5 * h):
             # the engine's normal force of the step before, while it is steady; while it
             # changes from step to step (a touchdown, a bounce), this step's own
             f0, f1, f2 = d.qfrc_constraint[a : a + 3].tolist()
