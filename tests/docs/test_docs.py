@@ -10,6 +10,7 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -174,12 +175,21 @@ def test_public_modules_are_the_modules_of_the_source_tree():
     assert set(PUBLIC_MODULES) == _modules_on_disk()
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def site(tmp_path_factory):
     if not ENGINES_INSTALLED:
         pytest.skip("the site documents the engine couplings: it needs the engines' extras")
     out = tmp_path_factory.mktemp("docs")
     html, doctrees = out / "html", out / "doctrees"
+    # built from a copy of docs/ (and the CHANGELOG it includes): sphinx-gallery writes its
+    # output beside the sources, and pytest-xdist may give this module's tests to two workers
+    # (the xdist_group mark is not honoured by every pytest/xdist pair), whose two builds
+    # would then collide in one docs/auto_examples
+    src = out / "src"
+    shutil.copytree(
+        DOCS, src / "docs", ignore=shutil.ignore_patterns("auto_examples", "_generated", "_build")
+    )
+    shutil.copy2(DOCS.parent / "CHANGELOG.md", src / "CHANGELOG.md")
     env = dict(os.environ, MPLBACKEND="Agg")
     proc = subprocess.run(
         [
@@ -193,7 +203,7 @@ def site(tmp_path_factory):
             "html",
             "-d",
             str(doctrees),
-            str(DOCS),
+            str(src / "docs"),
             str(html),
         ],
         env=env,
