@@ -180,7 +180,8 @@ def aim(
         The start's components to solve for: any of ``vx``, ``vy``, ``omega``, or the
         velocity of G in polar form, ``speed`` [m/s] and ``direction`` [rad from OX] (with
         or without ``omega``; the other polar component kept from ``start``): e.g.
-        ``free=("speed",)`` for how hard to throw along a given line.
+        ``free=("speed",)`` for how hard to throw along a given line (a negative speed
+        found is a launch backwards along it).
     g : float, default 9.81
         Gravitational acceleration [m/s²].
     rtol : float, default 1e-10
