@@ -127,3 +127,13 @@ def test_a_launch_against_a_push_is_found():
     x, y, _ = _rest(DISK, fr, ss.State(vx=-1.5), **kw)
     got = ss.aim(DISK, fr, (x, y), free=("vx",), g=G, **kw)
     assert got.vx == pytest.approx(-1.5, rel=1e-8)
+
+
+def test_the_refusal_carries_the_load_factor_of_the_closed_form():
+    """On a slope steeper than the friction angle the body need never stop: simulate (and so
+    aim) says so with λ* = μ cos α / sin α along the downhill axis (fx along x here)."""
+    from slidespin.motion.loaded import NeverStops
+
+    with pytest.raises(NeverStops) as info:
+        ss.simulate(BOX, ANISO, ss.State(), G, incline=ss.Incline(0.6))
+    assert info.value.load_factor == pytest.approx(0.3 / math.tan(0.6), rel=1e-6)

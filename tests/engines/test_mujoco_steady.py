@@ -23,8 +23,6 @@ mujoco = pytest.importorskip("mujoco")
 import slidespin as ss  # noqa: E402
 import slidespin.mujoco as smj  # noqa: E402
 from slidespin.contact.shapes import Annulus, Disk, Rectangle  # noqa: E402
-from slidespin.engines import _coupling  # noqa: E402
-from slidespin.engines import _stepcore as sc  # noqa: E402
 from slidespin.engines import mujoco as engine_mujoco  # noqa: E402
 
 pytestmark = pytest.mark.xdist_group("mujoco")
@@ -46,17 +44,23 @@ LAUNCHES = {
 }
 
 
-def _run(body, friction, dt, compiled, scene, steps):
-    """Run ``scene(model, data, coupling, i)`` before each of ``steps`` steps; the rows of
-    (qpos, qvel, wrench, state) after each step, the stop time and the coupling's counters."""
-    m = mujoco.MjModel.from_xml_string(smj.mujoco_xml(body, timestep=dt))
+def _run(body, friction, dt, compiled, scene, steps, *, xml=None, support=None, t0=0.0,
+         forward=False):  # fmt: skip
+    """Run ``scene(model, data, coupling, i)`` before each of ``steps`` steps (each preceded
+    by ``mj_forward`` if ``forward``; the scene ``xml``, default the body's own, from time
+    ``t0``); the rows of (x, y, yaw, vx, vy, ω, wrench, N) after each step, the states, the
+    stop time and the coupling's counters."""
+    m = mujoco.MjModel.from_xml_string(xml or smj.mujoco_xml(body, timestep=dt))
     d = mujoco.MjData(m)
-    c = smj.attach(m, d, "body", body, friction)
+    d.time = t0
+    c = smj.attach(m, d, "body", body, friction, support=support)
     c.compiled = compiled
     rows, states = [], []
     try:
         for i in range(steps):
             scene(m, d, c, i)
+            if forward:
+                mujoco.mj_forward(m, d)
             mujoco.mj_step(m, d)
             yaw = 2.0 * math.atan2(d.qpos[6], d.qpos[3])
             rows.append(np.r_[d.qpos[:2], yaw, d.qvel[:2], d.qvel[5], c.wrench, c.normal_force])
@@ -167,29 +171,16 @@ def test_stick_slip_and_pushes_the_same_step_by_step():
     assert fast[3][2] < 20  # at rest: no wrench evaluations
 
 
-def test_on_a_slope_and_with_two_bodies_the_same():
+def test_on_a_slope_the_same():
+    """Up a slope below the friction angle, then held there: the same run both ways."""
     body, friction = BOX, ss.FrictionTensor(0.4, 0.4)
-    alpha = math.atan(0.9 * 0.4)
-    xml = smj.mujoco_xml(body, timestep=1e-3, incline=alpha)
-    runs = []
-    for compiled in (True, False):
-        m = mujoco.MjModel.from_xml_string(xml)
-        d = mujoco.MjData(m)
-        c = smj.attach(m, d, "body", body, friction)
-        c.compiled = compiled
-        try:
-            for _ in range(200):
-                mujoco.mj_step(m, d)
-            smj.set_twist(m, d, "body", 0.3, 0.1, 2.0)  # up the slope, then it stays
-            out = []
-            for _ in range(2000):
-                mujoco.mj_step(m, d)
-                out.append(np.r_[d.qpos[:7], d.qvel[:6]])
-            runs.append((np.array(out), c.friction.compiled_steps))
-        finally:
-            smj.detach(m, d)
-    assert np.abs(runs[0][0] - runs[1][0]).max() <= 1e-9
-    assert runs[0][1] > 1800 and runs[1][1] == 0
+    xml = smj.mujoco_xml(body, timestep=1e-3, incline=math.atan(0.9 * 0.4))
+    scene = _launch_scene((0.3, 0.1, 2.0), 200)
+    fast = _run(body, friction, 1e-3, True, scene, 2200, xml=xml)
+    _same_run(fast, _run(body, friction, 1e-3, False, scene, 2200, xml=xml))
+    assert fast[1][-1] == "stick"
+    assert fast[3][1] > 2000  # compiled steps
+    assert np.ptp(fast[0][-500:, :2], axis=0).max() < 1e-9  # it stays
 
 
 def test_several_bodies_each_with_its_compiled_step():
@@ -244,14 +235,6 @@ def test_forward_then_step_at_the_same_time_applies_the_same_wrench():
         smj.detach(m, d)
 
 
-def test_the_compiled_step_s_constants_are_the_python_path_s():
-    assert sc.JUMP == _coupling.JUMP
-    assert sc.REST == _coupling._REST
-    assert sc.FIXED_POINT_TOL == _coupling._FIXED_POINT_TOL
-    assert sc.FIXED_POINT_ITERATIONS == _coupling._FIXED_POINT_ITERATIONS
-    assert sc.STEADY == engine_mujoco._STEADY
-
-
 def test_the_steady_step_comes_from_the_ahead_of_time_core_when_built():
     """A first attach compiles nothing where the install built the core (CI's does)."""
     from slidespin import _aot
@@ -275,23 +258,12 @@ def test_on_a_table_welded_to_the_world_the_steady_step_is_compiled_too():
         f'<body name="table" pos="0.3 0 {top / 2}"><geom name="top" type="box" '
         f'size="1 1 {top / 2}"/></body>',
     ).replace(f'<body name="body" pos="0 0 {z!r}"', f'<body name="body" pos="0 0 {top + z!r}"')
-    runs = []
-    for compiled in (True, False):
-        m = mujoco.MjModel.from_xml_string(xml)
-        d = mujoco.MjData(m)
-        c = smj.attach(m, d, "body", body, friction, support="top")
-        c.compiled = compiled
-        try:
-            for i in range(800):
-                if i == 200:
-                    smj.set_twist(m, d, "body", *twist)
-                mujoco.mj_step(m, d)
-            runs.append((d.qpos[:3].copy(), c.friction.steps, c.friction.compiled_steps))
-        finally:
-            smj.detach(m, d)
-    assert np.abs(runs[0][0] - runs[1][0]).max() <= 1e-9
-    assert runs[0][0][0] > 0.1  # it slid
-    assert runs[0][1] - runs[0][2] <= 15 and runs[1][2] == 0
+    scene = _launch_scene(twist, 200)
+    fast = _run(body, friction, 1e-3, True, scene, 800, xml=xml, support="top")
+    _same_run(fast, _run(body, friction, 1e-3, False, scene, 800, xml=xml, support="top"))
+    assert fast[0][-1, 0] > 0.1  # it slid
+    steps, compiled, _ = fast[3]
+    assert steps - compiled <= 15
 
 
 @pytest.mark.parametrize("t0", [0.0, 2e6])
@@ -299,21 +271,8 @@ def test_forward_then_step_is_one_step_at_any_time(t0):
     """mj_forward before each mj_step evaluates each time twice: one step each, also late in
     a long simulation (where 1e-9 of the time exceeds the step), the same on both paths."""
     body, friction, twist = LAUNCHES["box"]
-    runs = []
-    for compiled in (True, False):
-        m = mujoco.MjModel.from_xml_string(smj.mujoco_xml(body))
-        d = mujoco.MjData(m)
-        d.time = t0
-        c = smj.attach(m, d, "body", body, friction)
-        c.compiled = compiled
-        try:
-            for i in range(600):
-                if i == 200:
-                    smj.set_twist(m, d, "body", *twist)
-                mujoco.mj_forward(m, d)
-                mujoco.mj_step(m, d)
-            runs.append((d.qpos[:2].copy(), c.friction.steps))
-        finally:
-            smj.detach(m, d)
-    assert runs[0][1] == runs[1][1] == 600
-    assert np.abs(runs[0][0] - runs[1][0]).max() <= 1e-9
+    scene = _launch_scene(twist, 200)
+    fast = _run(body, friction, 1e-3, True, scene, 600, t0=t0, forward=True)
+    slow = _run(body, friction, 1e-3, False, scene, 600, t0=t0, forward=True)
+    _same_run(fast, slow)
+    assert fast[3][0] == slow[3][0] == 600  # one step per mj_step

@@ -23,7 +23,6 @@ target); a target is hit when x and y are within ``tol`` metres and φ within ``
 from __future__ import annotations
 
 import math
-import re
 import warnings
 from collections.abc import Sequence
 from dataclasses import replace
@@ -35,6 +34,7 @@ from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.incline import Incline
 from slidespin.contact.speed_laws import law_is_constant
+from slidespin.motion.loaded import NeverStops
 from slidespin.motion.loaded_trajectory import LoadedTrajectory
 from slidespin.motion.loads import Load
 from slidespin.motion.simulate import simulate
@@ -291,17 +291,13 @@ def aim(
         r, _, _ = _miss(run, tgt, start, names, zero, False)
     except _NoStop:  # the free components at zero do not end at rest: aim on
         r = np.full(len(tgt), np.inf)
-    except ValueError as exc:
-        if "need never stop" not in str(exc):
-            raise
-        factor = re.search(r"load factor ([0-9.eE+-]+)", str(exc))
+    except NeverStops as exc:
         parts = [f"{k} = {x!r}" for k, x in (("load", load), ("incline", incline))
                  if x is not None]  # fmt: skip
         raise ValueError(
-            f"{', '.join(parts)} {'is' if len(parts) == 1 else 'are'} invalid for aim: static friction "
-            "cannot hold the body against it"
-            + (f" (load factor {factor.group(1)} < 1)" if factor else "")
-            + ", so the body need never stop; valid: loads and slopes that static friction can "
+            f"{', '.join(parts)} {'is' if len(parts) == 1 else 'are'} invalid for aim: static "
+            f"friction cannot hold the body against it (load factor {exc.load_factor:.6g} < 1), "
+            "so the body need never stop; valid: loads and slopes that static friction can "
             "hold (load factor >= 1)"
         ) from None
     if _hit(r, ell, tol):  # the target is where the free components at zero stop

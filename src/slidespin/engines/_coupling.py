@@ -63,7 +63,7 @@ from slidespin.contact.static_set import check_anisotropy, static_support
 from slidespin.contact.statics import _load_factor_nat, _onset_nat
 from slidespin.engines import _stepcore as sc
 
-__all__ = ["SteppedFriction", "check_coupled"]
+__all__ = ["Held", "SteppedFriction", "check_coupled"]
 
 #: a load jumping by this many times the friction's capacity within a step is an impulse
 JUMP = sc.JUMP
@@ -136,7 +136,7 @@ def _unit_inradius(tw: TwistWrench) -> float:
     return value
 
 
-class _Held:
+class Held:
     """An attribute of :class:`SteppedFriction` held in its state array ``s`` (the layout of
     :mod:`slidespin.engines._stepcore`, which the compiled steady step reads and writes): a
     float (``n`` 1), or a tuple of ``n`` floats that is None while ``s[flag]`` is 0."""
@@ -203,19 +203,19 @@ class SteppedFriction:
         :mod:`slidespin.engines._stepcore`).
     """
 
-    dt = _Held(sc.S_DT)
-    stop_time = _Held(sc.S_STOP)
-    exact_checks = _Held(sc.S_EXACT, kind=int)
-    evaluations = _Held(sc.S_EVALS, kind=int)
-    steps = _Held(sc.S_STEPS, kind=int)
-    compiled_steps = _Held(sc.S_FAST, kind=int)
-    _slipping = _Held(sc.S_SLIPPING, kind=bool)
-    _nu = _Held(sc.S_NU, 3, sc.S_NU_OK)
-    _w = _Held(sc.S_W, 3)
-    _key = _Held(sc.S_KEY, 6, sc.S_KEY_OK)
-    _u = _Held(sc.S_U, 3, sc.S_U_OK)
-    _u_raw = _Held(sc.S_URAW, 3)
-    _known = _Held(sc.S_KNOWN, 3, sc.S_KNOWN_OK)
+    dt = Held(sc.S_DT)
+    stop_time = Held(sc.S_STOP)
+    exact_checks = Held(sc.S_EXACT, kind=int)
+    evaluations = Held(sc.S_EVALS, kind=int)
+    steps = Held(sc.S_STEPS, kind=int)
+    compiled_steps = Held(sc.S_FAST, kind=int)
+    _slipping = Held(sc.S_SLIPPING, kind=bool)
+    _nu = Held(sc.S_NU, 3, sc.S_NU_OK)
+    _w = Held(sc.S_W, 3)
+    _key = Held(sc.S_KEY, 6, sc.S_KEY_OK)
+    _u = Held(sc.S_U, 3, sc.S_U_OK)
+    _u_raw = Held(sc.S_URAW, 3)
+    _known = Held(sc.S_KNOWN, 3, sc.S_KNOWN_OK)
 
     @property
     def state(self) -> str:
@@ -328,9 +328,6 @@ class SteppedFriction:
     # -- the wrench of the patch --------------------------------------------------------
     def _gauge(self, b: np.ndarray, phi: float) -> float:
         """γ(b) for a wrench b in natural units (per unit load, M per ℓ): b ∈ C iff γ ≤ 1."""
-        nb = float(np.linalg.norm(b))
-        if nb == 0.0:
-            return 0.0
         c, s = math.cos(phi), math.sin(phi)
         bb = np.array([c * b[0] + s * b[1], -s * b[0] + c * b[1], b[2]])  # body frame
         upper = sc.gauge_upper.py_func(self.s, float(b[0]), float(b[1]), float(b[2]), phi)

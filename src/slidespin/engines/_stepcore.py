@@ -75,10 +75,10 @@ C_DEBT = 62
 # … the contact found then (index, geom pair) and its support's frame if static (+ flag)
 C_CI, C_G1, C_G2 = 63, 64, 65
 C_N, C_E1, C_E2, C_PC, C_FRAME_OK = 66, 69, 72, 75, 78
-# … the last wrench and normal force applied
-C_WRENCH, C_NORMAL = 79, 82
-C_WEIGHT = 83
-NSTATE = 86
+# … the last normal force applied (0 out of contact; the last wrench is S_W), the weight
+C_NORMAL = 79
+C_WEIGHT = 80
+NSTATE = 83
 
 #: state codes
 FREE, SLIP, STICK = 0.0, 1.0, 2.0
@@ -361,7 +361,7 @@ def steady_step(
     s[S_STEPS] += 1.0
     s[S_FAST] += 1.0
     s[C_LAST_T], s[C_LAST_N], s[C_LAST_LAG] = t, normal, lag
-    s[C_WRENCH], s[C_WRENCH + 1], s[C_WRENCH + 2], s[C_NORMAL] = w0, w1, w2, normal
+    s[C_NORMAL] = normal
     fx = w0 * a0 + w1 * c0
     fy = w0 * a1 + w1 * c1
     fz = w0 * a2 + w1 * c2

@@ -30,7 +30,7 @@ less than 1 %, a slip whose implicit midpoint converges, or a rest that the chea
 static set confirms: nearly every step of a slide or a rest) is done whole by one compiled
 call (:mod:`slidespin.engines._stepcore`, in the ahead-of-time core), which reads MuJoCo's
 arrays in place and adds the wrench to ``qfrc_passive`` itself, usually with one wrench
-evaluation: 3–4 µs per body and step in all, sliding or at rest, measured
+evaluation: 2.5–5.5 µs per body and step in all, sliding or at rest, measured
 (``benchmarks/engines/engines_bench.py``). Any other step (a first contact, a launch or a
 kick, a touchdown, a stop within the step, a breakaway, a gauge the bounds cannot decide, a
 moving support) is done by the Python path below, from the same state (the tests run every
@@ -73,7 +73,7 @@ from slidespin import _validate as v
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.engines import _stepcore as sc
-from slidespin.engines._coupling import SteppedFriction, check_coupled
+from slidespin.engines._coupling import Held, SteppedFriction, check_coupled
 from slidespin.studies.case import Case, load_case
 
 try:
@@ -168,11 +168,7 @@ class Coupling:
     @property
     def wrench(self) -> tuple[float, float, float]:
         """The last wrench (Fx, Fy [N] along the support's axes, M [N m] about its normal)."""
-        return tuple(self.s[sc.C_WRENCH : sc.C_WRENCH + 3].tolist())  # type: ignore[return-value]
-
-    @wrench.setter
-    def wrench(self, value) -> None:
-        self.s[sc.C_WRENCH : sc.C_WRENCH + 3] = value
+        return self.friction._w
 
     @property
     def normal_force(self) -> float:
@@ -183,32 +179,12 @@ class Coupling:
     def normal_force(self, value: float) -> None:
         self.s[sc.C_NORMAL] = value
 
-    @property
-    def _last(self) -> tuple | None:
-        """(time, N used, the engine's N of the step before it, read then) of the last step
-        in contact, or None."""
-        s = self.s
-        if s[sc.C_LAST_OK] == 0.0:
-            return None
-        return float(s[sc.C_LAST_T]), float(s[sc.C_LAST_N]), float(s[sc.C_LAST_LAG])
-
-    @_last.setter
-    def _last(self, value: tuple | None) -> None:
-        s = self.s
-        if value is None:
-            s[sc.C_LAST_OK] = 0.0
-            return
-        s[sc.C_LAST_T], s[sc.C_LAST_N], s[sc.C_LAST_LAG] = value
-        s[sc.C_LAST_OK] = 1.0
-
-    @property
-    def _debt(self) -> float:
-        """Normal force taken ahead of the engine's (a first step's weight)."""
-        return float(self.s[sc.C_DEBT])
-
-    @_debt.setter
-    def _debt(self, value: float) -> None:
-        self.s[sc.C_DEBT] = value
+    #: (time, N used, the engine's N of the step before it, read then) of the last step in
+    #: contact, or None; the normal force taken ahead of the engine's (a first step's
+    #: weight); the body's weight m g [N] (world frame)
+    _last = Held(sc.C_LAST_T, 3, sc.C_LAST_OK)
+    _debt = Held(sc.C_DEBT)
+    _weight = Held(sc.C_WEIGHT, 3)
 
     def __init__(self, model, data, body_id: int, body: Body, friction: FrictionTensor, support):
         self.body_name = model.body(body_id).name
@@ -228,7 +204,6 @@ class Coupling:
         izz = float(zb @ inertia_world @ zb)
         self.friction = SteppedFriction(body, friction, mass, izz, float(model.opt.timestep))
         self.s = self.friction.s  # the state, shared with the compiled steady step
-        self.wrench = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
         self._last = None
         self._bset = {int(g) for g in self.geoms}
@@ -240,7 +215,6 @@ class Coupling:
         self.error: Exception | None = None
         self._warned_rk4 = False
         self._weight = tuple((mass * model.opt.gravity).tolist())
-        self.s[sc.C_WEIGHT : sc.C_WEIGHT + 3] = self._weight
         self._debt = 0.0
         # the compiled steady step (slidespin.engines._stepcore) and its arguments: MuJoCo's
         # arrays of this data (views of its buffers, which do not move), the kernel's
@@ -276,7 +250,6 @@ class Coupling:
 
     def _free(self, d) -> None:
         self.friction.airborne(d.time)
-        self.wrench = (0.0, 0.0, 0.0)
         self.normal_force = 0.0
         self._last = None
 
@@ -410,7 +383,6 @@ class Coupling:
             t0 * n0 + t1 * n1 + t2 * n2,
         )
         w = self.friction.step(t, nu, phi, normal, load, known)
-        self.wrench = w
         self.normal_force = normal
         if not normal > 0.0:
             return None

@@ -78,12 +78,30 @@ from slidespin.motion.state import State
 __all__ = [
     "GAUGE_TOL",
     "METHODS",
+    "NeverStops",
     "SCAN_POINTS_MAX",
     "SCAN_SAMPLES_MAX",
     "SCAN_STEP_MAX",
     "default_scan_step",
     "simulate_loaded",
 ]
+
+
+class NeverStops(ValueError):
+    """A run without ``t_end`` under a load (or a slope) that static friction cannot hold:
+    the body need never stop.
+
+    Attributes
+    ----------
+    load_factor : float
+        λ* < 1 at the start: the applied wrench would have to shrink by this factor to be
+        held (:func:`slidespin.load_factor`).
+    """
+
+    def __init__(self, message: str, load_factor: float) -> None:
+        super().__init__(message)
+        self.load_factor = load_factor
+
 
 _STOP_DROP = 1e-13  # the stop is declared when s has fallen below this fraction of its scale
 STEADY_TOL = 1e-6  # relative change of the speed that would take the elapsed time: steady
@@ -276,10 +294,11 @@ def simulate_loaded(
         _check_knots(prob, t_end_n, initial_state.phi)
 
     if math.isinf(t_end_n) and prob.gauge(0.0, initial_state.phi) > 1.0 + GAUGE_TOL:
-        raise ValueError(
+        factor = 1.0 / prob.gauge(0.0, initial_state.phi)
+        raise NeverStops(
             "t_end = None is invalid here: the load exceeds what static friction can hold "
-            f"(load factor {1.0 / prob.gauge(0.0, initial_state.phi):.6g} < 1), so the body "
-            "need never stop; give t_end [s]"
+            f"(load factor {factor:.6g} < 1), so the body need never stop; give t_end [s]",
+            factor,
         )
     slow_n = slow_speed / prob.v_unit
     engine: CompiledSlip | PythonSlip
