@@ -69,8 +69,8 @@ _LOADED = T.Tuple((_A1, _I, _I, _I, _I, _A2, _A1))
 _LOADED_TAIL = (_A1, _F, _A1, _F, _A1, _F, _F, _A1, _F, _F, _F, _I)
 
 # integrate_sensitivities' result, and its arguments after (pars, fp, geos)
-_SENS = T.Tuple((_A1, _A1, _I, _I, _I, _A2))
-_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, T.boolean, _I, _A1)
+_SENS = T.Tuple((_A1, _A1, _I, _I, _I, _A2, _A2))
+_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, T.boolean, _I, _A1, _A1)
 
 # the MuJoCo coupling's steady step: MuJoCo's arrays, the contacts' geom pairs (a strided
 # int32 view), body, dof, time, step, state, then the kernel's arguments
@@ -168,18 +168,20 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
         )  # fmt: skip
 
     @cc.export("sensitivities_ellipse", _SENS(_A2, _A2, *_SENS_TAIL))
-    def sensitivities_ellipse(pars, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus):
+    def sensitivities_ellipse(
+        pars, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
+    ):
         return integrate_sensitivities(
-            pars, None, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
+            pars, None, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
         )
 
     @cc.export("sensitivities_footprint", _SENS(_A2, _A2, _A2, _A2, *_SENS_TAIL))
     def sensitivities_footprint(
-        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
+        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
     ):
         fp = (fe, fc, geos[0])
         return integrate_sensitivities(
-            pars, fp, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus
+            pars, fp, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
         )
 
     @cc.export("steady_ellipse", _I(*_STEADY, _A1))

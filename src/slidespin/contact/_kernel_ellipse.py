@@ -279,14 +279,16 @@ def wrench_constants(bn, law, xg, yg, tnorm, tol):
 
 
 @jit(error_model="numpy")
-def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
-    """:func:`wrench_body_info` with precomputed constants ``K`` (:func:`wrench_constants`)
-    and a reusable workspace ``W`` (:func:`workspace`); the engine's inner call."""
+def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
+    """:func:`wrench_fast` and the tabulated rule it ended with: (fx, fy, m, status, method,
+    nodes, n, half), ``n`` the accepted rule's node count (0 for a translation and the adaptive
+    fallback) and ``half`` its half-width (Clenshaw–Curtis); its directions and weights are
+    left in rows 0–4 of ``W`` (:mod:`slidespin.contact._kernel_ellipse_jac` reuses them)."""
     bn, s22, ib, xg, yg, lx, ly, ksq, re0, d_a, d_am, logterm, r_a, x_am = K
     if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
         speed = math.sqrt(vx * vx + vy * vy)
         if speed == 0.0:
-            return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0
+            return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0
         ux = vx / speed
         uy = vy / speed
         # pure translation: F = −𝔽 v̂, M = 0 since G lies over the pressure centroid
@@ -297,9 +299,11 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
             STATUS_OK,
             METHOD_TRANSLATION,
             0,
+            0,
+            0.0,
         )
     if t00 == 0.0 and t01 == 0.0 and t10 == 0.0 and t11 == 0.0:
-        return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0
+        return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0
     cx = xg - vy / omega
     cy = yg + vx / omega
     sgn = -1.0 if omega > 0.0 else 1.0  # the overall factor −sign(ω)
@@ -375,7 +379,7 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
             )
             used += n + 1 if method == METHOD_CLENSHAW_CURTIS_INSIDE else n
             if _estimate(e1, e2) <= tol:
-                return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used
+                return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half
             n *= 2
         # fallback, split where D is smallest (the near-tangent line through a near-rim ICR)
         if not branch:
@@ -406,7 +410,7 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
             0.0,
             0.0,
         )
-        return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_INSIDE, used + nev
+        return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_INSIDE, used + nev, 0, 0.0
     # ---- ICR outside: the sector α₋ ≤ α ≤ α₊ of lines that meet the patch (α from ê_c)
     dist = math.sqrt(cx * cx + cy * cy)
     ecx = -cx / dist
@@ -491,7 +495,7 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
         )
         used += n - 1 if branch else n + 1
         if _estimate(e1, e2) <= tol:
-            return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used
+            return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half
         n *= 2
     mid = 0.5 * (a_plus + a_minus)
     half = 0.5 * (a_plus - a_minus)
@@ -520,7 +524,17 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
         mid,
         half,
     )
-    return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_OUTSIDE, used + nev
+    return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_OUTSIDE, used + nev, 0, 0.0
+
+
+@jit(error_model="numpy")
+def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
+    """:func:`wrench_body_info` with precomputed constants ``K`` (:func:`wrench_constants`)
+    and a reusable workspace ``W`` (:func:`workspace`); the engine's inner call."""
+    fx, fy, m, status, method, used, _, _ = wrench_rule(
+        law, K, t00, t01, t10, t11, vx, vy, omega, tol, W
+    )
+    return fx, fy, m, status, method, used
 
 
 @jit(error_model="numpy", inline="always")

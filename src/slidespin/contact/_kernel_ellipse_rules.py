@@ -212,6 +212,46 @@ _CC_SIZES = np.array(CC_SIZES, dtype=np.int64)
 
 
 @jit(error_model="numpy", inline="always")
+def chord_moments(law, s22, ib, lx, ly, ex, ey, cde, exc, A, disc, jac):
+    """The chord through the ICR in direction ê and its pressure moments, times ``jac``:
+    (m_r, m, K₀, K₁, K₂, J₁) with m_r = (mx, my) the chord's midpoint, m = (m_r − c)·ê, x the
+    position on the chord from m_r and
+
+        K₀ = ∫ p dx,   K₁ = ∫ p (m + x) dx,   K₂ = ∫ p (m + x) x dx,   J₁ = ∫ p x dx
+
+    over the chord (the module notes; K₀ and J₁ are the twist derivatives' moments, see
+    :mod:`slidespin.contact._kernel_ellipse_jac`). Arguments as :func:`_line_terms`.
+    """
+    ia = 1.0 / A
+    h2 = disc * ia * ia
+    f = exc * (ex * ey * (s22 - 1.0)) * ia  # (ê×c) (ê·S·ê⊥)/A, ê⊥ = ẑ×ê
+    mx = -exc * ey - ex * f  # chord midpoint m_r
+    my = exc * ex - ey * f
+    m = -cde - f  # (m_r − c)·ê
+    j1 = 0.0
+    if law == LAW_BOUSSINESQ:
+        k0 = 0.5 * ib * math.sqrt(ia) * jac
+        k1 = k0 * m
+        k2 = 0.5 * k0 * h2
+    elif law == LAW_HERTZ:
+        k0 = 0.75 * ib * math.sqrt(A) * h2 * jac
+        k1 = k0 * m
+        k2 = 0.25 * k0 * h2
+    else:
+        k0 = (2.0 / math.pi) * ib * math.sqrt(h2) * jac
+        k1 = k0 * m
+        k2 = (1.0 / 3.0) * k0 * h2
+        if law == LAW_LINEAR:
+            l0 = 1.0 + lx * mx + ly * my  # p/p₀ at the midpoint, and its slope along ê
+            l1 = lx * ex + ly * ey
+            j1 = l1 * k2
+            k0 = l0 * k0
+            k1 = l0 * k1 + j1
+            k2 = (l0 + l1 * m) * k2
+    return mx, my, m, k0, k1, k2, j1
+
+
+@jit(error_model="numpy", inline="always")
 def _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, exc, A, disc, jac):
     """(F_x, F_y, M) integrand, times ``jac``, of the line through the ICR in direction ê
     (before the factor −sign ω), from the chord moments K₁, K₂ of the module notes.
@@ -220,30 +260,7 @@ def _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, e
     ``A`` = ê·S·ê, ``disc`` = D ≥ 0, ``ib`` = 1/κ, (lx, ly) the gradient of the linear law's
     p/p₀.
     """
-    ia = 1.0 / A
-    h2 = disc * ia * ia
-    f = exc * (ex * ey * (s22 - 1.0)) * ia  # (ê×c) (ê·S·ê⊥)/A, ê⊥ = ẑ×ê
-    mx = -exc * ey - ex * f  # chord midpoint m_r
-    my = exc * ex - ey * f
-    m = -cde - f  # (m_r − c)·ê
-    if law == LAW_BOUSSINESQ:
-        w = 0.5 * ib * math.sqrt(ia) * jac
-        k1 = w * m
-        k2 = 0.5 * w * h2
-    elif law == LAW_HERTZ:
-        w = 0.75 * ib * math.sqrt(A) * h2 * jac
-        k1 = w * m
-        k2 = 0.25 * w * h2
-    else:
-        h = math.sqrt(h2)
-        c = (2.0 / math.pi) * ib * h * jac
-        k1 = c * m
-        k2 = (1.0 / 3.0) * c * h2
-        if law == LAW_LINEAR:
-            l0 = 1.0 + lx * mx + ly * my  # p/p₀ at the midpoint, and its slope along ê
-            l1 = lx * ex + ly * ey
-            k1 = l0 * k1 + l1 * k2
-            k2 = (l0 + l1 * m) * k2
+    mx, my, _, _, k1, k2, _ = chord_moments(law, s22, ib, lx, ly, ex, ey, cde, exc, A, disc, jac)
     gx = -t00 * ey + t01 * ex  # 𝔽 t̂, t̂ = (−ey, ex)
     gy = -t10 * ey + t11 * ex
     mom = k1 * ((mx - xg) * gy - (my - yg) * gx) + k2 * (ex * gy - ey * gx)

@@ -39,15 +39,23 @@ import numpy as np
 from slidespin import _aot
 from slidespin._jit import is_none_type, jit, overload
 from slidespin.contact._engine import (
+    P_BODY,
+    P_K,
     P_SHAPE,
+    P_T00,
+    P_T01,
+    P_T10,
+    P_T11,
     SHAPE_FOOTPRINT,
+    accelerations_jacobian,
     footprint_argument,
     kernel_constants,
 )
-from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE
+from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE, tensor_in_body
+from slidespin.contact._kernel_ellipse_jac import JAC_SIZE, JAC_WORKSPACE_SHAPE
 from slidespin.motion import _dop853 as _dop
 from slidespin.motion._flow import NY, _rhs
-from slidespin.motion._integrator import _err_norm
+from slidespin.motion._integrator import _E3, _E5
 
 _NS = _dop.N_STAGES
 _A = np.ascontiguousarray(_dop.A)
@@ -73,14 +81,142 @@ def _row_patch_of_type(fp, geos, j):
 
 
 @jit(error_model="numpy")
-def joint_rhs(pars, kcs, W, fp, geos, hs, Y, out, yp, ym, gp, gm):
+def rhs_jacobian(par, kc, W, D, jo, fp, y, out, Jy):
+    """The right-hand side G(y) of :func:`slidespin.motion._flow._rhs` into ``out`` and, when
+    the kernel has the wrench's exact derivatives, ∂G/∂y into ``Jy`` (NY × NY); returns
+    (wrench status, available). ``jo`` keeps the kernel's derivative vector for
+    :func:`parameter_rhs`."""
+    z1, z2, z3 = y[0], y[1], y[2]
+    nz = math.sqrt(z1 * z1 + z2 * z2 + z3 * z3)
+    u1, u2, u3 = z1 / nz, z2 / nz, z3 / nz
+    k = par[P_K]
+    a1, a2, a3, st, ok = accelerations_jacobian(par, kc, W, D, fp, u1, u2, u3, y[7], jo)
+    ua = u1 * a1 + u2 * a2 + u3 * a3
+    out[0] = a1 - ua * u1
+    out[1] = a2 - ua * u2
+    out[2] = a3 - ua * u3
+    out[3] = ua
+    s = math.exp(y[3])
+    s2 = s * s
+    r = math.sqrt(u1 * u1 + u2 * u2)
+    out[4] = s
+    out[5] = s2 * u1
+    out[6] = s2 * u2
+    out[7] = s2 * u3 / k
+    out[8] = s2 * r
+    if not ok:
+        return st, ok
+    # dA/du: the twist is (u1, u2, u3/k) and A₃ = M/k
+    ik = 1.0 / k
+    d00, d01, d02 = jo[9], jo[10], jo[11] * ik
+    d10, d11, d12 = jo[12], jo[13], jo[14] * ik
+    d20, d21, d22 = jo[15] * ik, jo[16] * ik, jo[17] * ik * ik
+    p0, p1, p2 = jo[18], jo[19], jo[20] * ik
+    udphi = u1 * p0 + u2 * p1 + u3 * p2
+    # ∂(u·A)/∂u_j
+    c0 = a1 + u1 * d00 + u2 * d10 + u3 * d20
+    c1 = a2 + u1 * d01 + u2 * d11 + u3 * d21
+    c2 = a3 + u1 * d02 + u2 * d12 + u3 * d22
+    for i in range(NY):
+        for j in range(NY):
+            Jy[i, j] = 0.0
+    # rows ∂G_i/∂u before the normalisation's projection P = (I − uuᵀ)/|z|, kept in the
+    # columns 4–6 of Jy (zero in ∂G/∂y) until projected into columns 0–2
+    Jy[0, 4], Jy[0, 5], Jy[0, 6] = d00 - u1 * c0 - ua, d01 - u1 * c1, d02 - u1 * c2
+    Jy[1, 4], Jy[1, 5], Jy[1, 6] = d10 - u2 * c0, d11 - u2 * c1 - ua, d12 - u2 * c2
+    Jy[2, 4], Jy[2, 5], Jy[2, 6] = d20 - u3 * c0, d21 - u3 * c1, d22 - u3 * c2 - ua
+    Jy[3, 4], Jy[3, 5], Jy[3, 6] = c0, c1, c2
+    Jy[5, 4] = s2
+    Jy[6, 5] = s2
+    Jy[7, 6] = s2 * ik
+    if r > 0.0:
+        Jy[8, 4] = s2 * u1 / r
+        Jy[8, 5] = s2 * u2 / r
+    inz = 1.0 / nz
+    for i in range(NY):
+        g0, g1, g2 = Jy[i, 4], Jy[i, 5], Jy[i, 6]
+        gu = g0 * u1 + g1 * u2 + g2 * u3
+        Jy[i, 0] = (g0 - gu * u1) * inz
+        Jy[i, 1] = (g1 - gu * u2) * inz
+        Jy[i, 2] = (g2 - gu * u3) * inz
+        Jy[i, 4] = 0.0
+        Jy[i, 5] = 0.0
+        Jy[i, 6] = 0.0
+    Jy[0, 7] = p0 - udphi * u1
+    Jy[1, 7] = p1 - udphi * u2
+    Jy[2, 7] = p2 - udphi * u3
+    Jy[3, 7] = udphi
+    Jy[4, 3] = s
+    Jy[5, 3] = 2.0 * s2 * u1
+    Jy[6, 3] = 2.0 * s2 * u2
+    Jy[7, 3] = 2.0 * s2 * u3 * ik
+    Jy[8, 3] = 2.0 * s2 * r
+    return st, ok
+
+
+@jit(error_model="numpy")
+def parameter_rhs(par, jo, y, d00, d01, d10, d11, dk, out):
+    """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
+    d𝔽 = (d00, d01; d10, d11) per unit θ, in the tensor's own frame) and the radius of
+    gyration (by dk): exact, from the wrench's isotropic parts and its twist derivatives
+    in ``jo`` (:func:`rhs_jacobian` at ``y``); the wrench is linear in 𝔽 (MODEL §10)."""
+    z1, z2, z3 = y[0], y[1], y[2]
+    nz = math.sqrt(z1 * z1 + z2 * z2 + z3 * z3)
+    u1, u2, u3 = z1 / nz, z2 / nz, z3 / nz
+    k = par[P_K]
+    phi = y[7]
+    c = math.cos(phi)
+    sn = math.sin(phi)
+    e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, par[P_BODY] != 0.0, c, sn)
+    fbx = -(e00 * jo[3] + e01 * jo[4])  # F = −𝔽Q, M = −Σ 𝔽_ij N_ij (body frame)
+    fby = -(e10 * jo[3] + e11 * jo[4])
+    mm = -(e00 * jo[5] + e01 * jo[6] + e10 * jo[7] + e11 * jo[8])
+    b1 = c * fbx - sn * fby
+    b2 = sn * fbx + c * fby
+    b3 = mm / k
+    if dk != 0.0:
+        dt = -u3 / (k * k) * dk  # the twist's ω = u3/k moves
+        b1 += jo[11] * dt
+        b2 += jo[14] * dt
+        b3 += jo[17] * dt / k - jo[2] / (k * k) * dk
+    ub = u1 * b1 + u2 * b2 + u3 * b3
+    out[0] += b1 - ub * u1
+    out[1] += b2 - ub * u2
+    out[2] += b3 - ub * u3
+    out[3] += ub
+    if dk != 0.0:
+        s = math.exp(y[3])
+        out[7] -= s * s * u3 / (k * k) * dk
+
+
+@jit(error_model="numpy")
+def joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, gp, gm):
     """Right-hand side of the joint system (y, S₁, …, S_p) (MODEL §15); returns the number
-    of wrench evaluations above their error target."""
+    of wrench evaluations above their error target.
+
+    With the wrench's exact derivatives (:func:`rhs_jacobian`), S_k' = (∂G/∂y) S_k + ∂G/∂θ_k,
+    ∂G/∂θ_k exact (:func:`parameter_rhs`) for the parameters marked ``direct`` (tensor
+    entries, inertia, start; ``dts[k]`` = (d𝔽, dk)); the others (the pressure centre) and
+    every parameter at a state without them, by the central difference of the module notes.
+    """
     npar = hs.size
-    fails = _rhs(pars[0], kcs[0], W, row_patch(fp, geos, 0), Y[:NY], out[:NY])
+    st, ok = rhs_jacobian(pars[0], kcs[0], W, D, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
+    fails = st
     for k in range(npar):
-        h = hs[k]
         off = NY * (k + 1)
+        if ok and direct[k]:
+            for i in range(NY):
+                acc = 0.0
+                for j in range(NY):
+                    acc += Jy[i, j] * Y[off + j]
+                out[off + i] = acc
+            d = dts[k]
+            if d[0] != 0.0 or d[1] != 0.0 or d[2] != 0.0 or d[3] != 0.0 or d[4] != 0.0:
+                parameter_rhs(
+                    pars[0], jo, Y[:NY], d[0], d[1], d[2], d[3], d[4], out[off : off + NY]
+                )
+            continue
+        h = hs[k]
         for i in range(NY):
             yp[i] = Y[i] + h * Y[off + i]
             ym[i] = Y[i] - h * Y[off + i]
@@ -90,6 +226,58 @@ def joint_rhs(pars, kcs, W, fp, geos, hs, Y, out, yp, ym, gp, gm):
         for i in range(NY):
             out[off + i] = (gp[i] - gm[i]) / (2.0 * h)
     return fails
+
+
+@jit(error_model="numpy")
+def direct_parameters(pars, geos, hs):
+    """Which parameters move only the tensor's entries and k (``direct``), and their rates
+    (d𝔽, dk) per unit θ (central differences of rows that are linear in θ for the tensor)."""
+    npar = hs.size
+    direct = np.zeros(npar, dtype=np.bool_)
+    dts = np.zeros((npar, 5))
+    tensor = (P_T00, P_T01, P_T10, P_T11)
+    for k in range(npar):
+        p = pars[1 + 2 * k]
+        m = pars[2 + 2 * k]
+        same = True
+        for i in range(pars.shape[1]):
+            if i != P_K and i != P_T00 and i != P_T01 and i != P_T10 and i != P_T11:
+                if p[i] != pars[0, i] or m[i] != pars[0, i]:
+                    same = False
+        for i in range(geos.shape[1]):
+            if geos[1 + 2 * k, i] != geos[0, i] or geos[2 + 2 * k, i] != geos[0, i]:
+                same = False
+        direct[k] = same
+        for i in range(4):
+            dts[k, i] = (p[tensor[i]] - m[tensor[i]]) / (2.0 * hs[k])
+        dts[k, 4] = (p[P_K] - m[P_K]) / (2.0 * hs[k])
+    return direct, dts
+
+
+@jit(error_model="numpy")
+def _joint_err_norm(K, h, scale, controlled):
+    """The integrator's DOP853 error norm (:func:`slidespin.motion._integrator._err_norm`)
+    over the components marked ``controlled`` only (the state, and the sensitivities of the
+    parameters whose right-hand side is a central difference)."""
+    e5 = 0.0
+    e3 = 0.0
+    m = 0
+    for i in range(scale.size):
+        if not controlled[i]:
+            continue
+        m += 1
+        a5 = 0.0
+        a3 = 0.0
+        for j in range(_NS + 1):
+            a5 += K[j, i] * _E5[j]
+            a3 += K[j, i] * _E3[j]
+        a5 /= scale[i]
+        a3 /= scale[i]
+        e5 += a5 * a5
+        e3 += a3 * a3
+    if e5 == 0.0 and e3 == 0.0:
+        return 0.0
+    return abs(h) * e5 / math.sqrt((e5 + 0.01 * e3) * m)
 
 
 @jit(error_model="numpy")
@@ -108,7 +296,7 @@ def _converged_measure(Y, F, npar, rate):
 
 @jit(error_model="numpy")
 def integrate_sensitivities(
-    pars, fp, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus
+    pars, fp, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus, yterm
 ):
     """Integrate the joint system from ``Y0`` until the stop's sensitivities converge.
 
@@ -140,6 +328,9 @@ def integrate_sensitivities(
     taus : ndarray (n,)
         Increasing regularised times at which to record (Y, dY/dτ); steps are cut to land on
         them exactly.
+    yterm : ndarray (NY,)
+        A state (the plain run's stop) at which to return the terms of
+        :func:`stop_terms`.
 
     Returns
     -------
@@ -153,11 +344,22 @@ def integrate_sensitivities(
         Accepted steps; wrench evaluations above their error target.
     rec : ndarray (n, len(Y))
         Y at the times ``taus`` that were reached (rows beyond remain NaN).
+    term : ndarray (NY + p, NY)
+        :func:`stop_terms` at ``yterm``.
     """
     n = Y0.size
     npar = hs.size
     kcs = [kernel_constants(pars[j]) for j in range(pars.shape[0])]
     W = np.empty(WORKSPACE_SHAPE)
+    D = np.empty(JAC_WORKSPACE_SHAPE)
+    jo = np.empty(JAC_SIZE)
+    Jy = np.empty((NY, NY))
+    direct, dts = direct_parameters(pars, geos, hs)
+    analytic = fp is None  # the kernels with exact derivatives (the ellipse's)
+    controlled = np.ones(n, dtype=np.bool_)
+    for k in range(npar):
+        if direct[k] and analytic:
+            controlled[NY * (k + 1) : NY * (k + 2)] = False
     yp = np.empty(NY)
     ym = np.empty(NY)
     gp = np.empty(NY)
@@ -169,7 +371,7 @@ def integrate_sensitivities(
     scale = np.empty(n)
     F = np.empty(n)
     rec = np.full((taus.size, n), np.nan)
-    fails = joint_rhs(pars, kcs, W, fp, geos, hs, Y, F, yp, ym, gp, gm)
+    fails = joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, F, yp, ym, gp, gm)
     ln_s0 = Y[3]
     tau = 0.0
     nxt = 0
@@ -207,17 +409,21 @@ def integrate_sensitivities(
                     for j in range(st):
                         acc += _A[st, j] * K[j, i]
                     Yt[i] = Y[i] + hh * acc
-                fails += joint_rhs(pars, kcs, W, fp, geos, hs, Yt, K[st], yp, ym, gp, gm)
+                fails += joint_rhs(
+                    pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Yt, K[st], yp, ym, gp, gm
+                )
             for i in range(n):
                 acc = 0.0
                 for j in range(_NS):
                     acc += _B[j] * K[j, i]
                 Ynew[i] = Y[i] + hh * acc
-            fails += joint_rhs(pars, kcs, W, fp, geos, hs, Ynew, K[_NS], yp, ym, gp, gm)
+            fails += joint_rhs(
+                pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Ynew, K[_NS], yp, ym, gp, gm
+            )
             for i in range(n):
                 scale[i] = atol + max(abs(Y[i]), abs(Ynew[i])) * rtol
             scale[7] = atol  # the body angle to an absolute tolerance, as the integrator
-            en = _err_norm(K, hh, scale)
+            en = _joint_err_norm(K, hh, scale, controlled)
             if not math.isfinite(en):
                 status = SS_NON_FINITE
                 break
@@ -250,10 +456,32 @@ def integrate_sensitivities(
             if _converged_measure(Y, F, npar, rate) < conv_tol:
                 status = SS_CONVERGED
                 break
-    return Y, F, status, nsteps, fails, rec
+    term = stop_terms(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, yterm)
+    return Y, F, status, nsteps, fails, rec, term
 
 
-def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus):
+@jit(error_model="numpy")
+def stop_terms(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, y):
+    """∂G/∂y (rows 0..NY−1, NaN where the kernel has no exact derivatives) and ∂G/∂θ_k (row
+    NY + k) at the state ``y``: for the implicit-function theorem at the terminal direction
+    (:func:`slidespin.motion.sensitivity._terminal_sensitivity`)."""
+    npar = hs.size
+    n = NY * (1 + npar)
+    term = np.full((NY + npar, NY), np.nan)
+    Y = np.zeros(n)
+    Y[:NY] = y
+    out = np.empty(n)
+    st, ok = rhs_jacobian(pars[0], kcs[0], W, D, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
+    if ok:
+        term[:NY] = Jy
+    joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, out,
+              np.empty(NY), np.empty(NY), np.empty(NY), np.empty(NY))  # fmt: skip
+    for k in range(npar):
+        term[NY + k] = out[NY * (k + 1) : NY * (k + 2)]
+    return term
+
+
+def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus, yterm):
     """:func:`integrate_sensitivities` for the rows ``pars`` (and ``geos``) and the footprint
     arrays ``fe``, ``fc`` (empty for an ellipse): run by the ahead-of-time compiled core when
     the install built one from these sources (:mod:`slidespin._aot`), else by the JIT."""
@@ -264,6 +492,7 @@ def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_s
         np.ascontiguousarray(Y0, dtype=np.float64),
         float(rtol), float(atol), float(ln_drop), float(conv_tol), bool(replay),
         int(max_steps), np.ascontiguousarray(taus, dtype=np.float64),
+        np.ascontiguousarray(yterm, dtype=np.float64),
     )  # fmt: skip
     footprint = pars[0, P_SHAPE] == SHAPE_FOOTPRINT
     aot = _aot.core()

@@ -292,8 +292,10 @@ def compute(
         Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
         dk[k] = (pp[_engine.P_K] - pm[_engine.P_K]) / (2.0 * h)
     tol = max(rtol, RUN_TOL)
-    Y, F, status, nsteps, fails, rec = _core.run(
-        pars, fe, fc, geos, hs, Y0, tol, tol, LN_DROP, CONV_TOL, REPLAY, MAX_STEPS, taus
+    yterm = np.asarray(rows[-1], dtype=np.float64).copy()  # the stop: u*, φ*
+    yterm[:3] /= np.linalg.norm(yterm[:3])
+    Y, F, status, nsteps, fails, rec, term = _core.run(
+        pars, fe, fc, geos, hs, Y0, tol, tol, LN_DROP, CONV_TOL, REPLAY, MAX_STEPS, taus, yterm
     )
     if status != _core.SS_CONVERGED or fails:
         raise RuntimeError(
@@ -309,7 +311,7 @@ def compute(
     su = np.full((npar, 3), np.nan)
     if ending == "mixed":
         s_phi = Y[NY + 7 :: NY][:npar]
-        su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi)
+        su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi, term)
     kinked = _breaks_symmetry(par0, friction, names) if ending == "mixed" else ()
     jumps = _leaves_invariant_set(ending, eigenvalue_ratio, names)
     if ending == "spiral":
@@ -373,23 +375,29 @@ def _sphere_flow(par, fe, fc, geo, phi: float, U: NDArray) -> NDArray:
     return A - np.sum(U * A, axis=1)[:, None] * U
 
 
-def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi) -> NDArray:
+def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi, term) -> NDArray:
     """∂u*/∂θ_k of the terminal direction (a mixed ending), by the implicit function theorem
     on its fixed-point condition T(u*, φ*; θ) = 0 on the sphere (MODEL §5, §15):
-    J_T ∂u* = −(∂T/∂φ ∂φ*/∂θ + ∂T/∂θ) in the tangent plane at u*, with J_T, ∂T/∂φ and ∂T/∂θ
-    by central differences of the exact wrench (steps ``REL_STEP``, and h_k as the run), and
-    ∂φ*/∂θ = ``s_phi`` from the run. (Integrating S_u to its limit instead converges only at
-    the fixed point's eigenvalue, slowly near a Table 2 boundary.)"""
+    J_T ∂u* = −(∂T/∂φ ∂φ*/∂θ + ∂T/∂θ) in the tangent plane at u*, with ∂φ*/∂θ = ``s_phi``
+    from the run. J_T, ∂T/∂φ and ∂T/∂θ are the rows 0–2 of the run's ``term`` (the exact
+    derivatives of :func:`slidespin.motion._sensitivity_core.stop_terms`); where the kernel
+    has none (a footprint), J_T and ∂T/∂φ are central differences of the exact wrench
+    (steps ``REL_STEP``). (Integrating S_u to its limit instead converges only at the fixed
+    point's eigenvalue, slowly near a Table 2 boundary.)"""
     u = u / np.linalg.norm(u)
-    par, geo = pars[0], geos[0]
-    d = REL_STEP
     eye = np.eye(3)
-    U = np.vstack([u + d * eye, u - d * eye])
-    T = _sphere_flow(par, fe, fc, geo, phi, U)
-    jac = (T[:3] - T[3:]).T / (2.0 * d)  # columns ∂T/∂u_i
-    tp = _sphere_flow(par, fe, fc, geo, phi + d, u[None, :])[0]
-    tm = _sphere_flow(par, fe, fc, geo, phi - d, u[None, :])[0]
-    dphi = (tp - tm) / (2.0 * d)
+    if np.all(np.isfinite(term[:NY])):
+        jac = term[:3, :3]
+        dphi = term[:3, 7]
+    else:
+        par, geo = pars[0], geos[0]
+        d = REL_STEP
+        U = np.vstack([u + d * eye, u - d * eye])
+        T = _sphere_flow(par, fe, fc, geo, phi, U)
+        jac = (T[:3] - T[3:]).T / (2.0 * d)  # columns ∂T/∂u_i
+        tp = _sphere_flow(par, fe, fc, geo, phi + d, u[None, :])[0]
+        tm = _sphere_flow(par, fe, fc, geo, phi - d, u[None, :])[0]
+        dphi = (tp - tm) / (2.0 * d)
     # an orthonormal basis (B) of the tangent plane at u
     e = eye[int(np.argmin(np.abs(u)))]
     b1 = e - (e @ u) * u
@@ -398,9 +406,7 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi) -> NDArray:
     jt = B.T @ jac @ B
     out = np.empty((hs.size, 3))
     for k in range(hs.size):
-        up = _sphere_flow(pars[1 + 2 * k], fe, fc, geos[1 + 2 * k], phi, u[None, :])[0]
-        um = _sphere_flow(pars[2 + 2 * k], fe, fc, geos[2 + 2 * k], phi, u[None, :])[0]
-        rhs = dphi * s_phi[k] + (up - um) / (2.0 * hs[k])
+        rhs = dphi * s_phi[k] + term[NY + k, :3]
         out[k] = B @ _solve_transverse(jt, -(B.T @ rhs))
     return out
 

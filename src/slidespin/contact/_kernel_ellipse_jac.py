@@ -1,0 +1,328 @@
+"""Compiled twist derivatives of the elliptic wrench, on the nodes of its own rule (MODEL §2, §15).
+
+With w = ω ẑ×(r − c) about the ICR c, ŵ = w/|w| and a change δ(v, ω) of the twist (body
+frame, v the velocity of G), the slip velocity changes by δw = δv + δω ẑ×(r − r_G) and
+
+    δŵ = (I − ŵŵᵀ) δw / |w|.
+
+On the line through c in direction ê (r = c + ρê, ρ signed, dS = |ρ| dρ dψ over a half turn)
+ŵ = ±ẑ×ê, so I − ŵŵᵀ = êêᵀ, |w| = |ω||ρ|, and ê·δw = ê·δw_c does not depend on ρ
+(ê·(ẑ×ê) = 0), δw_c = δv + δω ẑ×(c − r_G) being the change of velocity at the ICR. The
+factor |ρ| cancels, and with the isotropic integrals Q = ∫ p ŵ dS and the tensor 𝔽 (F = −𝔽Q):
+
+    δF = −(1/|ω|) 𝔽 ∫ ê (ê·δw_c) K₀ dψ,
+    δM = −(1/|ω|) ∫ (ê·δw_c) [((m_r − r_G) K₀ + ê J₁) × 𝔽ê] dψ,
+
+K₀ = ∫ p dx and J₁ = ∫ p x dx the chord moments one order below the wrench's K₁, K₂
+(:func:`slidespin.contact._kernel_ellipse_rules.chord_moments`; J₁ = 0 but for the linear
+law). ê·δw_c = a·δ(vx, vy, ω) with a = (ê_x, ê_y, −ê×(c − r_G)), all O(1) on the lines that
+meet the patch however far the ICR is. The integrands have the branch points of the wrench's
+own (K₀ ∝ h like K₁ ∝ hm), so the derivative is summed with the wrench's accepted rule, on its
+nodes, and its error estimated from the same nested sums (:func:`jacobian_body`). The 1/|ρ|
+singularity of δŵ at the ICR is integrable and has cancelled analytically: nothing is
+differenced. Checks: the Jacobian annihilates the twist itself (the wrench is homogeneous of
+degree 0; a·(v, ω) = 0 node by node) and, for an isotropic 𝔽, ∂F/∂v is symmetric.
+
+A pure translation (ω = 0, or the ICR beyond ``FAR_ICR``) is closed form: δF = −𝔽 P⊥ δv/|v|
+with P⊥ = I − v̂v̂ᵀ, and δM = −(δω/|v|) Σ_ab Σ_ab e_a × 𝔽P⊥ẑ×e_b with Σ = ∫ p (r − r_G)(r −
+r_G)ᵀ dS, the pressure's second moment about G. After the adaptive Gauss–Kronrod fallback no
+rule is left to reuse: the derivative is then reported unavailable (the caller differences).
+
+Also returned, the wrench's isotropic parts Q and N (M = −Σ 𝔽_ij N_ij), which make its
+derivatives with respect to the tensor entries and the body angle exact (𝔽 enters linearly).
+Units: a = 1, P = 1, as the kernel.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from slidespin._jit import jit
+from slidespin.contact._kernel_ellipse import (
+    FAR_ICR,
+    WORKSPACE_SHAPE,
+    tensor_in_body,
+    wrench_rule,
+)
+from slidespin.contact._kernel_ellipse_rules import (
+    _CC_INDEX,
+    _CC_OFFSETS,
+    _CC_W1,
+    _CC_W2,
+    _CC_W4,
+    LAW_BOUSSINESQ,
+    LAW_HERTZ,
+    METHOD_CLENSHAW_CURTIS,
+    METHOD_CLENSHAW_CURTIS_INSIDE,
+    METHOD_CLENSHAW_CURTIS_MAPPED,
+    _estimate,
+    chord_moments,
+)
+
+__all__ = [
+    "JAC_SIZE",
+    "JAC_WORKSPACE_SHAPE",
+    "NROWS",
+    "jacobian_body",
+    "jacobian_world",
+    "jac_workspace",
+]
+
+#: rows of the derivative workspace: Q (2), N (4), the symmetric êêᵀK₀ (3), êσK₀ (2), H (3)
+NROWS = 14
+#: length of the output vector: W (3), Q (2), N (4), ∂W/∂(vx, vy, ω) (9, row-major),
+#: ∂W/∂φ (3) — the last only from :func:`jacobian_world`
+JAC_SIZE = 21
+#: relative error target of the derivative's sums (of their largest entry); above it the
+#: derivative is reported unavailable
+DERIVATIVE_TOL = 1e-9
+
+
+#: shape of the derivative workspace: a row per integrand over the rule's nodes, and a last
+#: column for the sums
+JAC_WORKSPACE_SHAPE = (NROWS, WORKSPACE_SHAPE[1] + 1)
+
+
+def jac_workspace():
+    """The derivative rows' workspace (one per thread, reused)."""
+    return np.empty(JAC_WORKSPACE_SHAPE)
+
+
+@jit(error_model="numpy", inline="always")
+def _second_moment(law, s22, xg, yg):
+    """Σ = ∫ p (r − r_G)(r − r_G)ᵀ dS for P = 1, a = 1 (the linear law's odd part adds
+    nothing to ∫ p r rᵀ): (Σxx, Σxy, Σyy)."""
+    c = 0.25
+    if law == LAW_BOUSSINESQ:
+        c = 1.0 / 3.0
+    elif law == LAW_HERTZ:
+        c = 0.2
+    return c - xg * xg, -xg * yg, c / s22 - yg * yg
+
+
+@jit(error_model="numpy")
+def _node_rows(law, s22, ib, lx, ly, xg, yg, b00, b01, b10, b11, W, D, n):
+    """The derivative integrands of the rule's nodes 0..n−1 (directions and weights in rows
+    0–4 of ``W``) into the rows of ``D``."""
+    for j in range(n):
+        ex = W[0, j]
+        ey = W[1, j]
+        exc = W[3, j]
+        A = ex * ex + ey * ey * s22
+        disc = max(A - s22 * exc * exc, 0.0)
+        mx, my, _, k0, k1, k2, j1 = chord_moments(
+            law, s22, ib, lx, ly, ex, ey, W[2, j], exc, A, disc, W[4, j]
+        )
+        ax = (mx - xg) * k1 + ex * k2
+        ay = (my - yg) * k1 + ey * k2
+        D[0, j] = -ey * k1  # t̂ K₁, t̂ = (−ey, ex)
+        D[1, j] = ex * k1
+        D[2, j] = ay * ey  # N_ij: M-integrand a × 𝔽t̂ = Σ 𝔽_ij t̂_j (δ_i1 a_x − δ_i0 a_y)
+        D[3, j] = -ay * ex
+        D[4, j] = -ax * ey
+        D[5, j] = ax * ex
+        sig = -exc + ex * yg - ey * xg  # ê·ẑ×(c − r_G) = −ê×(c − r_G)
+        D[6, j] = ex * ex * k0
+        D[7, j] = ex * ey * k0
+        D[8, j] = ey * ey * k0
+        D[9, j] = ex * sig * k0
+        D[10, j] = ey * sig * k0
+        bx = (mx - xg) * k0 + ex * j1
+        by = (my - yg) * k0 + ey * j1
+        mu = bx * (b10 * ex + b11 * ey) - by * (b00 * ex + b01 * ey)
+        D[11, j] = ex * mu
+        D[12, j] = ey * mu
+        D[13, j] = sig * mu
+
+
+@jit(error_model="numpy")
+def _rule_sums(D, n, cc, half):
+    """The rows' sums with the rule's weights (trapezoid over a period π, or Clenshaw–Curtis
+    on ``half``) into the last column of ``D``; returns the largest nested error estimate of
+    the derivative rows (6 on) relative to their largest sum (rows 0–5 are the wrench's own
+    integrands, whose error the kernel has checked)."""
+    last = D.shape[1] - 1
+    worst = 0.0
+    big = 0.0
+    if cc:
+        o = _CC_OFFSETS[_CC_INDEX[n]]
+        for r in range(NROWS):
+            s1 = s2 = s4 = 0.0
+            for j in range(n + 1):
+                v = D[r, j]
+                s1 += _CC_W1[o + j] * v
+                if r >= 6:
+                    s2 += _CC_W2[o + j] * v
+                    s4 += _CC_W4[o + j] * v
+            D[r, last] = half * s1
+            if r >= 6:
+                big = max(big, abs(half * s1))
+                worst = max(worst, _estimate(half * abs(s2 - s4), half * abs(s1 - s2)))
+    else:
+        h = math.pi / n
+        for r in range(NROWS):
+            s1 = s2 = s4 = 0.0
+            for j in range(0, n, 4):
+                s4 += D[r, j]
+            for j in range(2, n, 4):
+                s2 += D[r, j]
+            for j in range(1, n, 2):
+                s1 += D[r, j]
+            D[r, last] = h * (s1 + s2 + s4)
+            if r >= 6:
+                t1, t2, t4 = h * (s1 + s2 + s4), 2.0 * h * (s2 + s4), 4.0 * h * s4
+                big = max(big, abs(t1))
+                worst = max(worst, _estimate(abs(t2 - t4), abs(t1 - t2)))
+    return worst / big if big > 0.0 else 0.0
+
+
+@jit(error_model="numpy")
+def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, D, out):
+    """The wrench, its isotropic parts and its twist derivatives in the body frame.
+
+    Arguments as :func:`slidespin.contact._kernel_ellipse.wrench_fast` (body-frame tensor
+    ``b``; ``D`` a :func:`jac_workspace`). Writes ``out[:18]``: (Fx, Fy, M), Q (2), N (4)
+    with F = −𝔽Q and M = −Σ 𝔽_ij N_ij, and ∂(Fx, Fy, M)/∂(vx, vy, ω) row-major. Returns
+    (status, available): the wrench's status and whether the derivative is there (False after
+    the adaptive fallback or if its own error estimate misses ``DERIVATIVE_TOL``; ``out[9:18]``
+    is then NaN).
+    """
+    s22, ib, xg, yg, lx, ly = K[1], K[2], K[3], K[4], K[5], K[6]
+    fx, fy, m, status, method, _, n, half = wrench_rule(
+        law, K, b00, b01, b10, b11, vx, vy, omega, tol, W
+    )
+    out[0] = fx
+    out[1] = fy
+    out[2] = m
+    for i in range(3, 18):
+        out[i] = 0.0
+    if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
+        speed = math.sqrt(vx * vx + vy * vy)
+        if speed == 0.0:
+            for i in range(9, 18):
+                out[i] = math.nan
+            return status, False
+        ux = vx / speed
+        uy = vy / speed
+        out[3] = ux
+        out[4] = uy
+        # P⊥ = I − v̂v̂ᵀ over |v|; δF = −𝔽 P⊥ δv / |v|
+        p00 = (1.0 - ux * ux) / speed
+        p01 = -ux * uy / speed
+        p11 = (1.0 - uy * uy) / speed
+        out[9] = -(b00 * p00 + b01 * p01)
+        out[10] = -(b00 * p01 + b01 * p11)
+        out[12] = -(b10 * p00 + b11 * p01)
+        out[13] = -(b10 * p01 + b11 * p11)
+        # δM = −(δω/|v|) Σ_ab Σ_ab e_a × 𝔽 P⊥ ẑ×e_b  (P⊥ ẑ×e_b: columns of P⊥ J)
+        sxx, sxy, syy = _second_moment(law, s22, xg, yg)
+        acc = 0.0
+        for a_ in range(2):
+            for b_ in range(2):
+                sab = sxx if a_ + b_ == 0 else (syy if a_ + b_ == 2 else sxy)
+                # ẑ×e_b = (−δ_b1, δ_b0)
+                jx = -1.0 if b_ == 1 else 0.0
+                jy = 1.0 if b_ == 0 else 0.0
+                px = p00 * jx + p01 * jy
+                py = p01 * jx + p11 * jy
+                gx = b00 * px + b01 * py
+                gy = b10 * px + b11 * py
+                acc += sab * (gy if a_ == 0 else -gx)  # e_a × g
+        out[17] = -acc  # (P⊥ carries the 1/|v|)
+        return status, True
+    if n == 0:
+        for i in range(9, 18):
+            out[i] = math.nan
+        return status, False
+    cc = (
+        method == METHOD_CLENSHAW_CURTIS
+        or method == METHOD_CLENSHAW_CURTIS_MAPPED
+        or method == METHOD_CLENSHAW_CURTIS_INSIDE
+    )
+    _node_rows(law, s22, ib, lx, ly, xg, yg, b00, b01, b10, b11, W, D, n + 1 if cc else n)
+    err = _rule_sums(D, n, cc, half)
+    sums = D[:, D.shape[1] - 1]
+    sg = 1.0 if omega > 0.0 else -1.0  # Q = sign(ω) ∫ t̂ K₁, N likewise
+    for i in range(6):
+        out[3 + i] = sg * sums[i]
+    if not err <= DERIVATIVE_TOL:
+        for i in range(9, 18):
+            out[i] = math.nan
+        return status, False
+    iw = 1.0 / abs(omega)
+    g00, g01, g11, g02, g12 = sums[6], sums[7], sums[8], sums[9], sums[10]
+    # ∂F/∂(vx, vy, ω) = −(1/|ω|) 𝔽 G, G = [[g00, g01, g02], [g01, g11, g12]]
+    out[9] = -iw * (b00 * g00 + b01 * g01)
+    out[10] = -iw * (b00 * g01 + b01 * g11)
+    out[11] = -iw * (b00 * g02 + b01 * g12)
+    out[12] = -iw * (b10 * g00 + b11 * g01)
+    out[13] = -iw * (b10 * g01 + b11 * g11)
+    out[14] = -iw * (b10 * g02 + b11 * g12)
+    out[15] = -iw * sums[11]
+    out[16] = -iw * sums[12]
+    out[17] = -iw * sums[13]
+    return status, True
+
+
+@jit(error_model="numpy")
+def jacobian_world(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol, W, D, out):
+    """:func:`jacobian_body` in the fixed frame: the tensor (t00..t11) in its own frame (the
+    plane's, or the body's with ``body_frame``), the twist of G in the fixed frame. Writes
+    ``out`` (:data:`JAC_SIZE`): (Fx, Fy, M), Q, N (body frame, as :func:`jacobian_body`),
+    ∂(Fx, Fy, M)/∂(vx, vy, ω) (fixed frame, row-major) and ∂(Fx, Fy, M)/∂φ at a fixed twist
+    and tensor. Returns (status, available)."""
+    c = math.cos(phi)
+    s = math.sin(phi)
+    vbx = c * vx + s * vy
+    vby = -s * vx + c * vy
+    b00, b01, b10, b11 = tensor_in_body(t00, t01, t10, t11, body_frame, c, s)
+    status, ok = jacobian_body(law, K, b00, b01, b10, b11, vbx, vby, omega, tol, W, D, out)
+    fbx, fby = out[0], out[1]
+    out[0] = c * fbx - s * fby
+    out[1] = s * fbx + c * fby
+    if not ok:
+        for i in range(18, JAC_SIZE):
+            out[i] = math.nan
+        return status, ok
+    # body-frame rows (∂F_b/∂v_b, ∂F_b/∂ω; ∂M/∂v_b, ∂M/∂ω)
+    j00, j01, j02 = out[9], out[10], out[11]
+    j10, j11, j12 = out[12], out[13], out[14]
+    m0, m1, m2 = out[15], out[16], out[17]
+    # ∂/∂φ at a fixed world twist and tensor: v_b turns by −φ (δv_b = −ẑ×v_b δφ), F_w = R F_b,
+    # and a plane-frame tensor turns in the body frame (δ𝔽_b = (𝔽_b J − J 𝔽_b) δφ)
+    dvx = vby
+    dvy = -vbx
+    dfx = j00 * dvx + j01 * dvy - fby  # + J F_b
+    dfy = j10 * dvx + j11 * dvy + fbx
+    dm = m0 * dvx + m1 * dvy
+    if not body_frame:
+        # 𝔽J − J𝔽 with J = [[0, −1], [1, 0]]
+        d00 = b01 + b10
+        d01 = -b00 + b11
+        d10 = b11 - b00
+        d11 = -b10 - b01
+        qx, qy = out[3], out[4]
+        dfx -= d00 * qx + d01 * qy
+        dfy -= d10 * qx + d11 * qy
+        dm -= d00 * out[5] + d01 * out[6] + d10 * out[7] + d11 * out[8]
+    out[18] = c * dfx - s * dfy
+    out[19] = s * dfx + c * dfy
+    out[20] = dm
+    # fixed-frame twist derivatives: ∂F_w/∂v_w = R (∂F_b/∂v_b) Rᵀ, ∂F_w/∂ω = R ∂F_b/∂ω,
+    # ∂M/∂v_w = (∂M/∂v_b) Rᵀ
+    a00 = j00 * c - j01 * s  # (∂F_b/∂v_b) Rᵀ
+    a01 = j00 * s + j01 * c
+    a10 = j10 * c - j11 * s
+    a11 = j10 * s + j11 * c
+    out[9] = c * a00 - s * a10
+    out[10] = c * a01 - s * a11
+    out[12] = s * a00 + c * a10
+    out[13] = s * a01 + c * a11
+    out[11] = c * j02 - s * j12
+    out[14] = s * j02 + c * j12
+    out[15] = m0 * c - m1 * s
+    out[16] = m0 * s + m1 * c
+    out[17] = m2
+    return status, ok
