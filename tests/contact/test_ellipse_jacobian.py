@@ -42,10 +42,8 @@ def _kernel(law, bn, g, t, phi, twist):
     li = LAWS.index(law)
     xg, yg = g if law == "linear" else (0.0, 0.0)
     kc = K.wrench_constants(bn, li, xg, yg, math.sqrt(sum(x * x for x in t)), TOL)
-    out = np.empty(KJ.JAC_SIZE)
-    st, ok = KJ.jacobian_world(
-        li, kc, *t, False, phi, *twist, TOL, K.workspace(), KJ.jac_workspace(), out
-    )
+    out = np.empty(21)
+    st, ok = KJ.jacobian_world(li, kc, *t, False, phi, *twist, TOL, KJ.jac_workspace(), out)
     return st, ok, out
 
 

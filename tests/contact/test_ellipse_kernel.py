@@ -174,6 +174,7 @@ def test_trapezoid_converges_at_the_predicted_rate():
         return np.array(
             R._run_rule(
                 W,
+                None,
                 R.METHOD_TRAPEZOID,
                 n,
                 0,

@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from slidespin import _validate as v
-from slidespin.analysis.fit_data import _PAIR, CHANNELS, START, hermite_at, trajectory_at
+from slidespin.analysis.fit_data import _PAIR, CHANNELS, START, hermite_columns, trajectory_at
 from slidespin.contact.body import Body
 from slidespin.contact.friction import ANGLE_MAX, FrictionTensor
 from slidespin.contact.pressure import LinearPressure
@@ -347,12 +347,14 @@ class _Problem:
         assert sens is not None  # asked for above
         run = self.runs[k]
         t = run["t"] - run["t"][0]
-        for name, i in cols:
-            d = sens[name]
-            pos = np.column_stack((d["x"], d["y"], d["phi"]))
-            vel = np.column_stack((d["vx"], d["vy"], d["omega"]))
-            at = hermite_at(sens.t, pos, vel, t, traj.t_stop <= 0.0)
-            J[sl, i] = -np.concatenate([at[c][m] for c, m in self.obs[k]]) * w
+        # one interpolant for every column: (x, y, φ) of each parameter, at fixed t
+        pos = np.column_stack([sens[name][c] for name, _ in cols for c in ("x", "y", "phi")])
+        vel = np.column_stack([sens[name][c] for name, _ in cols for c in ("vx", "vy", "omega")])
+        at = hermite_columns(sens.t, pos, vel, t, traj.t_stop <= 0.0)
+        for j, (_, i) in enumerate(cols):
+            J[sl, i] = (
+                -np.concatenate([at[m, 3 * j + CHANNELS.index(c)] for c, m in self.obs[k]]) * w
+            )
         return True
 
     def _differences_run(self, p, k, J) -> None:

@@ -17,6 +17,7 @@ import os
 from collections.abc import Mapping
 
 import numpy as np
+from numpy.typing import NDArray
 from scipy.interpolate import CubicHermiteSpline
 
 from slidespin._io import read_regular_file
@@ -302,9 +303,17 @@ def hermite_at(ts, pos, vel, t, at_rest: bool = False) -> dict:
     (n, 3) at the increasing times ``ts`` (the last the stop), at times ``t``; from the last
     time on, the last row. :func:`trajectory_at` for a trajectory, and for its sensitivities
     (∂x/∂θ with rate ∂vx/∂θ at fixed t, MODEL §15). Returns ``{'x', 'y', 'phi'}``."""
+    val = hermite_columns(ts, pos, vel, t, at_rest)
+    return {c: val[..., i] for i, c in enumerate(CHANNELS)}
+
+
+def hermite_columns(ts, pos, vel, t, at_rest: bool = False) -> NDArray[np.float64]:
+    """:func:`hermite_at` for any number of columns: ``pos`` and ``vel`` (n, m), the
+    interpolant at ``t`` as an array (t.shape + (m,)) (one spline for all columns: the
+    sensitivities of every parameter at once)."""
     t = np.asarray(t, dtype=float)
     if ts.size < 2 or at_rest:
-        return {c: np.full(t.shape, pos[-1, i]) for i, c in enumerate(CHANNELS)}
+        return np.broadcast_to(pos[-1], t.shape + pos.shape[1:]).copy()
     thr = 1e-12 * ts[-1]
     idx = np.concatenate(([0], 1 + np.flatnonzero(np.diff(ts) > thr)))
     last = ts.size - 1
@@ -314,12 +323,12 @@ def hermite_at(ts, pos, vel, t, at_rest: bool = False) -> dict:
         else:
             idx[-1] = last
     if idx.size < 2:
-        return {c: np.full(t.shape, pos[-1, i]) for i, c in enumerate(CHANNELS)}
+        return np.broadcast_to(pos[-1], t.shape + pos.shape[1:]).copy()
     spline = CubicHermiteSpline(ts[idx], pos[idx], vel[idx], axis=0, extrapolate=False)
     tt = np.clip(t, ts[0], ts[last])
-    val = spline(tt)
+    val = np.asarray(spline(tt))
     val[tt >= ts[last]] = pos[last]
-    return {c: val[..., i] for i, c in enumerate(CHANNELS)}
+    return val
 
 
 # --------------------------------------------------------------------------------------------

@@ -31,9 +31,10 @@ from slidespin.contact._kernel_ellipse import (
     wrench_world,
     wrench_world_fast,
 )
-from slidespin.contact._kernel_ellipse_jac import JAC_SIZE, jacobian_world
+from slidespin.contact._kernel_ellipse_jac import jacobian_world
 from slidespin.contact._kernel_footprint import NGEO
 from slidespin.contact._kernel_footprint import wrench_world as fp_wrench_world
+from slidespin.contact._kernel_footprint_jac import jacobian_world as fp_jacobian_world
 
 __all__ = [
     "NPAR",
@@ -155,20 +156,20 @@ def _accelerations_of_type(par, kc, W, fp, u1, u2, u3, phi):
     return _ellipse_accelerations if is_none_type(fp) else _footprint_accelerations
 
 
-def accelerations_jacobian(par, kc, W, D, fp, u1, u2, u3, phi, jo):
+def accelerations_jacobian(par, kc, W, fp, u1, u2, u3, phi, jo):
     """:func:`accelerations` with the wrench's exact derivatives, for the variational
     equations (MODEL §15): writes ``jo`` (``JAC_SIZE``) as
     :func:`slidespin.contact._kernel_ellipse_jac.jacobian_world` does for the twist
     (u1, u2, u3/k) (the wrench, its isotropic parts, its derivatives with respect to the
-    twist and to φ) and returns (A₁, A₂, A₃, status, available). ``D`` is the derivative
-    workspace. Where the derivative is not available (a footprint: not written yet; the
-    ellipse's adaptive fallback) ``available`` is False and the caller differences."""
+    twist and to φ) and returns (A₁, A₂, A₃, status, available). ``W`` is a derivative
+    workspace (:func:`slidespin.contact._kernel_ellipse_jac.jac_workspace`). Where the derivative is not available (the ellipse's adaptive fallback; a
+    blade; a translation of a footprint) ``available`` is False and the caller differences."""
     if fp is None:
-        return _ellipse_jacobian(par, kc, W, D, fp, u1, u2, u3, phi, jo)
-    return _footprint_jacobian(par, kc, W, D, fp, u1, u2, u3, phi, jo)
+        return _ellipse_jacobian(par, kc, W, fp, u1, u2, u3, phi, jo)
+    return _footprint_jacobian(par, kc, W, fp, u1, u2, u3, phi, jo)
 
 
-def _ellipse_jacobian(par, kc, W, D, fp, u1, u2, u3, phi, jo):
+def _ellipse_jacobian(par, kc, W, fp, u1, u2, u3, phi, jo):
     k = par[P_K]
     st, ok = jacobian_world(
         int(par[P_LAW]),
@@ -184,21 +185,34 @@ def _ellipse_jacobian(par, kc, W, D, fp, u1, u2, u3, phi, jo):
         u3 / k,
         par[P_WTOL],
         W,
-        D,
         jo,
     )
     return jo[0], jo[1], jo[2] / k, st, ok
 
 
-def _footprint_jacobian(par, kc, W, D, fp, u1, u2, u3, phi, jo):
-    fx, fy, m, st = accelerations(par, kc, W, fp, u1, u2, u3, phi)
-    for i in range(JAC_SIZE):
-        jo[i] = math.nan
-    return fx, fy, m, st, False
+def _footprint_jacobian(par, kc, W, fp, u1, u2, u3, phi, jo):
+    k = par[P_K]
+    fe, fc, geo = fp
+    ok = fp_jacobian_world(
+        fe,
+        fc,
+        geo,
+        par[P_T00],
+        par[P_T01],
+        par[P_T10],
+        par[P_T11],
+        par[P_BODY] != 0.0,
+        phi,
+        u1,
+        u2,
+        u3 / k,
+        jo,
+    )
+    return jo[0], jo[1], jo[2] / k, 0, ok
 
 
 @overload(accelerations_jacobian, jit_options={"error_model": "numpy"})
-def _accelerations_jacobian_of_type(par, kc, W, D, fp, u1, u2, u3, phi, jo):
+def _accelerations_jacobian_of_type(par, kc, W, fp, u1, u2, u3, phi, jo):
     """Compiled calls of :func:`accelerations_jacobian`: the kernel for the type of ``fp``."""
     return _ellipse_jacobian if is_none_type(fp) else _footprint_jacobian
 

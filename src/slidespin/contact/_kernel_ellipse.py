@@ -26,6 +26,7 @@ import numpy as np
 
 from slidespin import _aot
 from slidespin._jit import jit
+from slidespin.contact._kernel_ellipse_lines import LAW_LINEAR, LAW_UNIFORM, _line_terms
 from slidespin.contact._kernel_ellipse_rules import (
     _CC_SIZES,
     _NODE_SIZES,
@@ -38,8 +39,6 @@ from slidespin.contact._kernel_ellipse_rules import (
     ENTIRE_HEIGHT_SINE,
     GAMMA_CC,
     GAMMA_TRAPEZOID,
-    LAW_LINEAR,
-    LAW_UNIFORM,
     MAP_MIN_HALF_WIDTH,
     MAX_NODES,
     METHOD_ADAPTIVE_INSIDE,
@@ -57,7 +56,6 @@ from slidespin.contact._kernel_ellipse_rules import (
     _atanh_sym,
     _count,
     _estimate,
-    _line_terms,
     _log_rho,
     _mapped_strip,
     _out_distance,
@@ -279,11 +277,14 @@ def wrench_constants(bn, law, xg, yg, tnorm, tol):
 
 
 @jit(error_model="numpy")
-def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
+def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
     """:func:`wrench_fast` and the tabulated rule it ended with: (fx, fy, m, status, method,
     nodes, n, half), ``n`` the accepted rule's node count (0 for a translation and the adaptive
     fallback) and ``half`` its half-width (Clenshaw–Curtis); its directions and weights are
-    left in rows 0–4 of ``W`` (:mod:`slidespin.contact._kernel_ellipse_jac` reuses them)."""
+    left in rows 0–4 of ``W``. Unless ``D`` is ``None`` (a flag), ``W`` is a derivative
+    workspace and each rule also fills its lower rows with the integrands of the wrench's
+    twist derivatives on its nodes (:mod:`slidespin.contact._kernel_ellipse_jac` sums the
+    accepted rule's)."""
     bn, s22, ib, xg, yg, lx, ly, ksq, re0, d_a, d_am, logterm, r_a, x_am = K
     if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
         speed = math.sqrt(vx * vx + vy * vy)
@@ -355,6 +356,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
         while 0 < n <= MAX_NODES:
             fx, fy, mm, e1, e2 = _run_rule(
                 W,
+                D,
                 method,
                 n,
                 law,
@@ -471,6 +473,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
     while 0 < n <= MAX_NODES:
         fx, fy, mm, e1, e2 = _run_rule(
             W,
+            D,
             method,
             n,
             law,
@@ -532,7 +535,7 @@ def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
     """:func:`wrench_body_info` with precomputed constants ``K`` (:func:`wrench_constants`)
     and a reusable workspace ``W`` (:func:`workspace`); the engine's inner call."""
     fx, fy, m, status, method, used, _, _ = wrench_rule(
-        law, K, t00, t01, t10, t11, vx, vy, omega, tol, W
+        law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, None
     )
     return fx, fy, m, status, method, used
 

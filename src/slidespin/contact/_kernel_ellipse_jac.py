@@ -14,7 +14,7 @@ factor |ρ| cancels, and with the isotropic integrals Q = ∫ p ŵ dS and the te
     δM = −(1/|ω|) ∫ (ê·δw_c) [((m_r − r_G) K₀ + ê J₁) × 𝔽ê] dψ,
 
 K₀ = ∫ p dx and J₁ = ∫ p x dx the chord moments one order below the wrench's K₁, K₂
-(:func:`slidespin.contact._kernel_ellipse_rules.chord_moments`; J₁ = 0 but for the linear
+(:func:`slidespin.contact._kernel_ellipse_lines.chord_moments`; J₁ = 0 but for the linear
 law). ê·δw_c = a·δ(vx, vy, ω) with a = (ê_x, ê_y, −ê×(c − r_G)), all O(1) on the lines that
 meet the patch however far the ICR is. The integrands have the branch points of the wrench's
 own (K₀ ∝ h like K₁ ∝ hm), so the derivative is summed with the wrench's accepted rule, on its
@@ -40,29 +40,27 @@ import math
 import numpy as np
 
 from slidespin._jit import jit
+from slidespin.contact._jacobian import unavailable, world_from_body
 from slidespin.contact._kernel_ellipse import (
     FAR_ICR,
     WORKSPACE_SHAPE,
     tensor_in_body,
     wrench_rule,
 )
+from slidespin.contact._kernel_ellipse_lines import DROW, LAW_BOUSSINESQ, LAW_HERTZ, NROWS
 from slidespin.contact._kernel_ellipse_rules import (
     _CC_INDEX,
     _CC_OFFSETS,
     _CC_W1,
     _CC_W2,
     _CC_W4,
-    LAW_BOUSSINESQ,
-    LAW_HERTZ,
     METHOD_CLENSHAW_CURTIS,
     METHOD_CLENSHAW_CURTIS_INSIDE,
     METHOD_CLENSHAW_CURTIS_MAPPED,
     _estimate,
-    chord_moments,
 )
 
 __all__ = [
-    "JAC_SIZE",
     "JAC_WORKSPACE_SHAPE",
     "NROWS",
     "jacobian_body",
@@ -70,23 +68,19 @@ __all__ = [
     "jac_workspace",
 ]
 
-#: rows of the derivative workspace: Q (2), N (4), the symmetric êêᵀK₀ (3), êσK₀ (2), H (3)
-NROWS = 14
-#: length of the output vector: W (3), Q (2), N (4), ∂W/∂(vx, vy, ω) (9, row-major),
-#: ∂W/∂φ (3) — the last only from :func:`jacobian_world`
-JAC_SIZE = 21
 #: relative error target of the derivative's sums (of their largest entry); above it the
 #: derivative is reported unavailable
 DERIVATIVE_TOL = 1e-9
 
 
-#: shape of the derivative workspace: a row per integrand over the rule's nodes, and a last
-#: column for the sums
-JAC_WORKSPACE_SHAPE = (NROWS, WORKSPACE_SHAPE[1] + 1)
+#: shape of the derivative workspace: the wrench's rows, a row per derivative integrand over
+#: the rule's nodes, and a last column for the sums
+JAC_WORKSPACE_SHAPE = (DROW + NROWS, WORKSPACE_SHAPE[1] + 1)
 
 
 def jac_workspace():
-    """The derivative rows' workspace (one per thread, reused)."""
+    """A workspace for :func:`jacobian_body` (one per thread, reused; it serves the plain
+    wrench too)."""
     return np.empty(JAC_WORKSPACE_SHAPE)
 
 
@@ -103,47 +97,12 @@ def _second_moment(law, s22, xg, yg):
 
 
 @jit(error_model="numpy")
-def _node_rows(law, s22, ib, lx, ly, xg, yg, b00, b01, b10, b11, W, D, n):
-    """The derivative integrands of the rule's nodes 0..n−1 (directions and weights in rows
-    0–4 of ``W``) into the rows of ``D``."""
-    for j in range(n):
-        ex = W[0, j]
-        ey = W[1, j]
-        exc = W[3, j]
-        A = ex * ex + ey * ey * s22
-        disc = max(A - s22 * exc * exc, 0.0)
-        mx, my, _, k0, k1, k2, j1 = chord_moments(
-            law, s22, ib, lx, ly, ex, ey, W[2, j], exc, A, disc, W[4, j]
-        )
-        ax = (mx - xg) * k1 + ex * k2
-        ay = (my - yg) * k1 + ey * k2
-        D[0, j] = -ey * k1  # t̂ K₁, t̂ = (−ey, ex)
-        D[1, j] = ex * k1
-        D[2, j] = ay * ey  # N_ij: M-integrand a × 𝔽t̂ = Σ 𝔽_ij t̂_j (δ_i1 a_x − δ_i0 a_y)
-        D[3, j] = -ay * ex
-        D[4, j] = -ax * ey
-        D[5, j] = ax * ex
-        sig = -exc + ex * yg - ey * xg  # ê·ẑ×(c − r_G) = −ê×(c − r_G)
-        D[6, j] = ex * ex * k0
-        D[7, j] = ex * ey * k0
-        D[8, j] = ey * ey * k0
-        D[9, j] = ex * sig * k0
-        D[10, j] = ey * sig * k0
-        bx = (mx - xg) * k0 + ex * j1
-        by = (my - yg) * k0 + ey * j1
-        mu = bx * (b10 * ex + b11 * ey) - by * (b00 * ex + b01 * ey)
-        D[11, j] = ex * mu
-        D[12, j] = ey * mu
-        D[13, j] = sig * mu
-
-
-@jit(error_model="numpy")
-def _rule_sums(D, n, cc, half):
+def _rule_sums(W, n, cc, half):
     """The rows' sums with the rule's weights (trapezoid over a period π, or Clenshaw–Curtis
-    on ``half``) into the last column of ``D``; returns the largest nested error estimate of
+    on ``half``) into the last column of ``W``; returns the largest nested error estimate of
     the derivative rows (6 on) relative to their largest sum (rows 0–5 are the wrench's own
     integrands, whose error the kernel has checked)."""
-    last = D.shape[1] - 1
+    last = W.shape[1] - 1
     worst = 0.0
     big = 0.0
     if cc:
@@ -151,12 +110,12 @@ def _rule_sums(D, n, cc, half):
         for r in range(NROWS):
             s1 = s2 = s4 = 0.0
             for j in range(n + 1):
-                v = D[r, j]
+                v = W[DROW + r, j]
                 s1 += _CC_W1[o + j] * v
                 if r >= 6:
                     s2 += _CC_W2[o + j] * v
                     s4 += _CC_W4[o + j] * v
-            D[r, last] = half * s1
+            W[DROW + r, last] = half * s1
             if r >= 6:
                 big = max(big, abs(half * s1))
                 worst = max(worst, _estimate(half * abs(s2 - s4), half * abs(s1 - s2)))
@@ -165,12 +124,12 @@ def _rule_sums(D, n, cc, half):
         for r in range(NROWS):
             s1 = s2 = s4 = 0.0
             for j in range(0, n, 4):
-                s4 += D[r, j]
+                s4 += W[DROW + r, j]
             for j in range(2, n, 4):
-                s2 += D[r, j]
+                s2 += W[DROW + r, j]
             for j in range(1, n, 2):
-                s1 += D[r, j]
-            D[r, last] = h * (s1 + s2 + s4)
+                s1 += W[DROW + r, j]
+            W[DROW + r, last] = h * (s1 + s2 + s4)
             if r >= 6:
                 t1, t2, t4 = h * (s1 + s2 + s4), 2.0 * h * (s2 + s4), 4.0 * h * s4
                 big = max(big, abs(t1))
@@ -179,19 +138,19 @@ def _rule_sums(D, n, cc, half):
 
 
 @jit(error_model="numpy")
-def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, D, out):
+def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
     """The wrench, its isotropic parts and its twist derivatives in the body frame.
 
     Arguments as :func:`slidespin.contact._kernel_ellipse.wrench_fast` (body-frame tensor
-    ``b``; ``D`` a :func:`jac_workspace`). Writes ``out[:18]``: (Fx, Fy, M), Q (2), N (4)
+    ``b``; ``W`` a :func:`jac_workspace`). Writes ``out[:18]``: (Fx, Fy, M), Q (2), N (4)
     with F = −𝔽Q and M = −Σ 𝔽_ij N_ij, and ∂(Fx, Fy, M)/∂(vx, vy, ω) row-major. Returns
     (status, available): the wrench's status and whether the derivative is there (False after
     the adaptive fallback or if its own error estimate misses ``DERIVATIVE_TOL``; ``out[9:18]``
     is then NaN).
     """
-    s22, ib, xg, yg, lx, ly = K[1], K[2], K[3], K[4], K[5], K[6]
+    s22, xg, yg = K[1], K[3], K[4]
     fx, fy, m, status, method, _, n, half = wrench_rule(
-        law, K, b00, b01, b10, b11, vx, vy, omega, tol, W
+        law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, W
     )
     out[0] = fx
     out[1] = fy
@@ -201,8 +160,7 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, D, out):
     if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
         speed = math.sqrt(vx * vx + vy * vy)
         if speed == 0.0:
-            for i in range(9, 18):
-                out[i] = math.nan
+            unavailable(out, 9)
             return status, False
         ux = vx / speed
         uy = vy / speed
@@ -233,23 +191,20 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, D, out):
         out[17] = -acc  # (P⊥ carries the 1/|v|)
         return status, True
     if n == 0:
-        for i in range(9, 18):
-            out[i] = math.nan
+        unavailable(out, 9)
         return status, False
     cc = (
         method == METHOD_CLENSHAW_CURTIS
         or method == METHOD_CLENSHAW_CURTIS_MAPPED
         or method == METHOD_CLENSHAW_CURTIS_INSIDE
     )
-    _node_rows(law, s22, ib, lx, ly, xg, yg, b00, b01, b10, b11, W, D, n + 1 if cc else n)
-    err = _rule_sums(D, n, cc, half)
-    sums = D[:, D.shape[1] - 1]
+    err = _rule_sums(W, n, cc, half)
+    sums = W[DROW:, W.shape[1] - 1]
     sg = 1.0 if omega > 0.0 else -1.0  # Q = sign(ω) ∫ t̂ K₁, N likewise
     for i in range(6):
         out[3 + i] = sg * sums[i]
     if not err <= DERIVATIVE_TOL:
-        for i in range(9, 18):
-            out[i] = math.nan
+        unavailable(out, 9)
         return status, False
     iw = 1.0 / abs(omega)
     g00, g01, g11, g02, g12 = sums[6], sums[7], sums[8], sums[9], sums[10]
@@ -267,62 +222,22 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, D, out):
 
 
 @jit(error_model="numpy")
-def jacobian_world(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol, W, D, out):
+def jacobian_world(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, tol, W, out):
     """:func:`jacobian_body` in the fixed frame: the tensor (t00..t11) in its own frame (the
     plane's, or the body's with ``body_frame``), the twist of G in the fixed frame. Writes
-    ``out`` (:data:`JAC_SIZE`): (Fx, Fy, M), Q, N (body frame, as :func:`jacobian_body`),
-    ∂(Fx, Fy, M)/∂(vx, vy, ω) (fixed frame, row-major) and ∂(Fx, Fy, M)/∂φ at a fixed twist
-    and tensor. Returns (status, available)."""
+    ``out`` (:data:`slidespin.contact._jacobian.JAC_SIZE`; the layout there): the fixed-frame
+    wrench and derivatives. Returns (status, available)."""
     c = math.cos(phi)
     s = math.sin(phi)
     vbx = c * vx + s * vy
     vby = -s * vx + c * vy
     b00, b01, b10, b11 = tensor_in_body(t00, t01, t10, t11, body_frame, c, s)
-    status, ok = jacobian_body(law, K, b00, b01, b10, b11, vbx, vby, omega, tol, W, D, out)
-    fbx, fby = out[0], out[1]
-    out[0] = c * fbx - s * fby
-    out[1] = s * fbx + c * fby
+    status, ok = jacobian_body(law, K, b00, b01, b10, b11, vbx, vby, omega, tol, W, out)
     if not ok:
-        for i in range(18, JAC_SIZE):
-            out[i] = math.nan
+        fbx, fby = out[0], out[1]
+        out[0] = c * fbx - s * fby
+        out[1] = s * fbx + c * fby
+        unavailable(out, 9)
         return status, ok
-    # body-frame rows (∂F_b/∂v_b, ∂F_b/∂ω; ∂M/∂v_b, ∂M/∂ω)
-    j00, j01, j02 = out[9], out[10], out[11]
-    j10, j11, j12 = out[12], out[13], out[14]
-    m0, m1, m2 = out[15], out[16], out[17]
-    # ∂/∂φ at a fixed world twist and tensor: v_b turns by −φ (δv_b = −ẑ×v_b δφ), F_w = R F_b,
-    # and a plane-frame tensor turns in the body frame (δ𝔽_b = (𝔽_b J − J 𝔽_b) δφ)
-    dvx = vby
-    dvy = -vbx
-    dfx = j00 * dvx + j01 * dvy - fby  # + J F_b
-    dfy = j10 * dvx + j11 * dvy + fbx
-    dm = m0 * dvx + m1 * dvy
-    if not body_frame:
-        # 𝔽J − J𝔽 with J = [[0, −1], [1, 0]]
-        d00 = b01 + b10
-        d01 = -b00 + b11
-        d10 = b11 - b00
-        d11 = -b10 - b01
-        qx, qy = out[3], out[4]
-        dfx -= d00 * qx + d01 * qy
-        dfy -= d10 * qx + d11 * qy
-        dm -= d00 * out[5] + d01 * out[6] + d10 * out[7] + d11 * out[8]
-    out[18] = c * dfx - s * dfy
-    out[19] = s * dfx + c * dfy
-    out[20] = dm
-    # fixed-frame twist derivatives: ∂F_w/∂v_w = R (∂F_b/∂v_b) Rᵀ, ∂F_w/∂ω = R ∂F_b/∂ω,
-    # ∂M/∂v_w = (∂M/∂v_b) Rᵀ
-    a00 = j00 * c - j01 * s  # (∂F_b/∂v_b) Rᵀ
-    a01 = j00 * s + j01 * c
-    a10 = j10 * c - j11 * s
-    a11 = j10 * s + j11 * c
-    out[9] = c * a00 - s * a10
-    out[10] = c * a01 - s * a11
-    out[12] = s * a00 + c * a10
-    out[13] = s * a01 + c * a11
-    out[11] = c * j02 - s * j12
-    out[14] = s * j02 + c * j12
-    out[15] = m0 * c - m1 * s
-    out[16] = m0 * s + m1 * c
-    out[17] = m2
+    world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame)
     return status, ok

@@ -87,8 +87,10 @@ import math
 import numpy as np
 
 from slidespin._jit import jit
-
-LAW_UNIFORM, LAW_LINEAR, LAW_BOUSSINESQ, LAW_HERTZ = 0, 1, 2, 3
+from slidespin.contact._kernel_ellipse_lines import (
+    _lines,
+    lines_and_derivatives,
+)
 
 # quadrature used (returned by ``wrench_body_info``)
 METHOD_TRANSLATION = 0
@@ -205,66 +207,6 @@ _NODE_INDEX, _NODE_OFFSETS, _COS, _SIN = _node_tables()
 _CC_INDEX, _CC_OFFSETS, _CC_W1, _CC_W2, _CC_W4 = _cc_tables()
 _NODE_SIZES = np.array(NODE_SIZES, dtype=np.int64)
 _CC_SIZES = np.array(CC_SIZES, dtype=np.int64)
-
-
-# ---------------------------------------------------------------------------------------------
-# the line integrand
-
-
-@jit(error_model="numpy", inline="always")
-def chord_moments(law, s22, ib, lx, ly, ex, ey, cde, exc, A, disc, jac):
-    """The chord through the ICR in direction ê and its pressure moments, times ``jac``:
-    (m_r, m, K₀, K₁, K₂, J₁) with m_r = (mx, my) the chord's midpoint, m = (m_r − c)·ê, x the
-    position on the chord from m_r and
-
-        K₀ = ∫ p dx,   K₁ = ∫ p (m + x) dx,   K₂ = ∫ p (m + x) x dx,   J₁ = ∫ p x dx
-
-    over the chord (the module notes; K₀ and J₁ are the twist derivatives' moments, see
-    :mod:`slidespin.contact._kernel_ellipse_jac`). Arguments as :func:`_line_terms`.
-    """
-    ia = 1.0 / A
-    h2 = disc * ia * ia
-    f = exc * (ex * ey * (s22 - 1.0)) * ia  # (ê×c) (ê·S·ê⊥)/A, ê⊥ = ẑ×ê
-    mx = -exc * ey - ex * f  # chord midpoint m_r
-    my = exc * ex - ey * f
-    m = -cde - f  # (m_r − c)·ê
-    j1 = 0.0
-    if law == LAW_BOUSSINESQ:
-        k0 = 0.5 * ib * math.sqrt(ia) * jac
-        k1 = k0 * m
-        k2 = 0.5 * k0 * h2
-    elif law == LAW_HERTZ:
-        k0 = 0.75 * ib * math.sqrt(A) * h2 * jac
-        k1 = k0 * m
-        k2 = 0.25 * k0 * h2
-    else:
-        k0 = (2.0 / math.pi) * ib * math.sqrt(h2) * jac
-        k1 = k0 * m
-        k2 = (1.0 / 3.0) * k0 * h2
-        if law == LAW_LINEAR:
-            l0 = 1.0 + lx * mx + ly * my  # p/p₀ at the midpoint, and its slope along ê
-            l1 = lx * ex + ly * ey
-            j1 = l1 * k2
-            k0 = l0 * k0
-            k1 = l0 * k1 + j1
-            k2 = (l0 + l1 * m) * k2
-    return mx, my, m, k0, k1, k2, j1
-
-
-@jit(error_model="numpy", inline="always")
-def _line_terms(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, exc, A, disc, jac):
-    """(F_x, F_y, M) integrand, times ``jac``, of the line through the ICR in direction ê
-    (before the factor −sign ω), from the chord moments K₁, K₂ of the module notes.
-
-    ``cde`` = c·ê and ``exc`` = ê×c (the caller computes them without cancellation),
-    ``A`` = ê·S·ê, ``disc`` = D ≥ 0, ``ib`` = 1/κ, (lx, ly) the gradient of the linear law's
-    p/p₀.
-    """
-    mx, my, _, _, k1, k2, _ = chord_moments(law, s22, ib, lx, ly, ex, ey, cde, exc, A, disc, jac)
-    gx = -t00 * ey + t01 * ex  # 𝔽 t̂, t̂ = (−ey, ex)
-    gy = -t10 * ey + t11 * ex
-    mom = k1 * ((mx - xg) * gy - (my - yg) * gx) + k2 * (ex * gy - ey * gx)
-    return k1 * gx, k1 * gy, mom
 
 
 # ---------------------------------------------------------------------------------------------
@@ -416,43 +358,6 @@ def _dirs_rotated(W, o, n, sine, mode, mid, half, k, cx, cy, ecx, ecy, dist):
             ey = W[1, j]
             W[2, j] = cx * ex + cy * ey
             W[3, j] = ex * cy - ey * cx
-
-
-@jit(error_model="numpy", inline="always")
-def _lines(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n):
-    """Line integrands (rows 5–7) for the directions in rows 0–4, nodes 0..n−1.
-
-    D is clamped at 0: only tangent lines (end nodes, up to rounding) can have D ≤ 0, and
-    their limit is what the clamp gives (zero, except K₁ = m/(2κ√A) for Boussinesq).
-    """
-    for j in range(n):
-        ex = W[0, j]
-        ey = W[1, j]
-        A = ex * ex + ey * ey * s22
-        disc = max(A - s22 * W[3, j] * W[3, j], 0.0)
-        fx, fy, mm = _line_terms(
-            law,
-            s22,
-            ib,
-            lx,
-            ly,
-            xg,
-            yg,
-            t00,
-            t01,
-            t10,
-            t11,
-            ex,
-            ey,
-            W[2, j],
-            W[3, j],
-            A,
-            disc,
-            W[4, j],
-        )
-        W[5, j] = fx
-        W[6, j] = fy
-        W[7, j] = mm
 
 
 @jit(error_model="numpy", inline="always")
@@ -616,6 +521,7 @@ def _out_distance(lo, hi, y, re0, step, branch, enough, entire):
 @jit(error_model="numpy")
 def _run_rule(
     W,
+    D,
     method,
     n,
     law,
@@ -639,7 +545,10 @@ def _run_rule(
     dist,
 ):
     """One tabulated rule with n nodes in the workspace W: (Fx, Fy, M, e₁, e₂) before the
-    factor −sign ω."""
+    factor −sign ω. Unless ``D`` is ``None`` (a flag: any array), the integrands of the
+    twist derivatives on the same nodes go into the rows below (a workspace of
+    :data:`slidespin.contact._kernel_ellipse_jac.JAC_WORKSPACE_SHAPE`)
+    (:func:`slidespin.contact._kernel_ellipse_lines.lines_and_derivatives`)."""
     o = _NODE_OFFSETS[_NODE_INDEX[n]]
     cc = (
         method == METHOD_CLENSHAW_CURTIS
@@ -657,7 +566,11 @@ def _run_rule(
             mode = 0
         _dirs_rotated(W, o, n, not cc, mode, mid, half, k, cx, cy, ecx, ecy, dist)
     # the sine rule's node n and the trapezoid's (= node 0) are not used
-    _lines(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n + 1 if cc else n)
+    m = n + 1 if cc else n
+    if D is None:
+        _lines(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, m)
+    else:
+        lines_and_derivatives(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, m)
     if cc:
         return _sums_cc(W, n, half)
     return _sums_trapezoid(W, n, math.pi / n)

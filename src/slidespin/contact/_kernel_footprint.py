@@ -674,6 +674,41 @@ def far_sums(edges, circles, ox, oy, cx, cy, xg, yg, p0, p1, p2, nodes):
 
 
 @jit(error_model="numpy")
+def iso_parts(edges, circles, geo, cx, cy):
+    """V = ∫ p ê dS (x, y) and N_ab = ∫ p (r − r_G)_a ê_b dS (xx, xy, yx, yy) about the ICR
+    c = (cx, cy) (module notes): the exact fan, or the Gauss rules for a far ICR."""
+    ext = geo[GEO_EXT]
+    xg = geo[GEO_XG]
+    yg = geo[GEO_YG]
+    p0 = geo[GEO_P0]
+    p1 = geo[GEO_P1]
+    p2 = geo[GEO_P2]
+    ox = geo[GEO_OX]
+    oy = geo[GEO_OY]
+    dist = math.sqrt((cx - ox) ** 2 + (cy - oy) ** 2)
+    if dist > FAR_RATIO * ext:
+        nodes = FAR_NODES if dist <= FAR_RATIO_3 * ext else 3
+        vx_, vy_, nxx, nxy, nyx, nyy = far_sums(
+            edges, circles, ox, oy, cx, cy, xg, yg, p0, p1, p2, nodes
+        )
+    else:
+        g1x, g1y, g2xx, g2xy, g2yy, g3a, g3b, g3c, g3d = fan_tensors(edges, circles, cx, cy)
+        al = p0 + p1 * cx + p2 * cy
+        vx_ = al * g1x + g2xx * p1 + g2xy * p2
+        vy_ = al * g1y + g2xy * p1 + g2yy * p2
+        sxx = al * g2xx + g3a * p1 + g3b * p2
+        sxy = al * g2xy + g3b * p1 + g3c * p2
+        syy = al * g2yy + g3c * p1 + g3d * p2
+        ax = cx - xg
+        ay = cy - yg
+        nxx = sxx + ax * vx_
+        nxy = sxy + ax * vy_
+        nyx = sxy + ay * vx_
+        nyy = syy + ay * vy_
+    return vx_, vy_, nxx, nxy, nyx, nyy
+
+
+@jit(error_model="numpy")
 def wrench_body(edges, circles, geo, t00, t01, t10, t11, vx, vy, omega):
     """Friction force (body frame) and moment about G for the footprint in array form.
 
@@ -728,31 +763,7 @@ def wrench_body(edges, circles, geo, t00, t01, t10, t11, vx, vy, omega):
         return fx, fy, (geo[GEO_XP] - xg) * fy - (geo[GEO_YP] - yg) * fx
     cx = xg - vy / omega
     cy = yg + vx / omega
-    p0 = geo[GEO_P0]
-    p1 = geo[GEO_P1]
-    p2 = geo[GEO_P2]
-    ox = geo[GEO_OX]
-    oy = geo[GEO_OY]
-    dist = math.sqrt((cx - ox) ** 2 + (cy - oy) ** 2)
-    if dist > FAR_RATIO * ext:
-        nodes = FAR_NODES if dist <= FAR_RATIO_3 * ext else 3
-        vx_, vy_, nxx, nxy, nyx, nyy = far_sums(
-            edges, circles, ox, oy, cx, cy, xg, yg, p0, p1, p2, nodes
-        )
-    else:
-        g1x, g1y, g2xx, g2xy, g2yy, g3a, g3b, g3c, g3d = fan_tensors(edges, circles, cx, cy)
-        al = p0 + p1 * cx + p2 * cy
-        vx_ = al * g1x + g2xx * p1 + g2xy * p2
-        vy_ = al * g1y + g2xy * p1 + g2yy * p2
-        sxx = al * g2xx + g3a * p1 + g3b * p2
-        sxy = al * g2xy + g3b * p1 + g3c * p2
-        syy = al * g2yy + g3c * p1 + g3d * p2
-        ax = cx - xg
-        ay = cy - yg
-        nxx = sxx + ax * vx_
-        nxy = sxy + ax * vy_
-        nyx = sxy + ay * vx_
-        nyy = syy + ay * vy_
+    vx_, vy_, nxx, nxy, nyx, nyy = iso_parts(edges, circles, geo, cx, cy)
     sg = -1.0 if omega > 0.0 else 1.0  # the factor −sign(ω)
     fx = sg * (-t00 * vy_ + t01 * vx_)
     fy = sg * (-t10 * vy_ + t11 * vx_)

@@ -51,8 +51,9 @@ from slidespin.contact._engine import (
     footprint_argument,
     kernel_constants,
 )
-from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE, tensor_in_body
-from slidespin.contact._kernel_ellipse_jac import JAC_SIZE, JAC_WORKSPACE_SHAPE
+from slidespin.contact._jacobian import JAC_SIZE
+from slidespin.contact._kernel_ellipse import tensor_in_body
+from slidespin.contact._kernel_ellipse_jac import JAC_WORKSPACE_SHAPE
 from slidespin.motion import _dop853 as _dop
 from slidespin.motion._flow import NY, _rhs
 from slidespin.motion._integrator import _E3, _E5
@@ -81,7 +82,7 @@ def _row_patch_of_type(fp, geos, j):
 
 
 @jit(error_model="numpy")
-def rhs_jacobian(par, kc, W, D, jo, fp, y, out, Jy):
+def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
     """The right-hand side G(y) of :func:`slidespin.motion._flow._rhs` into ``out`` and, when
     the kernel has the wrench's exact derivatives, ∂G/∂y into ``Jy`` (NY × NY); returns
     (wrench status, available). ``jo`` keeps the kernel's derivative vector for
@@ -90,7 +91,7 @@ def rhs_jacobian(par, kc, W, D, jo, fp, y, out, Jy):
     nz = math.sqrt(z1 * z1 + z2 * z2 + z3 * z3)
     u1, u2, u3 = z1 / nz, z2 / nz, z3 / nz
     k = par[P_K]
-    a1, a2, a3, st, ok = accelerations_jacobian(par, kc, W, D, fp, u1, u2, u3, y[7], jo)
+    a1, a2, a3, st, ok = accelerations_jacobian(par, kc, W, fp, u1, u2, u3, y[7], jo)
     ua = u1 * a1 + u2 * a2 + u3 * a3
     out[0] = a1 - ua * u1
     out[1] = a2 - ua * u2
@@ -190,7 +191,7 @@ def parameter_rhs(par, jo, y, d00, d01, d10, d11, dk, out):
 
 
 @jit(error_model="numpy")
-def joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, gp, gm):
+def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, gp, gm):
     """Right-hand side of the joint system (y, S₁, …, S_p) (MODEL §15); returns the number
     of wrench evaluations above their error target.
 
@@ -200,16 +201,17 @@ def joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym
     every parameter at a state without them, by the central difference of the module notes.
     """
     npar = hs.size
-    st, ok = rhs_jacobian(pars[0], kcs[0], W, D, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
+    st, ok = rhs_jacobian(pars[0], kcs[0], W, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
     fails = st
     for k in range(npar):
         off = NY * (k + 1)
         if ok and direct[k]:
+            # ∂G/∂y has its non-zero columns at u (0–2), ln s (3) and φ (7) only
+            s0, s1, s2, s3, s7 = Y[off], Y[off + 1], Y[off + 2], Y[off + 3], Y[off + 7]
             for i in range(NY):
-                acc = 0.0
-                for j in range(NY):
-                    acc += Jy[i, j] * Y[off + j]
-                out[off + i] = acc
+                out[off + i] = (
+                    Jy[i, 0] * s0 + Jy[i, 1] * s1 + Jy[i, 2] * s2 + Jy[i, 3] * s3 + Jy[i, 7] * s7
+                )
             d = dts[k]
             if d[0] != 0.0 or d[1] != 0.0 or d[2] != 0.0 or d[3] != 0.0 or d[4] != 0.0:
                 parameter_rhs(
@@ -350,15 +352,13 @@ def integrate_sensitivities(
     n = Y0.size
     npar = hs.size
     kcs = [kernel_constants(pars[j]) for j in range(pars.shape[0])]
-    W = np.empty(WORKSPACE_SHAPE)
-    D = np.empty(JAC_WORKSPACE_SHAPE)
+    W = np.empty(JAC_WORKSPACE_SHAPE)  # the wrench's rows and the derivatives'
     jo = np.empty(JAC_SIZE)
     Jy = np.empty((NY, NY))
     direct, dts = direct_parameters(pars, geos, hs)
-    analytic = fp is None  # the kernels with exact derivatives (the ellipse's)
     controlled = np.ones(n, dtype=np.bool_)
     for k in range(npar):
-        if direct[k] and analytic:
+        if direct[k]:
             controlled[NY * (k + 1) : NY * (k + 2)] = False
     yp = np.empty(NY)
     ym = np.empty(NY)
@@ -371,7 +371,7 @@ def integrate_sensitivities(
     scale = np.empty(n)
     F = np.empty(n)
     rec = np.full((taus.size, n), np.nan)
-    fails = joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, F, yp, ym, gp, gm)
+    fails = joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, F, yp, ym, gp, gm)
     ln_s0 = Y[3]
     tau = 0.0
     nxt = 0
@@ -410,7 +410,7 @@ def integrate_sensitivities(
                         acc += _A[st, j] * K[j, i]
                     Yt[i] = Y[i] + hh * acc
                 fails += joint_rhs(
-                    pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Yt, K[st], yp, ym, gp, gm
+                    pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Yt, K[st], yp, ym, gp, gm
                 )
             for i in range(n):
                 acc = 0.0
@@ -418,7 +418,7 @@ def integrate_sensitivities(
                     acc += _B[j] * K[j, i]
                 Ynew[i] = Y[i] + hh * acc
             fails += joint_rhs(
-                pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Ynew, K[_NS], yp, ym, gp, gm
+                pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Ynew, K[_NS], yp, ym, gp, gm
             )
             for i in range(n):
                 scale[i] = atol + max(abs(Y[i]), abs(Ynew[i])) * rtol
@@ -456,12 +456,12 @@ def integrate_sensitivities(
             if _converged_measure(Y, F, npar, rate) < conv_tol:
                 status = SS_CONVERGED
                 break
-    term = stop_terms(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, yterm)
+    term = stop_terms(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, yterm)
     return Y, F, status, nsteps, fails, rec, term
 
 
 @jit(error_model="numpy")
-def stop_terms(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, y):
+def stop_terms(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, y):
     """∂G/∂y (rows 0..NY−1, NaN where the kernel has no exact derivatives) and ∂G/∂θ_k (row
     NY + k) at the state ``y``: for the implicit-function theorem at the terminal direction
     (:func:`slidespin.motion.sensitivity._terminal_sensitivity`)."""
@@ -471,10 +471,10 @@ def stop_terms(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, y):
     Y = np.zeros(n)
     Y[:NY] = y
     out = np.empty(n)
-    st, ok = rhs_jacobian(pars[0], kcs[0], W, D, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
+    st, ok = rhs_jacobian(pars[0], kcs[0], W, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
     if ok:
         term[:NY] = Jy
-    joint_rhs(pars, kcs, W, D, jo, Jy, fp, geos, hs, direct, dts, Y, out,
+    joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out,
               np.empty(NY), np.empty(NY), np.empty(NY), np.empty(NY))  # fmt: skip
     for k in range(npar):
         term[NY + k] = out[NY * (k + 1) : NY * (k + 2)]

@@ -1,0 +1,153 @@
+"""The footprint wrench's twist and angle derivatives (MODEL §10, §15) against independent
+truth: Richardson-extrapolated central differences of the footprint reference
+(tests/references/footprint_reference.py, adaptive quadrature sharing no code with the
+kernel), the wrench's homogeneity, and the isotropic parts Q, N against the reference
+wrench of unit tensors."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from footprint_reference import reference_wrench
+
+import slidespin as ss
+from slidespin.contact import _engine
+from slidespin.contact import _kernel_footprint_jac as KFJ
+from slidespin.contact._jacobian import JAC_SIZE
+from slidespin.contact.shapes import Annulus, Pads, Polygon, Rectangle
+
+L_SHAPE = [(0.0, 0.0), (0.3, 0.0), (0.3, 0.1), (0.1, 0.1), (0.1, 0.25), (0.0, 0.25)]
+TENSOR = ss.FrictionTensor(0.3, 0.5, f=0.12, angle=0.4)
+BODY_TENSOR = ss.FrictionTensor(0.35, 0.55, f=-0.08, frame="body", angle=-0.3)
+
+#: (footprint, pressure, tensor, ICR in the body frame relative to G [in extents], ω, φ)
+CASES = {
+    "rectangle-inside": (Rectangle(0.3, 0.1), ss.UniformPressure(), TENSOR, (0.2, 0.1), 2.0, 0.3),
+    "L-outside": (
+        Polygon(L_SHAPE, centre=(-0.1, -0.1)),
+        ss.LinearPressure(-0.005, 0.01),
+        BODY_TENSOR,
+        (0.45, 0.6),
+        -1.5,
+        1.1,
+    ),
+    "ring-hole": (Annulus(0.06, 0.1), ss.UniformPressure(), TENSOR, (0.15, -0.1), 3.0, -0.6),
+    "ring-band": (Annulus(0.06, 0.1), ss.UniformPressure(), BODY_TENSOR, (0.3, 0.55), 1.0, 0.2),
+    "pads-far": (
+        Pads(
+            [
+                Rectangle(0.06, 0.2, centre=(0.12, 0.0)),
+                Polygon([(0, 0.1), (0.05, 0.15), (-0.05, 0.15)]),
+            ]
+        ),
+        ss.UniformPressure(),
+        TENSOR,
+        (30.0, -12.0),
+        0.4,
+        2.0,
+    ),
+}
+
+
+def _setup(case):
+    fp, pressure, fr, icr, omega, phi = CASES[case]
+    body = ss.Body(fp, pressure, mass=1.0)
+    par, fe, fc, geo = body.engine_params(fr.kinetic, 1e-14)
+    ell = body.length_unit
+    t = tuple(float(par[i]) for i in (_engine.P_T00, _engine.P_T01, _engine.P_T10, _engine.P_T11))
+    frame = "body" if par[_engine.P_BODY] else "plane"
+    ref_law = (
+        ("linear", *pressure.centroid) if isinstance(pressure, ss.LinearPressure) else ("uniform",)
+    )
+    return body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi
+
+
+def _twist(body, ell, icr, omega, phi):
+    """Natural twist (v/ℓ, ω) of G in the fixed frame whose ICR is ``icr`` extents from G."""
+    ext = body.patch.to_arrays().frame[2]
+    d = np.array(icr) * ext / ell
+    vb = -omega * np.array([-d[1], d[0]])  # c − r_G = ẑ×v/ω
+    c, s = math.cos(phi), math.sin(phi)
+    return np.array([c * vb[0] - s * vb[1], s * vb[0] + c * vb[1], omega])
+
+
+def _kernel(fe, fc, geo, t, frame, phi, tw):
+    out = np.empty(JAC_SIZE)
+    ok = KFJ.jacobian_world(
+        np.ascontiguousarray(fe), np.ascontiguousarray(fc), np.ascontiguousarray(geo),
+        *t, frame == "body", phi, *tw, out,
+    )  # fmt: skip
+    return ok, out
+
+
+def _ref(fp, ref_law, t, frame, ell, phi, tw):
+    tensor = np.array([[t[0], t[1]], [t[2], t[3]]])
+    r = reference_wrench(fp, ref_law, tensor, tw[0] * ell, tw[1] * ell, tw[2], phi=phi, frame=frame)
+    return np.array([r[0], r[1], r[2] / ell])
+
+
+def _richardson(f, x, h):
+    d1 = (f(x + h) - f(x - h)) / (2 * h)
+    d2 = (f(x + h / 2) - f(x - h / 2)) / h
+    return (4 * d2 - d1) / 3
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_jacobian_matches_reference_differences(case):
+    body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi = _setup(case)
+    fp = CASES[case][0]
+    tw = _twist(body, ell, icr, omega, phi)
+    ok, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    assert ok
+    assert out[:3] == pytest.approx(_ref(fp, ref_law, t, frame, ell, phi, tw), abs=1e-9)
+    scale = np.linalg.norm(tw)
+    ref = np.empty((3, 4))
+    for k in range(3):
+
+        def f(x, k=k):
+            w = tw.copy()
+            w[k] = x
+            return _ref(fp, ref_law, t, frame, ell, phi, w)
+
+        ref[:, k] = _richardson(f, tw[k], 2e-3 * scale)
+    ref[:, 3] = _richardson(lambda p: _ref(fp, ref_law, t, frame, ell, p, tw), phi, 2e-3)
+    got = np.column_stack([out[9:18].reshape(3, 3), out[18:21]])
+    big = np.abs(ref).max()
+    assert np.abs(got - ref).max() <= 1e-6 * big, (got, ref)
+
+
+@pytest.mark.parametrize("case", sorted(CASES))
+def test_jacobian_annihilates_the_twist(case):
+    body, fe, fc, geo, ell, t, frame, _, icr, omega, phi = _setup(case)
+    tw = _twist(body, ell, icr, omega, phi)
+    _, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    jac = out[9:18].reshape(3, 3)
+    assert np.abs(jac @ tw).max() <= 1e-8 * np.abs(jac).max() * np.linalg.norm(tw)
+
+
+@pytest.mark.parametrize("case", ["rectangle-inside", "L-outside", "ring-band"])
+def test_isotropic_parts_give_the_wrench_of_any_tensor(case):
+    body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi = _setup(case)
+    fp = CASES[case][0]
+    tw = _twist(body, ell, icr, omega, phi)
+    _, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    c, s = math.cos(phi), math.sin(phi)
+    R = np.array([[c, -s], [s, c]])
+    for i in range(2):
+        for j in range(2):
+            e = np.zeros((2, 2))
+            e[i, j] = 1.0  # in the body frame
+            r = reference_wrench(fp, ref_law, e, tw[0] * ell, tw[1] * ell, tw[2], phi=phi,
+                                 frame="body")  # fmt: skip
+            fb = R.T @ np.array(r[:2])
+            assert fb == pytest.approx(-e @ out[3:5], abs=1e-10)
+            assert r[2] / ell == pytest.approx(-out[5 + 2 * i + j], abs=1e-10)
+
+
+def test_translation_and_blade_are_left_to_differences():
+    # ω = 0 (a translation) and a blade (one edge): no derivative, the caller differences
+    body, fe, fc, geo, ell, t, frame, *_ = _setup("rectangle-inside")
+    ok, out = _kernel(fe, fc, geo, t, frame, 0.3, np.array([1.0, 0.5, 0.0]))
+    assert not ok and np.isnan(out[9:]).all() and np.isfinite(out[:3]).all()
