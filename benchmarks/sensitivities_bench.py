@@ -4,7 +4,7 @@ For a few free motions: the plain :func:`slidespin.simulate`, the same with
 ``sensitivities=`` for 1, 3, 6 and 9 parameters, and the Richardson-extrapolated central
 differences of whole simulations that a user would otherwise run (4 simulations per
 parameter at rtol 1e-12); warm (each run once before timing), best of ``--repeat``. Prints the
-ratios to the plain run, the steps and wrench evaluations of each, and the time of
+ratios to the plain run, the steps of each, and the time of
 :func:`slidespin.aim` for a target made by a known launch.
 
     .venv/bin/python benchmarks/sensitivities_bench.py            # best of 5
@@ -61,7 +61,7 @@ def main(repeat: int) -> None:
             n = tr.sensitivities.n_steps
             print(
                 f"  sensitivities, {len(names)} par.  {t * 1e3:9.2f} ms   {n:4d} steps "
-                f"{t / t0:6.1f}x  ({1 + 2 * len(names)} wrench evaluations a stage)"
+                f"{t / t0:6.1f}x  ({', '.join(names)})"
             )
         t, _ = best(lambda: [ss.simulate(body, friction, state, rtol=1e-12) for _ in range(24)],
                     1)  # fmt: skip

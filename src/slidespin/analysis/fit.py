@@ -303,9 +303,9 @@ def fit(
         (:mod:`slidespin.motion.sensitivity`, MODEL §15: one sensitivity run per run, no
         step-size error; a run whose motion does not stop falls back to differences). Both
         reach the same estimates (``examples/fit_benchmark.py``: within 3e-4 of a standard
-        error); "exact" needs fewer iterations (8 residual evaluations against 13) but is
-        not faster yet (0.8×: a sensitivity run costs 1 + 2p wrench evaluations per step,
-        until the kernels give their derivatives analytically), hence not the default.
+        error); "exact" needs fewer iterations (8 residual evaluations against 10) and is
+        1.7× faster there (docs/sensitivities.md), but a run whose motion does not stop
+        falls back to differences, hence not the default.
 
     Returns
     -------

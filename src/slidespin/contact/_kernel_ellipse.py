@@ -278,9 +278,11 @@ def wrench_constants(bn, law, xg, yg, tnorm, tol):
 
 @jit(error_model="numpy")
 def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
-    """:func:`wrench_fast` and the tabulated rule it ended with: (fx, fy, m, status, method,
-    nodes, n, half), ``n`` the accepted rule's node count (0 for a translation and the adaptive
-    fallback) and ``half`` its half-width (Clenshaw–Curtis); its directions and weights are
+    """:func:`wrench_fast` and the last tabulated rule it ran: (fx, fy, m, status, method,
+    nodes, n, half, rule), ``rule`` that rule's method code, ``n`` its node count (0 if none
+    ran: a translation) and ``half`` its half-width (Clenshaw–Curtis). After the adaptive
+    fallback it is the largest rule tried, which missed the wrench's target. Its directions
+    and weights are
     left in rows 0–4 of ``W``. Unless ``D`` is ``None`` (a flag), ``W`` is a derivative
     workspace and each rule also fills its lower rows with the integrands of the wrench's
     twist derivatives on its nodes (:mod:`slidespin.contact._kernel_ellipse_jac` sums the
@@ -289,7 +291,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
     if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
         speed = math.sqrt(vx * vx + vy * vy)
         if speed == 0.0:
-            return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0
+            return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0, METHOD_TRANSLATION
         ux = vx / speed
         uy = vy / speed
         # pure translation: F = −𝔽 v̂, M = 0 since G lies over the pressure centroid
@@ -302,15 +304,17 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             0,
             0,
             0.0,
+            METHOD_TRANSLATION,
         )
     if t00 == 0.0 and t01 == 0.0 and t10 == 0.0 and t11 == 0.0:
-        return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0
+        return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0, METHOD_TRANSLATION
     cx = xg - vy / omega
     cy = yg + vx / omega
     sgn = -1.0 if omega > 0.0 else 1.0  # the overall factor −sign(ω)
     branch = law == LAW_UNIFORM or law == LAW_LINEAR  # √D is a branch point
     q = cx * cx + cy * cy * s22
     used = 0
+    last_n = 0  # the last tabulated rule tried, whose nodes stay in W
     if q <= 1.0:
         # ---- ICR inside (or on the rim): trapezoid, plain or mapped; CC near the rim
         d = d_a
@@ -381,7 +385,8 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             )
             used += n + 1 if method == METHOD_CLENSHAW_CURTIS_INSIDE else n
             if _estimate(e1, e2) <= tol:
-                return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half
+                return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method
+            last_n = n
             n *= 2
         # fallback, split where D is smallest (the near-tangent line through a near-rim ICR)
         if not branch:
@@ -412,7 +417,17 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             0.0,
             0.0,
         )
-        return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_INSIDE, used + nev, 0, 0.0
+        return (
+            sgn * fx,
+            sgn * fy,
+            sgn * mm,
+            status,
+            METHOD_ADAPTIVE_INSIDE,
+            used + nev,
+            last_n,
+            half,
+            method,
+        )
     # ---- ICR outside: the sector α₋ ≤ α ≤ α₊ of lines that meet the patch (α from ê_c)
     dist = math.sqrt(cx * cx + cy * cy)
     ecx = -cx / dist
@@ -498,8 +513,10 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         )
         used += n - 1 if branch else n + 1
         if _estimate(e1, e2) <= tol:
-            return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half
+            return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method
+        last_n = n
         n *= 2
+    last_half = half
     mid = 0.5 * (a_plus + a_minus)
     half = 0.5 * (a_plus - a_minus)
     inside = q <= 1.0
@@ -527,14 +544,24 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         mid,
         half,
     )
-    return sgn * fx, sgn * fy, sgn * mm, status, METHOD_ADAPTIVE_OUTSIDE, used + nev, 0, 0.0
+    return (
+        sgn * fx,
+        sgn * fy,
+        sgn * mm,
+        status,
+        METHOD_ADAPTIVE_OUTSIDE,
+        used + nev,
+        last_n,
+        last_half,
+        method,
+    )
 
 
 @jit(error_model="numpy")
 def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
     """:func:`wrench_body_info` with precomputed constants ``K`` (:func:`wrench_constants`)
     and a reusable workspace ``W`` (:func:`workspace`); the engine's inner call."""
-    fx, fy, m, status, method, used, _, _ = wrench_rule(
+    fx, fy, m, status, method, used, _, _, _ = wrench_rule(
         law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, None
     )
     return fx, fy, m, status, method, used

@@ -25,8 +25,11 @@ degree 0; a·(v, ω) = 0 node by node) and, for an isotropic 𝔽, ∂F/∂v is 
 
 A pure translation (ω = 0, or the ICR beyond ``FAR_ICR``) is closed form: δF = −𝔽 P⊥ δv/|v|
 with P⊥ = I − v̂v̂ᵀ, and δM = −(δω/|v|) Σ_ab Σ_ab e_a × 𝔽P⊥ẑ×e_b with Σ = ∫ p (r − r_G)(r −
-r_G)ᵀ dS, the pressure's second moment about G. After the adaptive Gauss–Kronrod fallback no
-rule is left to reuse: the derivative is then reported unavailable (the caller differences).
+r_G)ᵀ dS, the pressure's second moment about G. After the adaptive Gauss–Kronrod fallback
+(the ICR within ~1e-4 a of the rim) the largest tabulated rule tried, which missed the
+wrench's own target, is summed for the derivative if its nested estimate meets
+``DERIVATIVE_TOL`` (the derivative needs far less than the wrench's 1e-14); else the
+derivative is reported unavailable (the caller differences).
 
 Also returned, the wrench's isotropic parts Q and N (M = −Σ 𝔽_ij N_ij), which make its
 derivatives with respect to the tensor entries and the body angle exact (𝔽 enters linearly).
@@ -40,7 +43,7 @@ import math
 import numpy as np
 
 from slidespin._jit import jit
-from slidespin.contact._jacobian import unavailable, world_from_body
+from slidespin.contact._jacobian import JAC_SIZE, unavailable, world_from_body
 from slidespin.contact._kernel_ellipse import (
     FAR_ICR,
     WORKSPACE_SHAPE,
@@ -144,19 +147,19 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
     Arguments as :func:`slidespin.contact._kernel_ellipse.wrench_fast` (body-frame tensor
     ``b``; ``W`` a :func:`jac_workspace`). Writes ``out[:18]``: (Fx, Fy, M), Q (2), N (4)
     with F = −𝔽Q and M = −Σ 𝔽_ij N_ij, and ∂(Fx, Fy, M)/∂(vx, vy, ω) row-major. Returns
-    (status, available): the wrench's status and whether the derivative is there (False after
-    the adaptive fallback or if its own error estimate misses ``DERIVATIVE_TOL``; ``out[9:18]``
-    is then NaN).
+    (status, available): the wrench's status and whether the derivative is there (False if
+    no rule ran or its own error estimate misses ``DERIVATIVE_TOL``; ``out[9:]`` is then
+    NaN).
     """
     s22, xg, yg = K[1], K[3], K[4]
-    fx, fy, m, status, method, _, n, half = wrench_rule(
+    fx, fy, m, status, _, _, n, half, method = wrench_rule(
         law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, W
     )
     out[0] = fx
     out[1] = fy
     out[2] = m
-    for i in range(3, 18):
-        out[i] = 0.0
+    for i in range(3, JAC_SIZE):
+        out[i] = 0.0  # (a translation: ∂W/∂G = 0, G stays the pressure centroid)
     if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
         speed = math.sqrt(vx * vx + vy * vy)
         if speed == 0.0:
@@ -218,6 +221,15 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
     out[15] = -iw * sums[11]
     out[16] = -iw * sums[12]
     out[17] = -iw * sums[13]
+    # the pressure centre G = (ξ_G, η_G) at a fixed twist of G: the ICR moves with G
+    # (∂W/∂c_x = −ω ∂W/∂vy, ∂W/∂c_y = ω ∂W/∂vx), the moment's arm (∂M/∂ξ_G = −F_y,
+    # ∂M/∂η_G = F_x) and the linear law's gradient (lx = 4 ξ_G, ly = 4 η_G a²/b²)
+    sw = -sg  # the wrench's factor −sign(ω)
+    for r in range(3):
+        out[21 + r] = -omega * out[10 + 3 * r] + 4.0 * sw * sums[14 + r]
+        out[24 + r] = omega * out[9 + 3 * r] + 4.0 * s22 * sw * sums[17 + r]
+    out[23] -= fy
+    out[26] += fx
     return status, True
 
 

@@ -19,8 +19,9 @@ from slidespin._jit import jit
 LAW_UNIFORM, LAW_LINEAR, LAW_BOUSSINESQ, LAW_HERTZ = 0, 1, 2, 3
 
 #: rows of the derivative workspace: Q (2), N (4), the symmetric êêᵀK₀ (3), êσK₀ (2), the
-#: moment's (3); see :mod:`slidespin.contact._kernel_ellipse_jac`
-NROWS = 14
+#: moment's (3), the wrench of the linear law's gradient (lx: 3, ly: 3); see
+#: :mod:`slidespin.contact._kernel_ellipse_jac`
+NROWS = 20
 #: the first of them in the workspace (rows 0–7 are the wrench's rule, see
 #: :mod:`slidespin.contact._kernel_ellipse_rules`)
 DROW = 8
@@ -167,6 +168,20 @@ def lines_and_derivatives(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n
         W[DROW + 3, j] = my - yg
         W[DROW + 4, j] = k1
         W[DROW + 5, j] = k2
+        # the linear law's weight l₀ + l₁x is linear in (lx, ly): ∂/∂lx of K₁, K₂ is
+        # (mx K₁⁰ + ex K₂⁰, (mx + ex m) K₂⁰) with the unweighted K₁⁰ = kb m, K₂⁰ = k2b
+        dk1x = mx * (kb * m) + ex * k2b
+        dk2x = (mx + ex * m) * k2b
+        dk1y = my * (kb * m) + ey * k2b
+        dk2y = (my + ey * m) * k2b
+        arm = (mx - xg) * gy - (my - yg) * gx
+        tor = ex * gy - ey * gx
+        W[DROW + 14, j] = dk1x * gx
+        W[DROW + 15, j] = dk1x * gy
+        W[DROW + 16, j] = dk1x * arm + dk2x * tor
+        W[DROW + 17, j] = dk1y * gx
+        W[DROW + 18, j] = dk1y * gy
+        W[DROW + 19, j] = dk1y * arm + dk2y * tor
     for j in range(n):
         ex = W[0, j]
         ey = W[1, j]

@@ -125,5 +125,6 @@ def jacobian_world(edges, circles, geo, t00, t01, t10, t11, body_frame, phi, vx,
         out[0] = c * fbx - s * fby
         out[1] = s * fbx + c * fby
         return ok
+    unavailable(out, 21)  # ∂W/∂G: the pressure centre moves the footprint's law (differenced)
     world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame)
     return ok

@@ -5,24 +5,29 @@ parameter θ_k, its sensitivity S_k = ∂y/∂θ_k at fixed regularised time τ,
 
     dy/dτ = G(y; θ),     dS_k/dτ = (∂G/∂y) S_k + ∂G/∂θ_k       (MODEL §15, in τ).
 
-The right-hand side of the variational equation is the directional derivative of the flow
-along (S_k, e_k) in the joint (state, parameter) space, taken by a central difference of the
-exact right-hand side :func:`slidespin.motion._flow._rhs` (the wrench kernels of MODEL §2 and
-§10) with the step h_k of parameter k:
+With the wrench's exact derivatives (:func:`slidespin.contact._engine.accelerations_jacobian`:
+analytic on an ellipse, :mod:`slidespin.contact._kernel_ellipse_jac`; differenced in the ICR
+on a footprint, :mod:`slidespin.contact._kernel_footprint_jac`) ∂G/∂y is assembled once per
+evaluation (:func:`rhs_jacobian`) and serves every parameter; ∂G/∂θ_k is exact for the
+parameters that move only the tensor's entries, the radius of gyration, an ellipse's
+pressure centre, or the start (:func:`direct_parameters`, :func:`parameter_rhs`). For the
+others (a footprint's pressure centre), and at a state where the kernel has no derivative
+(the elliptic quadrature's adaptive fallback, a blade, a footprint's translation), the
+right-hand side is the directional derivative of the flow along (S_k, e_k) in the joint
+(state, parameter) space, a central difference of :func:`slidespin.motion._flow._rhs` with
+the step h_k of parameter k,
 
     (G(y + h_k S_k; θ + h_k e_k) − G(y − h_k S_k; θ − h_k e_k)) / (2 h_k),
 
-where the perturbed parameters θ ± h_k e_k reach the kernels as whole parameter vectors
-(``pars``, rows 1 + 2k and 2 + 2k) and, for a footprint, kernel geometries (``geos``):
-every parameter of a body, a tensor or a start is then one case of the same code. The error
-of that difference is O(h_k²) (the kernels are smooth in the twist's direction, the body
-angle and the parameters; the friction entries enter linearly), about 1e-10 of the
-derivative at the relative steps :mod:`slidespin.motion.sensitivity` uses. This departs from
-the issue's wish for analytic derivatives of the chord integrals: they are not written yet,
-and each parameter costs two wrench evaluations per stage instead of a fraction of one.
+the perturbed parameters θ ± h_k e_k reaching the kernels as whole parameter vectors
+(``pars``, rows 1 + 2k and 2 + 2k) and, for a footprint, kernel geometries (``geos``); its
+error is O(h_k²), about 1e-10 of the derivative, and it costs two wrench evaluations per
+parameter and stage (the exact path: one evaluation with derivatives, about three wrenches'
+worth, for all parameters).
 
 The integrator is the DOP853 pair of :mod:`slidespin.motion._integrator` (the same
-coefficients and error norm) on the joint vector (y, S), its steps cut to land on the plain
+coefficients and error norm) on the joint vector (y, S), the sensitivities of the exact
+parameters weighted by ``DIRECT_WEIGHT`` in the error norm, its steps cut to land on the plain
 run's recorded times (or, with ``replay``, those steps themselves without an error test:
 an internal differentiation of the integrator in the sense of Bock, cheaper but not accurate
 enough at the plain run's tolerance), until s has dropped by ``ln_drop`` and the stop's
@@ -41,11 +46,14 @@ from slidespin._jit import is_none_type, jit, overload
 from slidespin.contact._engine import (
     P_BODY,
     P_K,
+    P_LAW,
     P_SHAPE,
     P_T00,
     P_T01,
     P_T10,
     P_T11,
+    P_XG,
+    P_YG,
     SHAPE_FOOTPRINT,
     accelerations_jacobian,
     footprint_argument,
@@ -64,6 +72,14 @@ _B = np.ascontiguousarray(_dop.B)
 
 # status codes of :func:`integrate_sensitivities`
 SS_CONVERGED, SS_MAX_STEPS, SS_STEP_TOO_SMALL, SS_NON_FINITE = range(4)
+#: weight in the step control of the sensitivities of parameters with exact derivatives
+#: (those of central differences weigh 1, the state 1). Measured (tests/analysis/
+#: test_sensitivities.py's cases against Richardson differences of whole runs): left out
+#: (0) the state's steps leave S under-resolved where the ICR crosses the rim (the wrench
+#: is only C¹ there) and ∂t_stop/∂ηc was 1.3e-6 off; 0.2: 1.2e-6; 0.3: within the 1e-6
+#: of the tests with a margin of 3 (the worst case left is a differenced parameter's).
+#: Steps for 6 parameters of an ellipse: 49 (0), 69 (0.3), 80 (1)
+DIRECT_WEIGHT = 0.3
 
 
 def row_patch(fp, geos, j):
@@ -156,11 +172,13 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
 
 
 @jit(error_model="numpy")
-def parameter_rhs(par, jo, y, d00, d01, d10, d11, dk, out):
+def parameter_rhs(par, jo, y, d, out):
     """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
-    d𝔽 = (d00, d01; d10, d11) per unit θ, in the tensor's own frame) and the radius of
-    gyration (by dk): exact, from the wrench's isotropic parts and its twist derivatives
-    in ``jo`` (:func:`rhs_jacobian` at ``y``); the wrench is linear in 𝔽 (MODEL §10)."""
+    d𝔽 = (d[0], d[1]; d[2], d[3]) per unit θ, in the tensor's own frame), the radius of
+    gyration (by d[4]) and an ellipse's pressure centre G (by (d[5], d[6]) in the body frame):
+    exact, from the wrench's isotropic parts and its derivatives in ``jo``
+    (:func:`rhs_jacobian` at ``y``); the wrench is linear in 𝔽 (MODEL §10)."""
+    d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
     z1, z2, z3 = y[0], y[1], y[2]
     nz = math.sqrt(z1 * z1 + z2 * z2 + z3 * z3)
     u1, u2, u3 = z1 / nz, z2 / nz, z3 / nz
@@ -174,6 +192,10 @@ def parameter_rhs(par, jo, y, d00, d01, d10, d11, dk, out):
     mm = -(e00 * jo[5] + e01 * jo[6] + e10 * jo[7] + e11 * jo[8])
     b1 = c * fbx - sn * fby
     b2 = sn * fbx + c * fby
+    if dxg != 0.0 or dyg != 0.0:  # (NaN where the kernel has no ∂W/∂G: never direct there)
+        b1 += dxg * jo[21] + dyg * jo[24]
+        b2 += dxg * jo[22] + dyg * jo[25]
+        mm += dxg * jo[23] + dyg * jo[26]
     b3 = mm / k
     if dk != 0.0:
         dt = -u3 / (k * k) * dk  # the twist's ω = u3/k moves
@@ -213,10 +235,11 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
                     Jy[i, 0] * s0 + Jy[i, 1] * s1 + Jy[i, 2] * s2 + Jy[i, 3] * s3 + Jy[i, 7] * s7
                 )
             d = dts[k]
-            if d[0] != 0.0 or d[1] != 0.0 or d[2] != 0.0 or d[3] != 0.0 or d[4] != 0.0:
-                parameter_rhs(
-                    pars[0], jo, Y[:NY], d[0], d[1], d[2], d[3], d[4], out[off : off + NY]
-                )
+            moved = False
+            for i in range(d.size):
+                moved = moved or d[i] != 0.0
+            if moved:
+                parameter_rhs(pars[0], jo, Y[:NY], d, out[off : off + NY])
             continue
         h = hs[k]
         for i in range(NY):
@@ -232,32 +255,35 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
 
 @jit(error_model="numpy")
 def direct_parameters(pars, geos, hs):
-    """Which parameters move only the tensor's entries and k (``direct``), and their rates
-    (d𝔽, dk) per unit θ (central differences of rows that are linear in θ for the tensor)."""
+    """Which parameters move only the tensor's entries, k and an ellipse's pressure centre
+    (``direct``: their ∂G/∂θ is :func:`parameter_rhs`'s), and their rates (d𝔽, dk, dξ_G,
+    dη_G) per unit θ: central differences of the rows (linear in θ for the tensor and G)."""
     npar = hs.size
     direct = np.zeros(npar, dtype=np.bool_)
-    dts = np.zeros((npar, 5))
-    tensor = (P_T00, P_T01, P_T10, P_T11)
+    dts = np.zeros((npar, 7))
+    moved = (P_T00, P_T01, P_T10, P_T11, P_K, P_XG, P_YG)
+    ellipse = pars[0, P_SHAPE] != SHAPE_FOOTPRINT
     for k in range(npar):
         p = pars[1 + 2 * k]
         m = pars[2 + 2 * k]
         same = True
         for i in range(pars.shape[1]):
-            if i != P_K and i != P_T00 and i != P_T01 and i != P_T10 and i != P_T11:
-                if p[i] != pars[0, i] or m[i] != pars[0, i]:
-                    same = False
+            free = i == P_T00 or i == P_T01 or i == P_T10 or i == P_T11 or i == P_K
+            # G moves with the law uniform ↔ linear (the kernel's formulas are the same)
+            free = free or (ellipse and (i == P_XG or i == P_YG or i == P_LAW))
+            if not free and (p[i] != pars[0, i] or m[i] != pars[0, i]):
+                same = False
         for i in range(geos.shape[1]):
             if geos[1 + 2 * k, i] != geos[0, i] or geos[2 + 2 * k, i] != geos[0, i]:
                 same = False
         direct[k] = same
-        for i in range(4):
-            dts[k, i] = (p[tensor[i]] - m[tensor[i]]) / (2.0 * hs[k])
-        dts[k, 4] = (p[P_K] - m[P_K]) / (2.0 * hs[k])
+        for i in range(7):
+            dts[k, i] = (p[moved[i]] - m[moved[i]]) / (2.0 * hs[k])
     return direct, dts
 
 
 @jit(error_model="numpy")
-def _joint_err_norm(K, h, scale, controlled):
+def _joint_err_norm(K, h, scale, weight):
     """The integrator's DOP853 error norm (:func:`slidespin.motion._integrator._err_norm`)
     over the components marked ``controlled`` only (the state, and the sensitivities of the
     parameters whose right-hand side is a central difference)."""
@@ -265,7 +291,7 @@ def _joint_err_norm(K, h, scale, controlled):
     e3 = 0.0
     m = 0
     for i in range(scale.size):
-        if not controlled[i]:
+        if weight[i] == 0.0:
             continue
         m += 1
         a5 = 0.0
@@ -273,8 +299,8 @@ def _joint_err_norm(K, h, scale, controlled):
         for j in range(_NS + 1):
             a5 += K[j, i] * _E5[j]
             a3 += K[j, i] * _E3[j]
-        a5 /= scale[i]
-        a3 /= scale[i]
+        a5 *= weight[i] / scale[i]
+        a3 *= weight[i] / scale[i]
         e5 += a5 * a5
         e3 += a3 * a3
     if e5 == 0.0 and e3 == 0.0:
@@ -356,10 +382,10 @@ def integrate_sensitivities(
     jo = np.empty(JAC_SIZE)
     Jy = np.empty((NY, NY))
     direct, dts = direct_parameters(pars, geos, hs)
-    controlled = np.ones(n, dtype=np.bool_)
+    weight = np.ones(n)
     for k in range(npar):
         if direct[k]:
-            controlled[NY * (k + 1) : NY * (k + 2)] = False
+            weight[NY * (k + 1) : NY * (k + 2)] = DIRECT_WEIGHT
     yp = np.empty(NY)
     ym = np.empty(NY)
     gp = np.empty(NY)
@@ -423,7 +449,7 @@ def integrate_sensitivities(
             for i in range(n):
                 scale[i] = atol + max(abs(Y[i]), abs(Ynew[i])) * rtol
             scale[7] = atol  # the body angle to an absolute tolerance, as the integrator
-            en = _joint_err_norm(K, hh, scale, controlled)
+            en = _joint_err_norm(K, hh, scale, weight)
             if not math.isfinite(en):
                 status = SS_NON_FINITE
                 break

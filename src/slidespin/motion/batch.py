@@ -452,7 +452,7 @@ def simulate_many(
         case gets, as the columns ``d_<q>/d_<parameter>`` of ``StopResults.sensitivities``
         (and of ``as_dict``, ``to_pandas``). Computed case by case in Python (one
         sensitivity run each, MODEL §15), not in the parallel batch engine (a sensitivity run
-        costs 18–55 plain runs for 6 parameters: docs/sensitivities.md).
+        costs 10–15 plain runs for 6 parameters: docs/sensitivities.md).
 
     Returns
     -------

@@ -16,11 +16,13 @@ variational equation dS/dτ = (∂G/∂y) S + ∂G/∂θ, integrated with the mo
 :func:`slidespin.simulate` (``sensitivities=``) and :func:`slidespin.stop_sensitivities` are
 the public entries; this module holds the parameter names, their perturbations and the run.
 
-Departure from the issue: the variational equation's right-hand side is the central
-difference of the exact right-hand side along (S_k, e_k) (see
-:mod:`slidespin.motion._sensitivity_core`), accurate to about 1e-10 of the derivative, not
-analytic derivatives of the kernels; a run costs 1 + 2p wrench evaluations per stage for p
-parameters.
+The variational equation's right-hand side uses the wrench's exact derivatives where the
+kernels give them (an ellipse under every law: analytic; a footprint: its isotropic integrals
+differenced in the ICR) and a central difference of the whole right-hand side elsewhere (a
+footprint's pressure centre; see :mod:`slidespin.motion._sensitivity_core`). Cost
+(``benchmarks/sensitivities_bench.py``): 10-15x a plain run for 6 parameters (18-55x with
+1 + 2p wrench evaluations per stage before); the issue's goal of 3x is not met
+(docs/sensitivities.md says why).
 """
 
 from __future__ import annotations

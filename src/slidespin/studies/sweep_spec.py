@@ -54,7 +54,7 @@ refuses ``rtol``, ``max_steps`` and the start state other than ``phi0``. The top
 ``sensitivities`` (a list of the parameters of :func:`slidespin.stop_sensitivities`, with
 ``compute = "stop"``) adds each case's stop derivatives as the columns
 ``d_<q>/d_<parameter>`` (q: ``t_stop``, ``x``, ``y``, ``phi``, ``beta_stop``; MODEL §15), one
-sensitivity run per case (18–55 plain runs' cost for 6 parameters).
+sensitivity run per case (10–15 plain runs' cost for 6 parameters).
 
 Limits (checked before any work, with the key and the valid range in the message): at most
 :data:`MAX_CASES` cases, :data:`MAX_AXIS` values per grid axis or list, :data:`MAX_CHUNK`
