@@ -14,6 +14,7 @@ from reference import reference_wrench
 
 from slidespin.contact import _kernel_ellipse as K
 from slidespin.contact import _kernel_ellipse_jac as KJ
+from slidespin.contact._jacobian import JAC_SIZE
 
 LAWS = ("uniform", "linear", "boussinesq", "hertz")
 TOL = 1e-14
@@ -42,7 +43,7 @@ def _kernel(law, bn, g, t, phi, twist):
     li = LAWS.index(law)
     xg, yg = g if law == "linear" else (0.0, 0.0)
     kc = K.wrench_constants(bn, li, xg, yg, math.sqrt(sum(x * x for x in t)), TOL)
-    out = np.empty(21)
+    out = np.empty(JAC_SIZE)
     st, ok = KJ.jacobian_world(li, kc, *t, False, phi, *twist, TOL, KJ.jac_workspace(), out)
     return st, ok, out
 

@@ -239,6 +239,9 @@ def jacobian_world(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, t
     plane's, or the body's with ``body_frame``), the twist of G in the fixed frame. Writes
     ``out`` (:data:`slidespin.contact._jacobian.JAC_SIZE`; the layout there): the fixed-frame
     wrench and derivatives. Returns (status, available)."""
+    if out.size < JAC_SIZE or W.shape[0] < DROW + NROWS or W.shape[1] < WORKSPACE_SHAPE[1] + 1:
+        # (compiled code does not check its writes)
+        raise ValueError("out, W: the vector needs JAC_SIZE entries, W jac_workspace()'s shape")
     c = math.cos(phi)
     s = math.sin(phi)
     vbx = c * vx + s * vy

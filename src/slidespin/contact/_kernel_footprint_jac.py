@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 
 from slidespin._jit import jit
-from slidespin.contact._jacobian import unavailable, world_from_body
+from slidespin.contact._jacobian import JAC_SIZE, unavailable, world_from_body
 from slidespin.contact._kernel_ellipse import tensor_in_body
 from slidespin.contact._kernel_footprint import (
     FAR_ICR,
@@ -114,6 +114,8 @@ def jacobian_world(edges, circles, geo, t00, t01, t10, t11, body_frame, phi, vx,
     """:func:`jacobian_body` in the fixed frame (arguments as
     :func:`slidespin.contact._kernel_footprint.wrench_world`); returns whether the
     derivatives are available."""
+    if out.size < JAC_SIZE:  # (compiled code does not check its writes)
+        raise ValueError("out: the derivative vector needs JAC_SIZE entries")
     c = math.cos(phi)
     s = math.sin(phi)
     vbx = c * vx + s * vy

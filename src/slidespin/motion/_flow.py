@@ -33,29 +33,42 @@ from slidespin.contact._kernel_ellipse import WORKSPACE_SHAPE
 NY = 9
 
 
-@jit(error_model="numpy")
-def _rhs(par, kc, W, fp, y, out):
-    """Right-hand side of the regularised system; returns the wrench status."""
+@jit(error_model="numpy", inline="always")
+def unit_direction(y):
+    """(u₁, u₂, u₃, 1/|z|): the state's direction z = y[:3] normalised."""
     u1 = y[0]
     u2 = y[1]
     u3 = y[2]
     inv = 1.0 / math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
-    u1 *= inv
-    u2 *= inv
-    u3 *= inv
-    ax, ay, am, st = accelerations(par, kc, W, fp, u1, u2, u3, y[7])
+    return u1 * inv, u2 * inv, u3 * inv, inv
+
+
+@jit(error_model="numpy", inline="always")
+def flow(ax, ay, am, u1, u2, u3, ln_s, k, out):
+    """The right-hand side (module notes) from the accelerations A = (ax, ay, am) at the
+    unit direction u, into ``out``; returns (u·A, s, s², √(u₁² + u₂²))."""
     ua = u1 * ax + u2 * ay + u3 * am
     out[0] = ax - ua * u1
     out[1] = ay - ua * u2
     out[2] = am - ua * u3
     out[3] = ua
-    s = math.exp(y[3])
+    s = math.exp(ln_s)
     s2 = s * s
+    r = math.sqrt(u1 * u1 + u2 * u2)
     out[4] = s
     out[5] = s2 * u1
     out[6] = s2 * u2
-    out[7] = s2 * u3 / par[P_K]
-    out[8] = s2 * math.sqrt(u1 * u1 + u2 * u2)
+    out[7] = s2 * u3 / k
+    out[8] = s2 * r
+    return ua, s, s2, r
+
+
+@jit(error_model="numpy")
+def _rhs(par, kc, W, fp, y, out):
+    """Right-hand side of the regularised system; returns the wrench status."""
+    u1, u2, u3, _ = unit_direction(y)
+    ax, ay, am, st = accelerations(par, kc, W, fp, u1, u2, u3, y[7])
+    flow(ax, ay, am, u1, u2, u3, y[3], par[P_K], out)
     return st
 
 

@@ -63,7 +63,7 @@ from slidespin.contact._jacobian import JAC_SIZE
 from slidespin.contact._kernel_ellipse import tensor_in_body
 from slidespin.contact._kernel_ellipse_jac import JAC_WORKSPACE_SHAPE
 from slidespin.motion import _dop853 as _dop
-from slidespin.motion._flow import NY, _rhs
+from slidespin.motion._flow import NY, _rhs, flow, unit_direction
 from slidespin.motion._integrator import _E3, _E5
 
 _NS = _dop.N_STAGES
@@ -103,24 +103,10 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
     the kernel has the wrench's exact derivatives, ∂G/∂y into ``Jy`` (NY × NY); returns
     (wrench status, available). ``jo`` keeps the kernel's derivative vector for
     :func:`parameter_rhs`."""
-    z1, z2, z3 = y[0], y[1], y[2]
-    nz = math.sqrt(z1 * z1 + z2 * z2 + z3 * z3)
-    u1, u2, u3 = z1 / nz, z2 / nz, z3 / nz
+    u1, u2, u3, inz = unit_direction(y)
     k = par[P_K]
     a1, a2, a3, st, ok = accelerations_jacobian(par, kc, W, fp, u1, u2, u3, y[7], jo)
-    ua = u1 * a1 + u2 * a2 + u3 * a3
-    out[0] = a1 - ua * u1
-    out[1] = a2 - ua * u2
-    out[2] = a3 - ua * u3
-    out[3] = ua
-    s = math.exp(y[3])
-    s2 = s * s
-    r = math.sqrt(u1 * u1 + u2 * u2)
-    out[4] = s
-    out[5] = s2 * u1
-    out[6] = s2 * u2
-    out[7] = s2 * u3 / k
-    out[8] = s2 * r
+    ua, s, s2, r = flow(a1, a2, a3, u1, u2, u3, y[3], k, out)
     if not ok:
         return st, ok
     # dA/du: the twist is (u1, u2, u3/k) and A₃ = M/k
@@ -149,7 +135,6 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
     if r > 0.0:
         Jy[8, 4] = s2 * u1 / r
         Jy[8, 5] = s2 * u2 / r
-    inz = 1.0 / nz
     for i in range(NY):
         g0, g1, g2 = Jy[i, 4], Jy[i, 5], Jy[i, 6]
         gu = g0 * u1 + g1 * u2 + g2 * u3
@@ -179,9 +164,7 @@ def parameter_rhs(par, jo, y, d, out):
     exact, from the wrench's isotropic parts and its derivatives in ``jo``
     (:func:`rhs_jacobian` at ``y``); the wrench is linear in 𝔽 (MODEL §10)."""
     d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
-    z1, z2, z3 = y[0], y[1], y[2]
-    nz = math.sqrt(z1 * z1 + z2 * z2 + z3 * z3)
-    u1, u2, u3 = z1 / nz, z2 / nz, z3 / nz
+    u1, u2, u3, _ = unit_direction(y)
     k = par[P_K]
     phi = y[7]
     c = math.cos(phi)
