@@ -146,8 +146,8 @@ def test_isotropic_parts_give_the_wrench_of_any_tensor(case):
             assert r[2] / ell == pytest.approx(-out[5 + 2 * i + j], abs=1e-10)
 
 
-def test_translation_and_blade_are_left_to_differences():
-    # ω = 0 (a translation) and a blade (one edge): no derivative, the caller differences
+def test_translation_is_left_to_differences():
+    # ω = 0 (a translation): no derivative, the caller differences the right-hand side
     body, fe, fc, geo, ell, t, frame, *_ = _setup("rectangle-inside")
     ok, out = _kernel(fe, fc, geo, t, frame, 0.3, np.array([1.0, 0.5, 0.0]))
     assert not ok and np.isnan(out[9:]).all() and np.isfinite(out[:3]).all()
