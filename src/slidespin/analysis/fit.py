@@ -304,7 +304,7 @@ def fit(
         step-size error; a run whose motion does not stop falls back to differences). Both
         reach the same estimates (``examples/fit_benchmark.py``: within 3e-4 of a standard
         error); "exact" needs fewer iterations (8 residual evaluations against 10) and is
-        1.7× faster there (docs/sensitivities.md), but a run whose motion does not stop
+        1.7–1.9× faster there (docs/sensitivities.md), but a run whose motion does not stop
         falls back to differences, hence not the default.
 
     Returns
