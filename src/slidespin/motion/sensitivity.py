@@ -383,7 +383,8 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi, term) -> NDArra
     J_T ∂u* = −(∂T/∂φ ∂φ*/∂θ + ∂T/∂θ) in the tangent plane at u*, with ∂φ*/∂θ = ``s_phi``
     from the run. J_T, ∂T/∂φ and ∂T/∂θ are the rows 0–2 of the run's ``term`` (the exact
     derivatives of :func:`slidespin.motion._sensitivity_core.stop_terms`); where the kernel
-    has none (a footprint), J_T and ∂T/∂φ are central differences of the exact wrench
+    has none there (a blade; a derivative off its error target), J_T and ∂T/∂φ are central
+    differences of the exact wrench
     (steps ``REL_STEP``). (Integrating S_u to its limit instead converges only at the fixed
     point's eigenvalue, slowly near a Table 2 boundary.)"""
     u = u / np.linalg.norm(u)
