@@ -11,6 +11,7 @@ import math
 import numpy as np
 import pytest
 from reference import reference_wrench
+from stop_differences import richardson
 
 from slidespin.contact import _kernel_ellipse as K
 from slidespin.contact import _kernel_ellipse_jac as KJ
@@ -54,13 +55,6 @@ def _ref(law, bn, g, t, phi, twist):
     )
 
 
-def _richardson(f, x, h):
-    """Central differences at h and h/2, extrapolated: error O(h⁴)."""
-    d1 = (f(x + h) - f(x - h)) / (2 * h)
-    d2 = (f(x + h / 2) - f(x - h / 2)) / h
-    return (4 * d2 - d1) / 3
-
-
 @pytest.mark.parametrize("case", range(len(STATES)))
 def test_jacobian_matches_reference_differences(case):
     law, bn, g, t, phi, twist = STATES[case]
@@ -77,8 +71,8 @@ def test_jacobian_matches_reference_differences(case):
             w[k] = x
             return _ref(law, bn, g, t, phi, w)
 
-        ref[:, k] = _richardson(f, tw[k], 2e-3 * scale)
-    ref[:, 3] = _richardson(lambda p: _ref(law, bn, g, t, p, tw), phi, 2e-3)
+        ref[:, k] = richardson(f, tw[k], 2e-3 * scale)
+    ref[:, 3] = richardson(lambda p: _ref(law, bn, g, t, p, tw), phi, 2e-3)
     got = np.column_stack([jac, out[18:21]])
     assert np.abs(got - ref).max() <= 1e-7 * max(1.0, np.abs(ref).max() * scale) / scale
 

@@ -11,6 +11,7 @@ import math
 import numpy as np
 import pytest
 from footprint_reference import reference_wrench
+from stop_differences import richardson
 
 import slidespin as ss
 from slidespin.contact import _engine
@@ -88,12 +89,6 @@ def _ref(fp, ref_law, t, frame, ell, phi, tw):
     return np.array([r[0], r[1], r[2] / ell])
 
 
-def _richardson(f, x, h):
-    d1 = (f(x + h) - f(x - h)) / (2 * h)
-    d2 = (f(x + h / 2) - f(x - h / 2)) / h
-    return (4 * d2 - d1) / 3
-
-
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_jacobian_matches_reference_differences(case):
     body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi = _setup(case)
@@ -111,8 +106,8 @@ def test_jacobian_matches_reference_differences(case):
             w[k] = x
             return _ref(fp, ref_law, t, frame, ell, phi, w)
 
-        ref[:, k] = _richardson(f, tw[k], 2e-3 * scale)
-    ref[:, 3] = _richardson(lambda p: _ref(fp, ref_law, t, frame, ell, p, tw), phi, 2e-3)
+        ref[:, k] = richardson(f, tw[k], 2e-3 * scale)
+    ref[:, 3] = richardson(lambda p: _ref(fp, ref_law, t, frame, ell, p, tw), phi, 2e-3)
     got = np.column_stack([out[9:18].reshape(3, 3), out[18:21]])
     big = np.abs(ref).max()
     assert np.abs(got - ref).max() <= 1e-6 * big, (got, ref)

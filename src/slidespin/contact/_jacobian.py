@@ -31,14 +31,18 @@ def unavailable(out, start):
 
 
 @jit(error_model="numpy")
-def world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame):
+def world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame, available):
     """Turn a body-frame derivative vector (twist (vbx, vby, ω) in the body frame, tensor
     ``b`` in the body frame, the body at angle φ with c = cos φ, s = sin φ) into the fixed
-    frame: the force and the twist derivatives, and ∂W/∂φ at a fixed world twist and tensor
-    (the tensor's own frame: the plane's unless ``body_frame``)."""
+    frame: the force and, if ``available``, the twist derivatives and ∂W/∂φ at a fixed world
+    twist and tensor (the tensor's own frame: the plane's unless ``body_frame``); else they
+    are marked unavailable."""
     fbx, fby = out[0], out[1]
     out[0] = c * fbx - s * fby
     out[1] = s * fbx + c * fby
+    if not available:
+        unavailable(out, 9)
+        return
     j00, j01, j02 = out[9], out[10], out[11]
     j10, j11, j12 = out[12], out[13], out[14]
     m0, m1, m2 = out[15], out[16], out[17]

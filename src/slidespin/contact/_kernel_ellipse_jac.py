@@ -248,11 +248,5 @@ def jacobian_world(law, K, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, t
     vby = -s * vx + c * vy
     b00, b01, b10, b11 = tensor_in_body(t00, t01, t10, t11, body_frame, c, s)
     status, ok = jacobian_body(law, K, b00, b01, b10, b11, vbx, vby, omega, tol, W, out)
-    if not ok:
-        fbx, fby = out[0], out[1]
-        out[0] = c * fbx - s * fby
-        out[1] = s * fbx + c * fby
-        unavailable(out, 9)
-        return status, ok
-    world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame)
+    world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame, ok)
     return status, ok

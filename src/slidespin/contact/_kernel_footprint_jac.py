@@ -106,6 +106,7 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     out[9], out[10], out[11] = y0 * iw, -x0 * iw, x0 * gx + y0 * gy
     out[12], out[13], out[14] = y1 * iw, -x1 * iw, x1 * gx + y1 * gy
     out[15], out[16], out[17] = y2 * iw, -x2 * iw, x2 * gx + y2 * gy
+    unavailable(out, 21)  # ∂W/∂G: the pressure centre moves the footprint's law (differenced)
     return True
 
 
@@ -122,11 +123,5 @@ def jacobian_world(edges, circles, geo, t00, t01, t10, t11, body_frame, phi, vx,
     vby = -s * vx + c * vy
     b00, b01, b10, b11 = tensor_in_body(t00, t01, t10, t11, body_frame, c, s)
     ok = jacobian_body(edges, circles, geo, b00, b01, b10, b11, vbx, vby, omega, out)
-    if not ok:
-        fbx, fby = out[0], out[1]
-        out[0] = c * fbx - s * fby
-        out[1] = s * fbx + c * fby
-        return ok
-    unavailable(out, 21)  # ∂W/∂G: the pressure centre moves the footprint's law (differenced)
-    world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame)
+    world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame, ok)
     return ok

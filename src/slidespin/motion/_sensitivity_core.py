@@ -157,18 +157,16 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
 
 
 @jit(error_model="numpy")
-def parameter_rhs(par, jo, y, d, out):
+def parameter_rhs(par, jo, y, d, c, sn, out):
     """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
     d𝔽 = (d[0], d[1]; d[2], d[3]) per unit θ, in the tensor's own frame), the radius of
     gyration (by d[4]) and an ellipse's pressure centre G (by (d[5], d[6]) in the body frame):
     exact, from the wrench's isotropic parts and its derivatives in ``jo``
-    (:func:`rhs_jacobian` at ``y``); the wrench is linear in 𝔽 (MODEL §10)."""
+    (:func:`rhs_jacobian` at ``y``; c, sn the cosine and sine of its angle φ); the wrench is
+    linear in 𝔽 (MODEL §10)."""
     d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
     u1, u2, u3, _ = unit_direction(y)
     k = par[P_K]
-    phi = y[7]
-    c = math.cos(phi)
-    sn = math.sin(phi)
     e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, par[P_BODY] != 0.0, c, sn)
     fbx = -(e00 * jo[3] + e01 * jo[4])  # F = −𝔽Q, M = −Σ 𝔽_ij N_ij (body frame)
     fby = -(e10 * jo[3] + e11 * jo[4])
@@ -208,6 +206,8 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
     npar = hs.size
     st, ok = rhs_jacobian(pars[0], kcs[0], W, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
     fails = st
+    cph = math.cos(Y[7])  # for parameter_rhs, once for all parameters
+    sph = math.sin(Y[7])
     for k in range(npar):
         off = NY * (k + 1)
         if ok and direct[k]:
@@ -222,7 +222,7 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
             for i in range(d.size):
                 moved = moved or d[i] != 0.0
             if moved:
-                parameter_rhs(pars[0], jo, Y[:NY], d, out[off : off + NY])
+                parameter_rhs(pars[0], jo, Y[:NY], d, cph, sph, out[off : off + NY])
             continue
         h = hs[k]
         for i in range(NY):
@@ -480,11 +480,10 @@ def stop_terms(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, y):
     Y = np.zeros(n)
     Y[:NY] = y
     out = np.empty(n)
-    st, ok = rhs_jacobian(pars[0], kcs[0], W, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
-    if ok:
-        term[:NY] = Jy
     joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out,
               np.empty(NY), np.empty(NY), np.empty(NY), np.empty(NY))  # fmt: skip
+    if math.isfinite(jo[9]):  # the kernel's derivatives were there: Jy is ∂G/∂y at y
+        term[:NY] = Jy
     for k in range(npar):
         term[NY + k] = out[NY * (k + 1) : NY * (k + 2)]
     return term
