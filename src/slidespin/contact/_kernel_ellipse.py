@@ -10,7 +10,7 @@ translation (ω = 0, or the ICR beyond ``FAR_ICR``) in closed form; otherwise th
 predicted cost is least, its error estimated from the nested rules and checked against
 ``tol``. If the check fails, N is doubled; beyond ``MAX_NODES`` nodes (ICR within ~1e-4 a of
 the rim with uniform or linear pressure, or b/a below ~5e-3) globally adaptive Gauss–Kronrod
-7/15 takes over, split at ψ₁ (:func:`_adaptive`).
+7/15 takes over, split at ψ₁ (:mod:`slidespin.contact._kernel_ellipse_adaptive`).
 
 Speed: per-body constants (:func:`wrench_constants`) and the workspace (:func:`workspace`) can
 be set up once and reused (:func:`wrench_fast`).
@@ -26,7 +26,12 @@ import numpy as np
 
 from slidespin import _aot
 from slidespin._jit import jit
-from slidespin.contact._kernel_ellipse_lines import LAW_LINEAR, LAW_UNIFORM, _line_terms
+from slidespin.contact._kernel_ellipse_adaptive import (
+    STATUS_OK,
+    _adaptive,
+    adaptive_derivative_sums,
+)
+from slidespin.contact._kernel_ellipse_lines import LAW_LINEAR, LAW_UNIFORM
 from slidespin.contact._kernel_ellipse_rules import (
     _CC_SIZES,
     _NODE_SIZES,
@@ -64,172 +69,6 @@ from slidespin.contact._kernel_ellipse_rules import (
 )
 
 FAR_ICR = 1e15  # beyond this distance (in units of a) the ICR is at infinity: pure translation
-STATUS_OK, STATUS_NOT_CONVERGED = 0, 1
-GK_INITIAL_CAPACITY = 64
-GK_MAX_INTERVALS = 4000
-
-
-def _gk15_tables():
-    """Gauss–Kronrod 7/15 (QUADPACK qk15) as 15 nodes with their Kronrod and Gauss weights
-    (the Gauss weight is 0 at the 8 Kronrod-only nodes)."""
-    xgk = [
-        0.991455371120812639206854697526329,
-        0.949107912342758524526189684047851,
-        0.864864423359769072789712788640926,
-        0.741531185599394439863864773280788,
-        0.586087235467691130294144845693013,
-        0.405845151377397166906606412076961,
-        0.207784955007898467600689403773245,
-        0.0,
-    ]
-    wgk = [
-        0.022935322010529224963732008058970,
-        0.063092092629978553290700663189204,
-        0.104790010322250183839876322541518,
-        0.140653259715525918745189590510238,
-        0.169004726639267902826583426598550,
-        0.190350578064785409913256402421014,
-        0.204432940075298892414161999234649,
-        0.209482141084727828012999174891714,
-    ]
-    wg = [
-        0.129484966168869693270611432679082,
-        0.279705391489276667901467771423780,
-        0.381830050505118944950369775488975,
-        0.417959183673469387755102040816327,
-    ]
-    x, wk, wgs = [0.0], [wgk[7]], [wg[3]]
-    for j in range(7):
-        g = wg[j // 2] if j % 2 == 1 else 0.0
-        x += [-xgk[j], xgk[j]]
-        wk += [wgk[j], wgk[j]]
-        wgs += [g, g]
-    return np.array(x), np.array(wk), np.array(wgs)
-
-
-_GK_X, _GK_WK, _GK_WG = _gk15_tables()
-
-
-# adaptive fallback
-
-
-@jit(error_model="numpy")
-def _adaptive(
-    inside,
-    lo,
-    hi,
-    tol,
-    law,
-    s22,
-    ib,
-    lx,
-    ly,
-    xg,
-    yg,
-    t00,
-    t01,
-    t10,
-    t11,
-    cx,
-    cy,
-    ecx,
-    ecy,
-    dist,
-    mid,
-    half,
-):
-    """Globally adaptive Gauss–Kronrod 7/15 on [lo, hi], first split at the midpoint.
-
-    The integration variable is ψ (``inside``) or s with α = mid + half sin s (outside, α
-    from ê_c as in :func:`_dirs_rotated`). Returns (Fx, Fy, M, number of integrand
-    evaluations, status). The interval table starts small and grows on demand (the fallback
-    is rare; no large per-call allocation). One loop evaluates every node, which keeps the
-    compiled code small.
-    """
-    cap = GK_INITIAL_CAPACITY
-    tab = np.empty((cap, 6))  # lo, hi, fx, fy, m, err
-    tab[0, 0] = lo
-    tab[0, 1] = 0.5 * (lo + hi)
-    tab[1, 0] = 0.5 * (lo + hi)
-    tab[1, 1] = hi
-    n = 2
-    todo0 = 0  # rows to (re)compute: todo0 and todo1
-    todo1 = 1
-    status = STATUS_OK
-    while True:
-        for rr in range(2):
-            row = todo0 if rr == 0 else todo1
-            c = 0.5 * (tab[row, 0] + tab[row, 1])
-            r = 0.5 * (tab[row, 1] - tab[row, 0])
-            kx = ky = km = gx = gy = gm = 0.0
-            for q in range(15):
-                t = c + r * _GK_X[q]
-                if inside:
-                    ex = math.cos(t)
-                    ey = math.sin(t)
-                    cde = cx * ex + cy * ey
-                    exc = ex * cy - ey * cx
-                    jac = 1.0
-                else:
-                    jac = half * math.cos(t)
-                    alpha = mid + half * math.sin(t)
-                    ca = math.cos(alpha)
-                    sa = math.sin(alpha)
-                    ex = ca * ecx - sa * ecy
-                    ey = ca * ecy + sa * ecx
-                    cde = -dist * ca
-                    exc = dist * sa
-                A = ex * ex + ey * ey * s22
-                disc = A - s22 * exc * exc
-                if disc <= 0.0 or jac <= 0.0:
-                    continue  # the line misses the patch
-                fx, fy, mm = _line_terms(
-                    law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, ex, ey, cde, exc, A, disc, jac
-                )
-                kx += _GK_WK[q] * fx
-                ky += _GK_WK[q] * fy
-                km += _GK_WK[q] * mm
-                gx += _GK_WG[q] * fx
-                gy += _GK_WG[q] * fy
-                gm += _GK_WG[q] * mm
-            tab[row, 2] = kx * r
-            tab[row, 3] = ky * r
-            tab[row, 4] = km * r
-            tab[row, 5] = max(abs(kx - gx), abs(ky - gy), abs(km - gm)) * abs(r)
-        total = 0.0
-        worst = 0
-        for i in range(n):
-            total += tab[i, 5]
-            if tab[i, 5] > tab[worst, 5]:
-                worst = i
-        if total <= tol:
-            break
-        a = tab[worst, 0]
-        b = tab[worst, 1]
-        if n + 1 >= GK_MAX_INTERVALS or b - a < 1e-14 * (1.0 + abs(a)):
-            status = STATUS_NOT_CONVERGED
-            break
-        if n == cap:
-            big = np.empty((2 * cap, 6))
-            for i in range(cap):  # (explicit loops: slice assignment drags in slow-to-compile
-                for j in range(6):  # error formatting)
-                    big[i, j] = tab[i, j]
-            tab = big
-            cap *= 2
-        tab[worst, 1] = 0.5 * (a + b)
-        tab[n, 0] = 0.5 * (a + b)
-        tab[n, 1] = b
-        todo0 = worst
-        todo1 = n
-        n += 1
-    sx = 0.0
-    sy = 0.0
-    sm = 0.0
-    for i in range(n):
-        sx += tab[i, 2]
-        sy += tab[i, 3]
-        sm += tab[i, 4]
-    return sx, sy, sm, 15 * (2 * n - 2), status
 
 
 # ---------------------------------------------------------------------------------------------
@@ -279,19 +118,20 @@ def wrench_constants(bn, law, xg, yg, tnorm, tol):
 @jit(error_model="numpy")
 def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
     """:func:`wrench_fast` and the last tabulated rule it ran: (fx, fy, m, status, method,
-    nodes, n, half, rule), ``rule`` that rule's method code, ``n`` its node count (0 if none
-    ran: a translation) and ``half`` its half-width (Clenshaw–Curtis). After the adaptive
-    fallback it is the largest rule tried, which missed the wrench's target. Its directions
-    and weights are
-    left in rows 0–4 of ``W``. Unless ``D`` is ``None`` (a flag), ``W`` is a derivative
-    workspace and each rule also fills its lower rows with the integrands of the wrench's
-    twist derivatives on its nodes (:mod:`slidespin.contact._kernel_ellipse_jac` sums the
-    accepted rule's)."""
+    nodes, n, half, rule, derr), ``rule`` that rule's method code, ``n`` its node count (0 if
+    none ran: a translation) and ``half`` its half-width (Clenshaw–Curtis); its directions
+    and weights are left in rows 0–4 of ``W``. Unless ``D`` is ``None`` (a flag), ``W`` is a
+    derivative workspace and each rule also fills its lower rows with the integrands of the
+    wrench's twist derivatives on its nodes (:mod:`slidespin.contact._kernel_ellipse_jac`
+    sums the accepted rule's); after the adaptive fallback the derivatives' integrals on its
+    final partition are in the last column of those rows already
+    (:func:`slidespin.contact._kernel_ellipse_adaptive.adaptive_derivative_sums`) and
+    ``derr`` is their relative error estimate (−1 otherwise: nothing summed)."""
     bn, s22, ib, xg, yg, lx, ly, ksq, re0, d_a, d_am, logterm, r_a, x_am = K
     if omega == 0.0 or not (abs(vx) + abs(vy)) / abs(omega) < FAR_ICR:
         speed = math.sqrt(vx * vx + vy * vy)
         if speed == 0.0:
-            return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0, METHOD_TRANSLATION
+            return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0, METHOD_TRANSLATION, -1.0
         ux = vx / speed
         uy = vy / speed
         # pure translation: F = −𝔽 v̂, M = 0 since G lies over the pressure centroid
@@ -305,9 +145,10 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             0,
             0.0,
             METHOD_TRANSLATION,
+            -1.0,
         )
     if t00 == 0.0 and t01 == 0.0 and t10 == 0.0 and t11 == 0.0:
-        return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0, METHOD_TRANSLATION
+        return 0.0, 0.0, 0.0, STATUS_OK, METHOD_TRANSLATION, 0, 0, 0.0, METHOD_TRANSLATION, -1.0
     cx = xg - vy / omega
     cy = yg + vx / omega
     sgn = -1.0 if omega > 0.0 else 1.0  # the overall factor −sign(ω)
@@ -385,7 +226,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             )
             used += n + 1 if method == METHOD_CLENSHAW_CURTIS_INSIDE else n
             if _estimate(e1, e2) <= tol:
-                return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method
+                return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method, -1.0
             last_n = n
             n *= 2
         # fallback, split where D is smallest (the near-tangent line through a near-rim ICR)
@@ -393,7 +234,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             lam1, lam2, c2, s2 = _q_form(s22, cx, cy)
             psi1 = 0.5 * math.atan2(s2, c2)
         inside = q <= 1.0  # (a variable: a literal True would compile a second version)
-        fx, fy, mm, nev, status = _adaptive(
+        fx, fy, mm, nev, status, tab, n_int = _adaptive(
             inside,
             psi1,
             psi1 + math.pi,
@@ -417,6 +258,12 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             0.0,
             0.0,
         )
+        derr = -1.0
+        if D is not None:
+            derr = adaptive_derivative_sums(
+                tab, n_int, inside, law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, cx, cy,
+                0.0, 0.0, 0.0, 0.0, 0.0, W,
+            )  # fmt: skip
         return (
             sgn * fx,
             sgn * fy,
@@ -427,6 +274,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             last_n,
             half,
             method,
+            derr,
         )
     # ---- ICR outside: the sector α₋ ≤ α ≤ α₊ of lines that meet the patch (α from ê_c)
     dist = math.sqrt(cx * cx + cy * cy)
@@ -513,14 +361,14 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         )
         used += n - 1 if branch else n + 1
         if _estimate(e1, e2) <= tol:
-            return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method
+            return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method, -1.0
         last_n = n
         n *= 2
     last_half = half
     mid = 0.5 * (a_plus + a_minus)
     half = 0.5 * (a_plus - a_minus)
     inside = q <= 1.0
-    fx, fy, mm, nev, status = _adaptive(
+    fx, fy, mm, nev, status, tab, n_int = _adaptive(
         inside,
         -0.5 * math.pi,
         0.5 * math.pi,
@@ -544,6 +392,12 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         mid,
         half,
     )
+    derr = -1.0
+    if D is not None:
+        derr = adaptive_derivative_sums(
+            tab, n_int, inside, law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, cx, cy, ecx,
+            ecy, dist, mid, half, W,
+        )  # fmt: skip
     return (
         sgn * fx,
         sgn * fy,
@@ -554,6 +408,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         last_n,
         last_half,
         method,
+        derr,
     )
 
 
@@ -561,7 +416,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
 def wrench_fast(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W):
     """:func:`wrench_body_info` with precomputed constants ``K`` (:func:`wrench_constants`)
     and a reusable workspace ``W`` (:func:`workspace`); the engine's inner call."""
-    fx, fy, m, status, method, used, _, _, _ = wrench_rule(
+    fx, fy, m, status, method, used, _, _, _, _ = wrench_rule(
         law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, None
     )
     return fx, fy, m, status, method, used

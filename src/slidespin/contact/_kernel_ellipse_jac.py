@@ -18,7 +18,8 @@ K₀ = ∫ p dx and J₁ = ∫ p x dx the chord moments one order below the wren
 law). ê·δw_c = a·δ(vx, vy, ω) with a = (ê_x, ê_y, −ê×(c − r_G)), all O(1) on the lines that
 meet the patch however far the ICR is. The integrands have the branch points of the wrench's
 own (K₀ ∝ h like K₁ ∝ hm), so the derivative is summed with the wrench's accepted rule, on its
-nodes, and its error estimated from the same nested sums (:func:`jacobian_body`). The 1/|ρ|
+nodes, and its error estimated from the same nested sums (:func:`jacobian_body`); after the
+adaptive fallback, with the Gauss–Kronrod nodes of its final partition. The 1/|ρ|
 singularity of δŵ at the ICR is integrable and has cancelled analytically: nothing is
 differenced. Checks: the Jacobian annihilates the twist itself (the wrench is homogeneous of
 degree 0; a·(v, ω) = 0 node by node) and, for an isotropic 𝔽, ∂F/∂v is symmetric.
@@ -26,10 +27,10 @@ degree 0; a·(v, ω) = 0 node by node) and, for an isotropic 𝔽, ∂F/∂v is 
 A pure translation (ω = 0, or the ICR beyond ``FAR_ICR``) is closed form: δF = −𝔽 P⊥ δv/|v|
 with P⊥ = I − v̂v̂ᵀ, and δM = −(δω/|v|) Σ_ab Σ_ab e_a × 𝔽P⊥ẑ×e_b with Σ = ∫ p (r − r_G)(r −
 r_G)ᵀ dS, the pressure's second moment about G. After the adaptive Gauss–Kronrod fallback
-(the ICR within ~1e-4 a of the rim) the largest tabulated rule tried, which missed the
-wrench's own target, is summed for the derivative if its nested estimate meets
-``DERIVATIVE_TOL`` (the derivative needs far less than the wrench's 1e-14); else the
-derivative is reported unavailable (the caller differences).
+(the ICR within ~1e-4 a of the rim) the derivative is summed on its final partition
+(:mod:`slidespin.contact._kernel_ellipse_adaptive`); where an estimate misses
+``DERIVATIVE_TOL`` (the derivative needs far less than the wrench's 1e-14) the derivative is
+reported unavailable (the caller differences).
 
 Also returned, the wrench's isotropic parts Q and N (M = −Σ 𝔽_ij N_ij), which make its
 derivatives with respect to the tensor entries and the body angle exact (𝔽 enters linearly).
@@ -104,37 +105,41 @@ def _rule_sums(W, n, cc, half):
     """The rows' sums with the rule's weights (trapezoid over a period π, or Clenshaw–Curtis
     on ``half``) into the last column of ``W``; returns the largest nested error estimate of
     the derivative rows (6 on) relative to their largest sum (rows 0–5 are the wrench's own
-    integrands, whose error the kernel has checked)."""
+    integrands, whose error the kernel has checked). One pass over each row (the trapezoid's
+    nested rules are its nodes 0 mod 2 and 0 mod 4, n a multiple of 4)."""
     last = W.shape[1] - 1
     worst = 0.0
     big = 0.0
     if cc:
         o = _CC_OFFSETS[_CC_INDEX[n]]
-        for r in range(NROWS):
+        for r in range(6):
+            s1 = 0.0
+            for j in range(n + 1):
+                s1 += _CC_W1[o + j] * W[DROW + r, j]
+            W[DROW + r, last] = half * s1
+        for r in range(6, NROWS):
             s1 = s2 = s4 = 0.0
             for j in range(n + 1):
                 v = W[DROW + r, j]
                 s1 += _CC_W1[o + j] * v
-                if r >= 6:
-                    s2 += _CC_W2[o + j] * v
-                    s4 += _CC_W4[o + j] * v
+                s2 += _CC_W2[o + j] * v
+                s4 += _CC_W4[o + j] * v
             W[DROW + r, last] = half * s1
-            if r >= 6:
-                big = max(big, abs(half * s1))
-                worst = max(worst, _estimate(half * abs(s2 - s4), half * abs(s1 - s2)))
+            big = max(big, abs(half * s1))
+            worst = max(worst, _estimate(half * abs(s2 - s4), half * abs(s1 - s2)))
     else:
         h = math.pi / n
         for r in range(NROWS):
             s1 = s2 = s4 = 0.0
             for j in range(0, n, 4):
                 s4 += W[DROW + r, j]
-            for j in range(2, n, 4):
-                s2 += W[DROW + r, j]
-            for j in range(1, n, 2):
-                s1 += W[DROW + r, j]
-            W[DROW + r, last] = h * (s1 + s2 + s4)
+                s1 += W[DROW + r, j + 1]
+                s2 += W[DROW + r, j + 2]
+                s1 += W[DROW + r, j + 3]
+            t1 = h * (s1 + s2 + s4)
+            W[DROW + r, last] = t1
             if r >= 6:
-                t1, t2, t4 = h * (s1 + s2 + s4), 2.0 * h * (s2 + s4), 4.0 * h * s4
+                t2, t4 = 2.0 * h * (s2 + s4), 4.0 * h * s4
                 big = max(big, abs(t1))
                 worst = max(worst, _estimate(abs(t2 - t4), abs(t1 - t2)))
     return worst / big if big > 0.0 else 0.0
@@ -152,7 +157,7 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
     NaN).
     """
     s22, xg, yg = K[1], K[3], K[4]
-    fx, fy, m, status, _, _, n, half, method = wrench_rule(
+    fx, fy, m, status, _, _, n, half, method, derr = wrench_rule(
         law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, W
     )
     out[0] = fx
@@ -193,15 +198,18 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
                 acc += sab * (gy if a_ == 0 else -gx)  # e_a × g
         out[17] = -acc  # (P⊥ carries the 1/|v|)
         return status, True
-    if n == 0:
+    if derr >= 0.0:  # the adaptive fallback's partition has summed them
+        err = derr
+    elif n == 0:
         unavailable(out, 9)
         return status, False
-    cc = (
-        method == METHOD_CLENSHAW_CURTIS
-        or method == METHOD_CLENSHAW_CURTIS_MAPPED
-        or method == METHOD_CLENSHAW_CURTIS_INSIDE
-    )
-    err = _rule_sums(W, n, cc, half)
+    else:
+        cc = (
+            method == METHOD_CLENSHAW_CURTIS
+            or method == METHOD_CLENSHAW_CURTIS_MAPPED
+            or method == METHOD_CLENSHAW_CURTIS_INSIDE
+        )
+        err = _rule_sums(W, n, cc, half)
     sums = W[DROW:, W.shape[1] - 1]
     sg = 1.0 if omega > 0.0 else -1.0  # Q = sign(ω) ∫ t̂ K₁, N likewise
     for i in range(6):

@@ -122,35 +122,47 @@ def _lines(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n):
 
 @jit(error_model="numpy", inline="always")
 def lines_and_derivatives(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n):
-    """:func:`_lines` and, in the same pass, the integrands of the wrench's isotropic parts
-    and twist derivatives into the rows ``DROW`` on of the same workspace (layout
-    :data:`NROWS`; the formulas in :mod:`slidespin.contact._kernel_ellipse_jac`; one array,
-    so that the compiler sees no aliasing and vectorises the loop).
+    """:func:`_lines` and the integrands of the wrench's isotropic parts and twist
+    derivatives into the rows ``DROW`` on of the same workspace (layout :data:`NROWS`; the
+    formulas in :mod:`slidespin.contact._kernel_ellipse_jac`).
 
     The chord moments are those of :func:`chord_moments`, written without a branch on the
-    law inside the loop (so that it vectorises): K₀ = jac (cu √h² + cb /√A + ch √A h²)/κ with
-    one of the three coefficients non-zero, K₂ = r K₀ h² before the linear law's weight
-    l₀ + l₁x (l₀ = 1, l₁ = 0 for the other laws, whose (lx, ly) are zero)."""
+    law inside the loops: K₀ = jac (cu √h² + cb /√A + ch √A h²)/κ with one of the three
+    coefficients non-zero, K₂ = r K₀ h² before the linear law's weight l₀ + l₁x (l₀ = 1,
+    l₁ = 0 for the other laws, whose (lx, ly) are zero). Five passes over the nodes, each
+    reading and writing a few rows: a loop over twenty rows of one array is not vectorised
+    by the compiler (measured: 7x slower in one pass), the rows of a pass are kept in rows
+    the later passes overwrite."""
     cu = 2.0 / math.pi if law == LAW_UNIFORM or law == LAW_LINEAR else 0.0
     cb = 0.5 if law == LAW_BOUSSINESQ else 0.0
     ch = 0.75 if law == LAW_HERTZ else 0.0
     r = 0.5 if law == LAW_BOUSSINESQ else (0.25 if law == LAW_HERTZ else 1.0 / 3.0)
+    # 1: the chord's midpoint (mx, my), m, and the unweighted moments kb (K₀), k2b (K₂)
     for j in range(n):
         ex = W[0, j]
         ey = W[1, j]
-        cde = W[2, j]
         exc = W[3, j]
         A = ex * ex + ey * ey * s22
         disc = max(A - s22 * exc * exc, 0.0)
         ia = 1.0 / A
         h2 = disc * ia * ia
         f = exc * (ex * ey * (s22 - 1.0)) * ia
-        mx = -exc * ey - ex * f
-        my = exc * ex - ey * f
-        m = -cde - f
         sa = math.sqrt(A)
         kb = ib * W[4, j] * (cu * math.sqrt(h2) + cb / sa + ch * sa * h2)
-        k2b = r * kb * h2
+        W[DROW + 2, j] = -exc * ey - ex * f
+        W[DROW + 3, j] = exc * ex - ey * f
+        W[DROW + 6, j] = -W[2, j] - f
+        W[DROW + 7, j] = kb
+        W[DROW + 8, j] = r * kb * h2
+    # 2: the linear law's weight; the wrench's rows, K₀, J₁, K₁, K₂
+    for j in range(n):
+        ex = W[0, j]
+        ey = W[1, j]
+        mx = W[DROW + 2, j]
+        my = W[DROW + 3, j]
+        m = W[DROW + 6, j]
+        kb = W[DROW + 7, j]
+        k2b = W[DROW + 8, j]
         l0 = 1.0 + lx * mx + ly * my
         l1 = lx * ex + ly * ey
         j1 = l1 * k2b
@@ -161,18 +173,25 @@ def lines_and_derivatives(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n
         W[5, j] = k1 * gx
         W[6, j] = k1 * gy
         W[7, j] = k1 * ((mx - xg) * gy - (my - yg) * gx) + k2 * (ex * gy - ey * gx)
-        # kept for the second pass (in the rows it then overwrites)
-        W[DROW, j] = l0 * kb  # K₀
+        W[DROW, j] = l0 * kb
         W[DROW + 1, j] = j1
-        W[DROW + 2, j] = mx - xg
-        W[DROW + 3, j] = my - yg
         W[DROW + 4, j] = k1
         W[DROW + 5, j] = k2
-        # the linear law's weight l₀ + l₁x is linear in (lx, ly): ∂/∂lx of K₁, K₂ is
-        # (mx K₁⁰ + ex K₂⁰, (mx + ex m) K₂⁰) with the unweighted K₁⁰ = kb m, K₂⁰ = k2b
-        dk1x = mx * (kb * m) + ex * k2b
+    # 3: the wrench of the linear law's gradient: the weight l₀ + l₁x is linear in (lx, ly),
+    # ∂/∂lx of K₁, K₂ is (mx K₁⁰ + ex K₂⁰, (mx + ex m) K₂⁰) with K₁⁰ = kb m, K₂⁰ = k2b
+    for j in range(n):
+        ex = W[0, j]
+        ey = W[1, j]
+        mx = W[DROW + 2, j]
+        my = W[DROW + 3, j]
+        m = W[DROW + 6, j]
+        k1b = W[DROW + 7, j] * m
+        k2b = W[DROW + 8, j]
+        gx = -t00 * ey + t01 * ex
+        gy = -t10 * ey + t11 * ex
+        dk1x = mx * k1b + ex * k2b
         dk2x = (mx + ex * m) * k2b
-        dk1y = my * (kb * m) + ey * k2b
+        dk1y = my * k1b + ey * k2b
         dk2y = (my + ey * m) * k2b
         arm = (mx - xg) * gy - (my - yg) * gx
         tor = ex * gy - ey * gx
@@ -182,27 +201,18 @@ def lines_and_derivatives(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n
         W[DROW + 17, j] = dk1y * gx
         W[DROW + 18, j] = dk1y * gy
         W[DROW + 19, j] = dk1y * arm + dk2y * tor
+    # 4: the twist derivatives' rows, from K₀ and J₁
     for j in range(n):
         ex = W[0, j]
         ey = W[1, j]
         k0 = W[DROW, j]
         j1 = W[DROW + 1, j]
-        px = W[DROW + 2, j]
-        py = W[DROW + 3, j]
-        k1 = W[DROW + 4, j]
-        k2 = W[DROW + 5, j]
+        px = W[DROW + 2, j] - xg
+        py = W[DROW + 3, j] - yg
         sig = -W[3, j] + ex * yg - ey * xg  # ê·ẑ×(c − r_G) = −ê×(c − r_G)
-        ax = px * k1 + ex * k2
-        ay = py * k1 + ey * k2
         bx = px * k0 + ex * j1
         by = py * k0 + ey * j1
         mu = bx * (t10 * ex + t11 * ey) - by * (t00 * ex + t01 * ey)
-        W[DROW, j] = -ey * k1  # t̂ K₁
-        W[DROW + 1, j] = ex * k1
-        W[DROW + 2, j] = ay * ey  # N_ij: a × 𝔽t̂ = Σ 𝔽_ij t̂_j (δ_i1 a_x − δ_i0 a_y)
-        W[DROW + 3, j] = -ay * ex
-        W[DROW + 4, j] = -ax * ey
-        W[DROW + 5, j] = ax * ex
         W[DROW + 6, j] = ex * ex * k0
         W[DROW + 7, j] = ex * ey * k0
         W[DROW + 8, j] = ey * ey * k0
@@ -211,3 +221,17 @@ def lines_and_derivatives(law, s22, ib, lx, ly, xg, yg, t00, t01, t10, t11, W, n
         W[DROW + 11, j] = ex * mu
         W[DROW + 12, j] = ey * mu
         W[DROW + 13, j] = sig * mu
+    # 5: the isotropic parts Q = t̂ K₁ and N_ij: a × 𝔽t̂ = Σ 𝔽_ij t̂_j (δ_i1 a_x − δ_i0 a_y)
+    for j in range(n):
+        ex = W[0, j]
+        ey = W[1, j]
+        k1 = W[DROW + 4, j]
+        k2 = W[DROW + 5, j]
+        ax = (W[DROW + 2, j] - xg) * k1 + ex * k2
+        ay = (W[DROW + 3, j] - yg) * k1 + ey * k2
+        W[DROW, j] = -ey * k1
+        W[DROW + 1, j] = ex * k1
+        W[DROW + 2, j] = ay * ey
+        W[DROW + 3, j] = -ay * ex
+        W[DROW + 4, j] = -ax * ey
+        W[DROW + 5, j] = ax * ex
