@@ -71,8 +71,11 @@ def stop_sensitivities(
     Notes
     -----
     Forward mode: the variational equation dS/dτ = (∂G/∂y) S + ∂G/∂θ of the regularised
-    system (MODEL §5) is integrated with the motion, its right-hand side a central
-    difference of the exact right-hand side (:mod:`slidespin.motion._sensitivity_core`);
+    system (MODEL §5) is integrated with the motion, ∂G/∂y from the wrench's exact
+    derivatives (analytic on an ellipse; on a footprint, differences of its exact wrench in
+    the ICR), ∂G/∂θ exact for the tensor, the inertia, an ellipse's pressure centre and the
+    start, a central difference of the exact right-hand side for a footprint's pressure
+    centre (:mod:`slidespin.motion._sensitivity_core`);
     the stop's derivatives are the limits of S as τ → ∞. Agreement with
     Richardson-extrapolated differences of whole simulations is about 1e-8 relative (tests).
 

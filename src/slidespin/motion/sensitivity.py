@@ -242,13 +242,48 @@ def _step(body: Body, friction: FrictionTensor, state: State, name: str) -> floa
 def _rows(body: Body, friction: FrictionTensor, state: State, g: float):
     """(par, geo, y0) of a body, tensor and start in natural units."""
     par, _, _, geo = body.engine_params(friction.kinetic, WRENCH_TOL)
-    a = body.length_unit
+    st = state
+    return par, geo, _start(par, body.length_unit, g, st.vx, st.vy, st.omega, st.x, st.y, st.phi)
+
+
+def _start(par, a: float, g: float, vx, vy, omega, x, y, phi) -> NDArray[np.float64]:
+    """The regularised initial state of a start (SI) for the rows ``par`` (length unit
+    ``a``)."""
     t_unit, v_unit = math.sqrt(a / g), math.sqrt(a * g)
-    y0 = initial_state(
-        par, state.vx / v_unit, state.vy / v_unit, state.omega * t_unit,
-        state.x / a, state.y / a, state.phi,
-    )  # fmt: skip
-    return par, geo, y0
+    return initial_state(par, vx / v_unit, vy / v_unit, omega * t_unit, x / a, y / a, phi)
+
+
+def _rows_moved(
+    body: Body,
+    friction: FrictionTensor,
+    state: State,
+    name: str,
+    value: float,
+    g: float,
+    base: tuple[NDArray[np.float64], NDArray[np.float64]],
+):
+    """:func:`_rows` of :func:`_perturbed`: for the tensor's entries, the inertia and the
+    start, the body's own rows ``base`` = (par, geo) with the entries the parameter moves
+    (the tensor's, the radius of gyration), without the engine rows made afresh (a new tensor
+    or body would make a footprint's geometry again); for the pressure centre, the new
+    body's rows."""
+    if name in ("xi_c", "eta_c"):
+        return _rows(*_perturbed(body, friction, state, name, value), g)
+    par = base[0].copy()
+    a = body.length_unit
+    if name in ("vx", "vy", "omega", "phi0"):  # (without a State, which would validate it)
+        start = {"vx": state.vx, "vy": state.vy, "omega": state.omega, "phi0": state.phi}
+        start[name] = value
+        vx, vy, om, phi = start.values()
+        return par, base[1], _start(par, a, g, vx, vy, om, state.x, state.y, phi)
+    b, fr, st = _perturbed(body, friction, state, name, value)
+    if name == "moment_of_inertia":
+        par[_engine.P_K] = b.radius_of_gyration / a
+    else:  # a tensor's entry
+        t = fr.kinetic.matrix
+        par[_engine.P_T00], par[_engine.P_T01] = t[0]
+        par[_engine.P_T10], par[_engine.P_T11] = t[1]
+    return par, base[1], _start(par, a, g, st.vx, st.vy, st.omega, st.x, st.y, st.phi)
 
 
 def compute(
@@ -287,8 +322,8 @@ def compute(
         h = _step(body, friction, state, name)
         val = _value(body, friction, state, name)
         hs[k] = h
-        pp, gp, yp = _rows(*_perturbed(body, friction, state, name, val + h), g)
-        pm, gm, ym = _rows(*_perturbed(body, friction, state, name, val - h), g)
+        pp, gp, yp = _rows_moved(body, friction, state, name, val + h, g, (par0, geo0))
+        pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0))
         pars[1 + 2 * k], geos[1 + 2 * k] = pp, gp
         pars[2 + 2 * k], geos[2 + 2 * k] = pm, gm
         Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
@@ -407,11 +442,8 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi, term) -> NDArra
     b1 /= np.linalg.norm(b1)
     B = np.column_stack([b1, np.cross(u, b1)])
     jt = B.T @ jac @ B
-    out = np.empty((hs.size, 3))
-    for k in range(hs.size):
-        rhs = dphi * s_phi[k] + term[NY + k, :3]
-        out[k] = B @ _solve_transverse(jt, -(B.T @ rhs))
-    return out
+    rhs = dphi[:, None] * np.asarray(s_phi)[None, :] + term[NY : NY + hs.size, :3].T
+    return (B @ _solve_transverse(jt, -(B.T @ rhs))).T
 
 
 def _leaves_invariant_set(ending: str, ratio: float, names: tuple[str, ...]) -> tuple[str, ...]:
@@ -444,7 +476,7 @@ def _breaks_symmetry(par, friction: FrictionTensor, names: tuple[str, ...]) -> t
 
 
 def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
-    """J_T x = b in the tangent plane; where J_T is singular (a body symmetric about G under an
+    """J_T x = b in the tangent plane (b a column per parameter); where J_T is singular (a body symmetric about G under an
     isotropic tensor has a circle of terminal directions: the velocity's direction is free,
     β* the same all along it), the part of b along the zero eigenvalue's eigenvector only
     moves u* along that circle and is dropped: x is the response across it, which is what
@@ -458,7 +490,7 @@ def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
     except np.linalg.LinAlgError:  # a defective J_T: the least-squares response
         return np.linalg.lstsq(jt, b, rcond=1e-7)[0]
     keep = np.abs(lam) > 1e-7 * big
-    return np.real(vec[:, keep] @ (coef[keep] / lam[keep]))
+    return np.real(vec[:, keep] @ (coef[keep] / lam[keep, None]))
 
 
 def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) -> float:
