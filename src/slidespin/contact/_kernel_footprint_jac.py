@@ -110,7 +110,7 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     return True
 
 
-@jit(error_model="numpy")
+@jit(error_model="numpy", inline="always")
 def jacobian_world(edges, circles, geo, t00, t01, t10, t11, body_frame, phi, vx, vy, omega, out):
     """:func:`jacobian_body` in the fixed frame (arguments as
     :func:`slidespin.contact._kernel_footprint.wrench_world`); returns whether the
