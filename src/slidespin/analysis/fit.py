@@ -302,10 +302,9 @@ def fit(
         from the motion's sensitivities at the measured times
         (:mod:`slidespin.motion.sensitivity`, MODEL §15: one sensitivity run per run, no
         step-size error; a run whose motion does not stop falls back to differences). Both
-        reach the same estimates (``examples/fit_benchmark.py``: within 3e-4 of a standard
-        error); "exact" needs fewer iterations (8 residual evaluations against 10) and is
-        1.7–1.9× faster there (docs/sensitivities.md), but a run whose motion does not stop
-        falls back to differences, hence not the default.
+        reach the same estimates (``examples/fit_benchmark.py``: within 1e-3 of a standard
+        error); "exact" is 2.5–2.6× faster there (docs/sensitivities.md), but a run whose
+        motion does not stop falls back to differences, hence not the default.
 
     Returns
     -------
