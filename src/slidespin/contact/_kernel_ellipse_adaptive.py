@@ -79,6 +79,20 @@ _GK_X, _GK_WK, _GK_WG = _gk15_tables()
 # adaptive fallback
 
 
+@jit(error_model="numpy", inline="always")
+def _node_line(t, inside, cx, cy, ecx, ecy, dist, mid, half):
+    """The line of the Gauss–Kronrod node ``t``: (ê_x, ê_y, c·ê, ê×c, the Jacobian of the
+    variable), the variable ψ (``inside``) or s with α = mid + half sin s from ê_c."""
+    if inside:
+        ex = math.cos(t)
+        ey = math.sin(t)
+        return ex, ey, cx * ex + cy * ey, ex * cy - ey * cx, 1.0
+    alpha = mid + half * math.sin(t)
+    ca = math.cos(alpha)
+    sa = math.sin(alpha)
+    return ca * ecx - sa * ecy, ca * ecy + sa * ecx, -dist * ca, dist * sa, half * math.cos(t)
+
+
 @jit(error_model="numpy")
 def _adaptive(
     inside,
@@ -129,22 +143,9 @@ def _adaptive(
             r = 0.5 * (tab[row, 1] - tab[row, 0])
             kx = ky = km = gx = gy = gm = 0.0
             for q in range(15):
-                t = c + r * _GK_X[q]
-                if inside:
-                    ex = math.cos(t)
-                    ey = math.sin(t)
-                    cde = cx * ex + cy * ey
-                    exc = ex * cy - ey * cx
-                    jac = 1.0
-                else:
-                    jac = half * math.cos(t)
-                    alpha = mid + half * math.sin(t)
-                    ca = math.cos(alpha)
-                    sa = math.sin(alpha)
-                    ex = ca * ecx - sa * ecy
-                    ey = ca * ecy + sa * ecx
-                    cde = -dist * ca
-                    exc = dist * sa
+                ex, ey, cde, exc, jac = _node_line(
+                    c + r * _GK_X[q], inside, cx, cy, ecx, ecy, dist, mid, half
+                )
                 A = ex * ex + ey * ey * s22
                 disc = A - s22 * exc * exc
                 if disc <= 0.0 or jac <= 0.0:
@@ -238,22 +239,9 @@ def adaptive_derivative_sums(
         c = 0.5 * (tab[i, 0] + tab[i, 1])
         r_ = 0.5 * (tab[i, 1] - tab[i, 0])
         for q in range(15):
-            t = c + r_ * _GK_X[q]
-            if inside:
-                ex = math.cos(t)
-                ey = math.sin(t)
-                cde = cx * ex + cy * ey
-                exc = ex * cy - ey * cx
-                jac = 1.0
-            else:
-                jac = half * math.cos(t)
-                alpha = mid + half * math.sin(t)
-                ca = math.cos(alpha)
-                sa = math.sin(alpha)
-                ex = ca * ecx - sa * ecy
-                ey = ca * ecy + sa * ecx
-                cde = -dist * ca
-                exc = dist * sa
+            ex, ey, cde, exc, jac = _node_line(
+                c + r_ * _GK_X[q], inside, cx, cy, ecx, ecy, dist, mid, half
+            )
             if ex * ex + ey * ey * s22 - s22 * exc * exc <= 0.0 or jac <= 0.0:
                 jac = 0.0  # the line misses the patch: every row is 0
             W[0, q] = ex
