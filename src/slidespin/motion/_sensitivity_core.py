@@ -91,6 +91,9 @@ SCALE_FLOOR = 0.1
 #: stretched to land on it, instead of a step and a sliver (measured, 6 parameters: ellipse
 #: 65 -> 51 steps, box 81 -> 68, curling stone 83 -> 69; the tests' accuracy unchanged)
 LAND_STRETCH = 1.5
+#: rejections of one step after which the run ends with ``SS_STEP_TOO_SMALL`` (each cuts the
+#: step by at least 10 %, so a step that converges needs far fewer)
+MAX_REJECTIONS = 200
 
 
 def row_patch(fp, geos, j):
@@ -432,6 +435,7 @@ def integrate_sensitivities(
     nsteps = 0
     while nsteps < max_steps:
         rejected = False
+        rejections = 0
         landed = False
         while True:
             hh = h
@@ -489,6 +493,10 @@ def integrate_sensitivities(
                 break
             h = hh * max(0.2, 0.9 * en**exponent)
             rejected = True
+            rejections += 1
+            if rejections > MAX_REJECTIONS:  # (a guard: no step may hang the run)
+                status = SS_STEP_TOO_SMALL
+                break
         if status == SS_STEP_TOO_SMALL or status == SS_NON_FINITE:
             break
         for i in range(n):
