@@ -118,9 +118,9 @@ def wrench_constants(bn, law, xg, yg, tnorm, tol):
 @jit(error_model="numpy")
 def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
     """:func:`wrench_fast` and the last tabulated rule it ran: (fx, fy, m, status, method,
-    nodes, n, half, rule, derr), ``rule`` that rule's method code, ``n`` its node count (0 if
-    none ran: a translation) and ``half`` its half-width (Clenshaw–Curtis); its directions
-    and weights are left in rows 0–4 of ``W``. Unless ``D`` is ``None`` (a flag), ``W`` is a
+    nodes, n, half, rule, derr), ``rule`` that rule's method code, ``n`` its node count (0
+    if none ran, a translation, or after the adaptive fallback) and ``half`` its half-width
+    (Clenshaw–Curtis); its directions and weights are left in rows 0–4 of ``W``. Unless ``D`` is ``None`` (a flag), ``W`` is a
     derivative workspace and each rule also fills its lower rows with the integrands of the
     wrench's twist derivatives on its nodes (:mod:`slidespin.contact._kernel_ellipse_jac`
     sums the accepted rule's); after the adaptive fallback the derivatives' integrals on its
@@ -155,7 +155,6 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
     branch = law == LAW_UNIFORM or law == LAW_LINEAR  # √D is a branch point
     q = cx * cx + cy * cy * s22
     used = 0
-    last_n = 0  # the last tabulated rule tried, whose nodes stay in W
     if q <= 1.0:
         # ---- ICR inside (or on the rim): trapezoid, plain or mapped; CC near the rim
         d = d_a
@@ -227,7 +226,6 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             used += n + 1 if method == METHOD_CLENSHAW_CURTIS_INSIDE else n
             if _estimate(e1, e2) <= tol:
                 return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method, -1.0
-            last_n = n
             n *= 2
         # fallback, split where D is smallest (the near-tangent line through a near-rim ICR)
         if not branch:
@@ -271,8 +269,8 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
             status,
             METHOD_ADAPTIVE_INSIDE,
             used + nev,
-            last_n,
-            half,
+            0,
+            0.0,
             method,
             derr,
         )
@@ -362,9 +360,7 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         used += n - 1 if branch else n + 1
         if _estimate(e1, e2) <= tol:
             return sgn * fx, sgn * fy, sgn * mm, STATUS_OK, method, used, n, half, method, -1.0
-        last_n = n
         n *= 2
-    last_half = half
     mid = 0.5 * (a_plus + a_minus)
     half = 0.5 * (a_plus - a_minus)
     inside = q <= 1.0
@@ -405,8 +401,8 @@ def wrench_rule(law, K, t00, t01, t10, t11, vx, vy, omega, tol, W, D):
         status,
         METHOD_ADAPTIVE_OUTSIDE,
         used + nev,
-        last_n,
-        last_half,
+        0,
+        0.0,
         method,
         derr,
     )
