@@ -10,7 +10,9 @@ for a footprint, the batch loop of :mod:`slidespin.motion._parallel` run seriall
 batches), the ``wrench_world`` entries and ``wrench_array`` loops of the ellipse and footprint
 kernels (one twist, called from Python by the statics, and many), and the loaded
 engine's one entry :func:`slidespin.motion._loaded_core.run_loaded` for each, the
-sensitivity run :func:`slidespin.motion._sensitivity_core.integrate_sensitivities` for each,
+sensitivity run :func:`slidespin.motion._sensitivity_core.integrate_sensitivities` for each
+its path's conversion to fixed time (:func:`~slidespin.motion._sensitivity_core.fixed_time`) and
+the terminal direction's (:func:`~slidespin.motion._sensitivity_core.terminal_direction`),
 and the MuJoCo coupling's steady step :mod:`slidespin.engines._stepcore` for each. The result
 is an ordinary extension module, ``slidespin/_aot_core.*.so`` (it needs neither numba
 nor LLVM at runtime), and beside it ``_aot_core.json``: the numba version, the CPU it was
@@ -44,7 +46,11 @@ from slidespin.engines._stepcore import steady_ellipse, steady_footprint
 from slidespin.motion._integrator import integrate_fp
 from slidespin.motion._loaded_core import run_loaded
 from slidespin.motion._parallel import _integrate_many, _stop_direction
-from slidespin.motion._sensitivity_core import integrate_sensitivities
+from slidespin.motion._sensitivity_core import (
+    fixed_time,
+    integrate_sensitivities,
+    terminal_direction,
+)
 
 _jit.numba_module()  # every deferred jit function becomes numba's (the names above too)
 
@@ -59,7 +65,7 @@ _A2 = T.Array(T.float64, 2, "C")
 _IA1 = T.Array(T.int64, 1, "C")
 # integrate_fp's result and its arguments after (par, fp)
 _RUN = T.Tuple((_A1, _I, _I, _I, _I, _F, _A2, _A1))
-_TAIL = (_A1, _F, _F, _F, _F, _I, _F, T.boolean)
+_TAIL = (_A1, _F, _F, _F, _F, _I, _F, T.boolean, T.boolean)
 # _integrate_many's result and its arguments after (pars, fps, init)
 _IA2 = T.Array(T.int64, 2, "C")
 _MANY = T.Tuple((_A2, _IA1, _IA1, _IA1, _IA1, _A2))
@@ -70,7 +76,7 @@ _LOADED_TAIL = (_A1, _F, _A1, _F, _A1, _F, _F, _A1, _F, _F, _F, _I)
 
 # integrate_sensitivities' result, and its arguments after (pars, fp, geos)
 _SENS = T.Tuple((_A1, _A1, _I, _I, _I, _A2, _A2))
-_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, T.boolean, _I, _A1, _A1)
+_SENS_TAIL = (_A1, _A1, _F, _F, _F, _F, T.boolean, _I, _A1, _A2, _A2, _A1)
 
 # the MuJoCo coupling's steady step: MuJoCo's arrays, the contacts' geom pairs (a strided
 # int32 view), body, dof, time, step, state, then the kernel's arguments
@@ -89,15 +95,17 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
     cc.verbose = False
 
     @cc.export("integrate_ellipse", _RUN(_A1, *_TAIL))
-    def integrate_ellipse(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
-        return integrate_fp(par, None, y0, rtol, atol, utol, s_drop, max_steps, h_max, record)
+    def integrate_ellipse(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages):
+        return integrate_fp(
+            par, None, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages
+        )
 
     @cc.export("integrate_footprint", _RUN(_A1, _A2, _A2, _A1, *_TAIL))
     def integrate_footprint(
-        par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
+        par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages
     ):
         fp = (fe, fc, geo)
-        return integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record)
+        return integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages)
 
     @cc.export(
         "wrench_array_ellipse",
@@ -169,20 +177,31 @@ def _compiler(output_dir: Path, target_cpu: str) -> CC:
 
     @cc.export("sensitivities_ellipse", _SENS(_A2, _A2, *_SENS_TAIL))
     def sensitivities_ellipse(
-        pars, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
+        pars, geos, hs, y0, rtol, atol, drop, conv, collocate, steps, taus, rows, stg, yterm
     ):
         return integrate_sensitivities(
-            pars, None, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
-        )
+            pars, None, geos, hs, y0, rtol, atol, drop, conv, collocate, steps, taus, rows,
+            stg, yterm,
+        )  # fmt: skip
 
     @cc.export("sensitivities_footprint", _SENS(_A2, _A2, _A2, _A2, *_SENS_TAIL))
     def sensitivities_footprint(
-        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
-    ):
+        pars, fe, fc, geos, hs, y0, rtol, atol, drop, conv, collocate, steps, taus, rows, stg,
+        yterm,
+    ):  # fmt: skip
         fp = (fe, fc, geos[0])
         return integrate_sensitivities(
-            pars, fp, geos, hs, y0, rtol, atol, drop, conv, replay, steps, taus, yterm
-        )
+            pars, fp, geos, hs, y0, rtol, atol, drop, conv, collocate, steps, taus, rows,
+            stg, yterm,
+        )  # fmt: skip
+
+    @cc.export("fixed_time", T.Array(T.float64, 3, "C")(_A2, _A2, _A2, _A1, _F, _A1, _F, _F, _F))
+    def fixed_time_aot(rows, accel, rec, y, k, dk, a, t_unit, v_unit):
+        return fixed_time(rows, accel, rec, y, k, dk, a, t_unit, v_unit)
+
+    @cc.export("terminal_direction", T.Tuple((_A2, T.boolean))(_A1, _A2, _A1))
+    def terminal_direction_aot(u, term, s_phi):
+        return terminal_direction(u, term, s_phi)
 
     @cc.export("steady_ellipse", _I(*_STEADY, _A1))
     def steady_ellipse_aot(qv, xm, xi, xp, qc, qa, xf, qp, geom, b, a, t, h, s, par):

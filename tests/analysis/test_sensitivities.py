@@ -12,6 +12,7 @@ import pytest
 from stop_differences import OUTPUTS, derivatives
 
 import slidespin as ss
+import slidespin.motion.simulate as simulate_module
 from slidespin.motion.sensitivity import PARAMETERS
 
 G = 9.81
@@ -83,6 +84,17 @@ def test_stop_derivatives_match_richardson_differences(case):
     assert set(got) == set(names)
     for name in names:
         assert set(got[name]) == set(OUTPUTS)
+        _close(got[name], derivatives(body, friction, state, name, rel=REL.get(case, 1e-3)))
+
+
+@pytest.mark.parametrize("case", ["ellipse_linear_skew", "polygon_L"])
+def test_stop_derivatives_integrated_with_the_motion(case, monkeypatch):
+    # the other route (a looser rtol than COLLOCATE_RTOL, or no J somewhere): the
+    # variational equations integrated with the motion under a joint error control
+    monkeypatch.setattr(simulate_module, "COLLOCATE_RTOL", 0.0)
+    body, friction, state, names = CASES[case]
+    got = ss.stop_sensitivities(body, friction, state, parameters=names)
+    for name in names:
         _close(got[name], derivatives(body, friction, state, name, rel=REL.get(case, 1e-3)))
 
 

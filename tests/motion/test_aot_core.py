@@ -44,7 +44,7 @@ def test_core_gives_the_jit_numbers_bit_for_bit(name):
     fp = footprint_argument(par, fe, fc, geo)
     y0 = np.array([0.5, 0.5, 0.7, 0.0, 0.0, 0.1, -0.2, 0.3, 0.0])
     y0[:3] /= np.linalg.norm(y0[:3])
-    tail = (1e-10, 1e-10, 1e-10, 1e-10, 100_000, math.inf, True)
+    tail = (1e-10, 1e-10, 1e-10, 1e-10, 100_000, math.inf, True, False)
     jit = _integrator.integrate_fp(par, fp, y0, *tail)
     aot = (
         core.integrate_ellipse(par, y0, *tail)

@@ -26,3 +26,9 @@ def test_table_is_a_consistent_method_of_high_order():
         assert abs(b @ c ** (k - 1) - 1.0 / k) < 1e-13, k
     # the error estimates vanish on the quadrature of a constant (they weight differences)
     assert abs(table.E5.sum()) < 1e-13 and abs(table.E3.sum()) < 1e-13
+
+
+def test_dense_output_table_is_scipys_bit_for_bit():
+    assert np.array_equal(table.A_EXTRA, scipy_table.A[scipy_table.N_STAGES + 1 :])
+    assert np.array_equal(table.C_EXTRA, scipy_table.C[scipy_table.N_STAGES + 1 :])
+    assert np.array_equal(table.D, scipy_table.D)

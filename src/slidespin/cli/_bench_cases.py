@@ -177,7 +177,7 @@ def bench_trajectory(quick):
 
         def compiled(record=False):
             return _integrator.integrate(
-                par, y0, rtol, rtol, rtol, min(rtol, 1e-8), 200_000, np.inf, record
+                par, y0, rtol, rtol, rtol, min(rtol, 1e-8), 200_000, np.inf, record, False
             )
 
         r = compiled()

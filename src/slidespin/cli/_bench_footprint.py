@@ -119,7 +119,7 @@ def bench_footprint(quick, rng, states):
 
         def traj():
             return _integrator.integrate_fp(
-                par, fpa, y0, 1e-10, 1e-10, 1e-10, 1e-10, 200_000, np.inf, False
+                par, fpa, y0, 1e-10, 1e-10, 1e-10, 1e-10, 200_000, np.inf, False, False
             )
 
         r = traj()

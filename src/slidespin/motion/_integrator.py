@@ -147,12 +147,14 @@ def _err_norm(K, h, scale):
 
 
 @jit(error_model="numpy")
-def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+def integrate(par, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages):
     """:func:`integrate_fp` for an elliptic patch (``fp`` = None)."""
-    return integrate_fp(par, None, y0, rtol, atol, utol, s_drop, max_steps, h_max, record)
+    return integrate_fp(par, None, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages)
 
 
-def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+def integrate_on(
+    par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages=False
+):
     """:func:`integrate_fp` for the parameter vector ``par`` and the footprint arrays ``fe``,
     ``fc``, ``geo`` of :meth:`slidespin.Body.engine_params` (edges (n, 4), circles (m, 4)
     and kernel constants (``NGEO``,) in natural units; ignored for an ellipse).
@@ -168,9 +170,9 @@ def integrate_on(par, fe, fc, geo, y0, rtol, atol, utol, s_drop, max_steps, h_ma
     aot = _aot.core()
     if aot is not None:
         if fp is None:
-            return aot.integrate_ellipse(par, y0, *tail, bool(record))
-        return aot.integrate_footprint(par, *fp, y0, *tail, bool(record))
-    return integrate_fp(par, fp, y0, *tail, bool(record))
+            return aot.integrate_ellipse(par, y0, *tail, bool(record), bool(stages))
+        return aot.integrate_footprint(par, *fp, y0, *tail, bool(record), bool(stages))
+    return integrate_fp(par, fp, y0, *tail, bool(record), bool(stages))
 
 
 def wrench_rows(par, fe, fc, geo, phi, u1, u2, w):
@@ -191,7 +193,7 @@ def wrench_rows(par, fe, fc, geo, phi, u1, u2, w):
 
 
 @jit(error_model="numpy")
-def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record):
+def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record, stages):
     """Integrate the regularised system from ``y0`` to the stop and classify the stop.
 
     Parameters
@@ -217,6 +219,9 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
         Largest step in τ (use ``inf`` for none; smaller values give denser records).
     record : bool
         Keep every accepted step.
+    stages : bool
+        With ``record``, keep also each accepted step's 13 stage derivatives (the last at
+        its end), for its dense output (:mod:`slidespin.motion._sensitivity_colloc`).
 
     Returns
     -------
@@ -232,8 +237,10 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
         Accepted steps, right-hand-side calls, wrench evaluations above their error target.
     rate : float
         |u·A| at the stop (the final decay rate of ln s).
-    rec : ndarray (n, 10)
-        Records (τ, y) of accepted steps, including the start (empty unless ``record``).
+    rec : ndarray (n, 10) or (n, 10 + 13 · 9)
+        Records (τ, y) of accepted steps, including the start (empty unless ``record``);
+        with ``stages``, then the stages of the step that ended there (K₀ … K₁₂, 0 at the
+        start).
     term : ndarray (4,)
         ϑ* (NaN where no limiting direction exists; the direction reached if not converged),
         ln(s/s₀) down to which a ``saddle`` ending was observed (NaN otherwise), the largest
@@ -287,7 +294,8 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
     fails += _rhs(par, kc, W, fp, y, f)
     nrhs = 1
     cap = 256 if record else 1
-    rec = np.empty((cap, NY + 1))
+    width = NY + 1 + (_NS + 1) * NY if record and stages else NY + 1
+    rec = np.empty((cap, width))
     nrec = 0
     tau = 0.0
     term = np.empty(4)
@@ -298,6 +306,8 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
         rec[0, 0] = tau
         for i in range(NY):
             rec[0, 1 + i] = y[i]
+        for i in range(NY + 1, width):
+            rec[0, i] = 0.0
         nrec = 1
     status = ST_MAX_STEPS
     finite = True
@@ -390,15 +400,19 @@ def integrate_fp(par, fp, y0, rtol, atol, utol, s_drop, max_steps, h_max, record
         nsteps += 1
         if record:
             if nrec == cap:
-                big = np.empty((2 * cap, NY + 1))
+                big = np.empty((2 * cap, width))
                 for i in range(cap):  # (loops: slice assignment is slow to compile)
-                    for c in range(NY + 1):
+                    for c in range(width):
                         big[i, c] = rec[i, c]
                 rec = big
                 cap *= 2
             rec[nrec, 0] = tau
             for i in range(NY):
                 rec[nrec, 1 + i] = y[i]
+            if width > NY + 1:
+                for j in range(_NS + 1):
+                    for i in range(NY):
+                        rec[nrec, 1 + NY + j * NY + i] = K[j, i]
             nrec += 1
         du = math.sqrt(f[0] ** 2 + f[1] ** 2 + f[2] ** 2)
         u12 = math.sqrt(y[0] * y[0] + y[1] * y[1])

@@ -168,7 +168,17 @@ def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
         # second time, specialised, instead of reusing the version simulate() compiled
         if fps is None:
             yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
-                pars[i], None, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
+                pars[i],
+                None,
+                y0,
+                rtol,
+                atol,
+                utol,
+                s_drop,
+                max_steps,
+                np.inf,
+                no_record,
+                no_record,
             )
         else:
             edges, circles, eidx, cidx, geos = fps
@@ -179,7 +189,17 @@ def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
                 np.ascontiguousarray(geos[i]),
             )
             yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
-                pars[i], fp, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record
+                pars[i],
+                fp,
+                y0,
+                rtol,
+                atol,
+                utol,
+                s_drop,
+                max_steps,
+                np.inf,
+                no_record,
+                no_record,
             )
         for c in range(NY):
             out[i, c] = yend[c]

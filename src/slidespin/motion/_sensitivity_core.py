@@ -5,35 +5,33 @@ parameter θ_k, its sensitivity S_k = ∂y/∂θ_k at fixed regularised time τ,
 
     dy/dτ = G(y; θ),     dS_k/dτ = (∂G/∂y) S_k + ∂G/∂θ_k       (MODEL §15, in τ).
 
-With the wrench's exact derivatives (:func:`slidespin.contact._engine.accelerations_jacobian`:
-analytic on an ellipse, :mod:`slidespin.contact._kernel_ellipse_jac`; differenced in the ICR
-on a footprint, :mod:`slidespin.contact._kernel_footprint_jac`) ∂G/∂y is assembled once per
-evaluation (:func:`rhs_jacobian`) and serves every parameter; ∂G/∂θ_k is exact for the
-parameters that move only the tensor's entries, the radius of gyration, an ellipse's
-pressure centre, or the start (:func:`direct_parameters`, :func:`parameter_rhs`). For the
-others (a footprint's pressure centre), and at a state where the kernel has no derivative
-(the elliptic quadrature's adaptive fallback, a blade, a footprint's translation), the
-right-hand side is the directional derivative of the flow along (S_k, e_k) in the joint
-(state, parameter) space, a central difference of :func:`slidespin.motion._flow._rhs` with
-the step h_k of parameter k,
+The right-hand side and its derivatives are those of
+:mod:`slidespin.motion._sensitivity_rhs`.
 
-    (G(y + h_k S_k; θ + h_k e_k) − G(y − h_k S_k; θ − h_k e_k)) / (2 h_k),
+Two routes (:func:`integrate_sensitivities`):
 
-the perturbed parameters θ ± h_k e_k reaching the kernels as whole parameter vectors
-(``pars``, rows 1 + 2k and 2 + 2k) and, for a footprint, kernel geometries (``geos``); its
-error is O(h_k²), about 1e-10 of the derivative, and it costs two wrench evaluations per
-parameter and stage (the exact path: one evaluation with derivatives, about three wrenches'
-worth, for all parameters).
-
-The integrator is the DOP853 pair of :mod:`slidespin.motion._integrator` (the same
-coefficients and error norm) on the joint vector (y, S), the sensitivities of the exact
-parameters weighted by ``DIRECT_WEIGHT`` in the error norm and each S_k's components scaled
-with a floor at ``SCALE_FLOOR`` of its largest, its steps cut to land on the plain
-run's recorded times (or, with ``replay``, those steps themselves without an error test:
-an internal differentiation of the integrator in the sense of Bock, cheaper but not accurate
-enough at the plain run's tolerance), until s has dropped by ``ln_drop`` and the stop's
-sensitivities of t, x, y, φ have converged; no projection and no tail (s is below 1e-13 s₀
-there, and the tail is O(s)).
+- **Collocation on the plain run's steps** (``collocate``;
+  :mod:`slidespin.motion._sensitivity_colloc`): S is linear and the motion is known, so S is
+  solved step by step of the plain run by Lobatto IIIA collocation (order 8, four
+  evaluations of G, ∂G/∂y and ∂G/∂θ per step), the state inside a step being the plain
+  step's DOP853 dense output (its stages are in the plain run's records; three plain
+  right-hand sides more per step); a step across which the ICR crosses the patch's rim
+  (where the wrench is only C¹) is split there and graded; once s < 1e-8 s₀ and the stop's
+  sensitivities have converged the later records keep them, and the tail the plain run adds
+  in closed form is differentiated. About 2x a plain run's work for 6
+  parameters, as accurate as the joint route (measured against the Richardson references of
+  tests/analysis/test_sensitivities.py: worst 3e-7, a differenced parameter; typically
+  1e-8 to 1e-10).
+- **The joint integration** (the other route: a tolerance looser than the plain run's
+  default, or no ∂G/∂y somewhere): the DOP853 pair of :mod:`slidespin.motion._integrator`
+  (the same coefficients and error norm) on the joint vector (y, S), the sensitivities of
+  the exact parameters weighted by ``DIRECT_WEIGHT`` in the error norm and each S_k's
+  components scaled with a floor at ``SCALE_FLOOR`` of its largest, its steps cut to land on
+  the plain run's recorded times, until s has dropped by ``ln_drop`` and the stop's
+  sensitivities of t, x, y, φ have converged; no projection and no tail (s is below 1e-13 s₀
+  there, and the tail is O(s)). (Taking the plain run's steps without an error test, an
+  internal differentiation in the sense of Bock, was measured 1e-6 to 1e-5 off where the ICR
+  crosses a rim: not done.)
 """
 
 from __future__ import annotations
@@ -43,29 +41,15 @@ import math
 import numpy as np
 
 from slidespin import _aot
-from slidespin._jit import is_none_type, jit, overload
-from slidespin.contact._engine import (
-    P_BODY,
-    P_K,
-    P_LAW,
-    P_SHAPE,
-    P_T00,
-    P_T01,
-    P_T10,
-    P_T11,
-    P_XG,
-    P_YG,
-    SHAPE_FOOTPRINT,
-    accelerations_jacobian,
-    footprint_argument,
-    kernel_constants,
-)
+from slidespin._jit import jit
+from slidespin.contact._engine import P_SHAPE, SHAPE_FOOTPRINT, footprint_argument, kernel_constants
 from slidespin.contact._jacobian import JAC_SIZE
-from slidespin.contact._kernel_ellipse import tensor_in_body
 from slidespin.contact._kernel_ellipse_jac import JAC_WORKSPACE_SHAPE
 from slidespin.motion import _dop853 as _dop
-from slidespin.motion._flow import NY, _rhs, flow, unit_direction
+from slidespin.motion._flow import NY
 from slidespin.motion._integrator import _E3, _E5
+from slidespin.motion._sensitivity_colloc import solve_on_records
+from slidespin.motion._sensitivity_rhs import direct_parameters, joint_rhs, stop_terms
 
 _NS = _dop.N_STAGES
 _A = np.ascontiguousarray(_dop.A)
@@ -94,189 +78,6 @@ LAND_STRETCH = 1.5
 #: rejections of one step after which the run ends with ``SS_STEP_TOO_SMALL`` (each cuts the
 #: step by at least 10 %, so a step that converges needs far fewer)
 MAX_REJECTIONS = 200
-
-
-def row_patch(fp, geos, j):
-    """The patch argument for row ``j`` of the perturbed parameters: ``None`` for an ellipse,
-    else the footprint's edges and circles with row ``j`` of ``geos``."""
-    if fp is None:
-        return None
-    return (fp[0], fp[1], geos[j])
-
-
-@overload(row_patch, jit_options={"error_model": "numpy"})
-def _row_patch_of_type(fp, geos, j):
-    if is_none_type(fp):
-        return lambda fp, geos, j: None
-    return lambda fp, geos, j: (fp[0], fp[1], geos[j])
-
-
-@jit(error_model="numpy", inline="always")
-def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
-    """The right-hand side G(y) of :func:`slidespin.motion._flow._rhs` into ``out`` and, when
-    the kernel has the wrench's exact derivatives, ∂G/∂y into ``Jy`` (NY × NY); returns
-    (wrench status, available). ``jo`` keeps the kernel's derivative vector for
-    :func:`parameter_rhs`."""
-    u1, u2, u3, inz = unit_direction(y)
-    k = par[P_K]
-    a1, a2, a3, st, ok = accelerations_jacobian(par, kc, W, fp, u1, u2, u3, y[7], jo)
-    ua, s, s2, r = flow(a1, a2, a3, u1, u2, u3, y[3], k, out)
-    if not ok:
-        return st, ok
-    # dA/du: the twist is (u1, u2, u3/k) and A₃ = M/k
-    ik = 1.0 / k
-    d00, d01, d02 = jo[9], jo[10], jo[11] * ik
-    d10, d11, d12 = jo[12], jo[13], jo[14] * ik
-    d20, d21, d22 = jo[15] * ik, jo[16] * ik, jo[17] * ik * ik
-    p0, p1, p2 = jo[18], jo[19], jo[20] * ik
-    udphi = u1 * p0 + u2 * p1 + u3 * p2
-    # ∂(u·A)/∂u_j
-    c0 = a1 + u1 * d00 + u2 * d10 + u3 * d20
-    c1 = a2 + u1 * d01 + u2 * d11 + u3 * d21
-    c2 = a3 + u1 * d02 + u2 * d12 + u3 * d22
-    for i in range(NY):
-        for j in range(NY):
-            Jy[i, j] = 0.0
-    # rows ∂G_i/∂u before the normalisation's projection P = (I − uuᵀ)/|z|, kept in the
-    # columns 4–6 of Jy (zero in ∂G/∂y) until projected into columns 0–2
-    Jy[0, 4], Jy[0, 5], Jy[0, 6] = d00 - u1 * c0 - ua, d01 - u1 * c1, d02 - u1 * c2
-    Jy[1, 4], Jy[1, 5], Jy[1, 6] = d10 - u2 * c0, d11 - u2 * c1 - ua, d12 - u2 * c2
-    Jy[2, 4], Jy[2, 5], Jy[2, 6] = d20 - u3 * c0, d21 - u3 * c1, d22 - u3 * c2 - ua
-    Jy[3, 4], Jy[3, 5], Jy[3, 6] = c0, c1, c2
-    Jy[5, 4] = s2
-    Jy[6, 5] = s2
-    Jy[7, 6] = s2 * ik
-    if r > 0.0:
-        Jy[8, 4] = s2 * u1 / r
-        Jy[8, 5] = s2 * u2 / r
-    for i in range(NY):
-        g0, g1, g2 = Jy[i, 4], Jy[i, 5], Jy[i, 6]
-        gu = g0 * u1 + g1 * u2 + g2 * u3
-        Jy[i, 0] = (g0 - gu * u1) * inz
-        Jy[i, 1] = (g1 - gu * u2) * inz
-        Jy[i, 2] = (g2 - gu * u3) * inz
-        Jy[i, 4] = 0.0
-        Jy[i, 5] = 0.0
-        Jy[i, 6] = 0.0
-    Jy[0, 7] = p0 - udphi * u1
-    Jy[1, 7] = p1 - udphi * u2
-    Jy[2, 7] = p2 - udphi * u3
-    Jy[3, 7] = udphi
-    Jy[4, 3] = s
-    Jy[5, 3] = 2.0 * s2 * u1
-    Jy[6, 3] = 2.0 * s2 * u2
-    Jy[7, 3] = 2.0 * s2 * u3 * ik
-    Jy[8, 3] = 2.0 * s2 * r
-    return st, ok
-
-
-@jit(error_model="numpy", inline="always")
-def parameter_rhs(par, jo, y, d, c, sn, out):
-    """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
-    d𝔽 = (d[0], d[1]; d[2], d[3]) per unit θ, in the tensor's own frame), the radius of
-    gyration (by d[4]) and an ellipse's pressure centre G (by (d[5], d[6]) in the body frame):
-    exact, from the wrench's isotropic parts and its derivatives in ``jo``
-    (:func:`rhs_jacobian` at ``y``; c, sn the cosine and sine of its angle φ); the wrench is
-    linear in 𝔽 (MODEL §10)."""
-    d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
-    u1, u2, u3, _ = unit_direction(y)
-    k = par[P_K]
-    e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, par[P_BODY] != 0.0, c, sn)
-    fbx = -(e00 * jo[3] + e01 * jo[4])  # F = −𝔽Q, M = −Σ 𝔽_ij N_ij (body frame)
-    fby = -(e10 * jo[3] + e11 * jo[4])
-    mm = -(e00 * jo[5] + e01 * jo[6] + e10 * jo[7] + e11 * jo[8])
-    b1 = c * fbx - sn * fby
-    b2 = sn * fbx + c * fby
-    if dxg != 0.0 or dyg != 0.0:  # (NaN where the kernel has no ∂W/∂G: never direct there)
-        b1 += dxg * jo[21] + dyg * jo[24]
-        b2 += dxg * jo[22] + dyg * jo[25]
-        mm += dxg * jo[23] + dyg * jo[26]
-    b3 = mm / k
-    if dk != 0.0:
-        dt = -u3 / (k * k) * dk  # the twist's ω = u3/k moves
-        b1 += jo[11] * dt
-        b2 += jo[14] * dt
-        b3 += jo[17] * dt / k - jo[2] / (k * k) * dk
-    ub = u1 * b1 + u2 * b2 + u3 * b3
-    out[0] += b1 - ub * u1
-    out[1] += b2 - ub * u2
-    out[2] += b3 - ub * u3
-    out[3] += ub
-    if dk != 0.0:
-        s = math.exp(y[3])
-        out[7] -= s * s * u3 / (k * k) * dk
-
-
-@jit(error_model="numpy", inline="always")
-def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, gp, gm):
-    """Right-hand side of the joint system (y, S₁, …, S_p) (MODEL §15); returns the number
-    of wrench evaluations above their error target.
-
-    With the wrench's exact derivatives (:func:`rhs_jacobian`), S_k' = (∂G/∂y) S_k + ∂G/∂θ_k,
-    ∂G/∂θ_k exact (:func:`parameter_rhs`) for the parameters marked ``direct`` (tensor
-    entries, inertia, start; ``dts[k]`` = (d𝔽, dk)); the others (the pressure centre) and
-    every parameter at a state without them, by the central difference of the module notes.
-    """
-    npar = hs.size
-    st, ok = rhs_jacobian(pars[0], kcs[0], W, jo, row_patch(fp, geos, 0), Y[:NY], out[:NY], Jy)
-    fails = st
-    cph = math.cos(Y[7])  # for parameter_rhs, once for all parameters
-    sph = math.sin(Y[7])
-    for k in range(npar):
-        off = NY * (k + 1)
-        if ok and direct[k]:
-            # ∂G/∂y has its non-zero columns at u (0–2), ln s (3) and φ (7) only
-            s0, s1, s2, s3, s7 = Y[off], Y[off + 1], Y[off + 2], Y[off + 3], Y[off + 7]
-            for i in range(NY):
-                out[off + i] = (
-                    Jy[i, 0] * s0 + Jy[i, 1] * s1 + Jy[i, 2] * s2 + Jy[i, 3] * s3 + Jy[i, 7] * s7
-                )
-            d = dts[k]
-            moved = False
-            for i in range(d.size):
-                moved = moved or d[i] != 0.0
-            if moved:
-                parameter_rhs(pars[0], jo, Y[:NY], d, cph, sph, out[off : off + NY])
-            continue
-        h = hs[k]
-        for i in range(NY):
-            yp[i] = Y[i] + h * Y[off + i]
-            ym[i] = Y[i] - h * Y[off + i]
-        j = 1 + 2 * k
-        fails += _rhs(pars[j], kcs[j], W, row_patch(fp, geos, j), yp, gp)
-        fails += _rhs(pars[j + 1], kcs[j + 1], W, row_patch(fp, geos, j + 1), ym, gm)
-        for i in range(NY):
-            out[off + i] = (gp[i] - gm[i]) / (2.0 * h)
-    return fails
-
-
-@jit(error_model="numpy")
-def direct_parameters(pars, geos, hs):
-    """Which parameters move only the tensor's entries, k and an ellipse's pressure centre
-    (``direct``: their ∂G/∂θ is :func:`parameter_rhs`'s), and their rates (d𝔽, dk, dξ_G,
-    dη_G) per unit θ: central differences of the rows (linear in θ for the tensor and G)."""
-    npar = hs.size
-    direct = np.zeros(npar, dtype=np.bool_)
-    dts = np.zeros((npar, 7))
-    moved = (P_T00, P_T01, P_T10, P_T11, P_K, P_XG, P_YG)
-    ellipse = pars[0, P_SHAPE] != SHAPE_FOOTPRINT
-    for k in range(npar):
-        p = pars[1 + 2 * k]
-        m = pars[2 + 2 * k]
-        same = True
-        for i in range(pars.shape[1]):
-            free = i == P_T00 or i == P_T01 or i == P_T10 or i == P_T11 or i == P_K
-            # G moves with the law uniform ↔ linear (the kernel's formulas are the same)
-            free = free or (ellipse and (i == P_XG or i == P_YG or i == P_LAW))
-            if not free and (p[i] != pars[0, i] or m[i] != pars[0, i]):
-                same = False
-        for i in range(geos.shape[1]):
-            if geos[1 + 2 * k, i] != geos[0, i] or geos[2 + 2 * k, i] != geos[0, i]:
-                same = False
-        direct[k] = same
-        for i in range(7):
-            dts[k, i] = (p[moved[i]] - m[moved[i]]) / (2.0 * hs[k])
-    return direct, dts
 
 
 @jit(error_model="numpy", inline="always")
@@ -345,7 +146,21 @@ def _converged_measure(Y, F, npar, rate):
 
 @jit(error_model="numpy")
 def integrate_sensitivities(
-    pars, fp, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus, yterm
+    pars,
+    fp,
+    geos,
+    hs,
+    Y0,
+    rtol,
+    atol,
+    ln_drop,
+    conv_tol,
+    collocate,
+    max_steps,
+    taus,
+    rows,
+    stages,
+    yterm,
 ):
     """Integrate the joint system from ``Y0`` until the stop's sensitivities converge.
 
@@ -368,15 +183,22 @@ def integrate_sensitivities(
         Integration goes on at least until ln s < ln s₀ − ``ln_drop``.
     conv_tol : float
         Then until :func:`_converged_measure` is below it.
-    replay : bool
-        Take the steps ``taus`` themselves (the accepted steps of the plain run, whose error
-        control chose them for the motion) without an error test, then go on with error
-        control to convergence; else cut the error-controlled steps to land on ``taus``.
+    collocate : bool
+        Solve for S along the plain run's records (``taus``, ``rows``) by collocation
+        (:func:`slidespin.motion._sensitivity_colloc.collocate`), then go on with the joint integration from the last record
+        only if the stop's sensitivities have not converged there; else (or where the
+        collocation cannot be done) integrate the joint system from ``Y0``, its steps cut
+        to land on ``taus``.
     max_steps : int
         Step budget.
     taus : ndarray (n,)
         Increasing regularised times at which to record (Y, dY/dτ); steps are cut to land on
         them exactly.
+    rows : ndarray (n, NY)
+        The plain run's states at ``taus`` (used with ``collocate``).
+    stages : ndarray (n, 1 + NY + 13 NY)
+        The plain run's records with its steps' stages (used with ``collocate``: the
+        records of :func:`slidespin.motion._integrator.integrate_fp` with ``stages``).
     yterm : ndarray (NY,)
         A state (the plain run's stop) at which to return the terms of
         :func:`stop_terms`.
@@ -386,11 +208,12 @@ def integrate_sensitivities(
     Y : ndarray
         The joint state at the end.
     F : ndarray
-        Its rate dY/dτ there.
+        Its rate dY/dτ there (zeros after a collocation: not formed).
     status : int
         ``SS_CONVERGED``, ``SS_MAX_STEPS``, ``SS_STEP_TOO_SMALL`` or ``SS_NON_FINITE``.
     n_steps, fails : int
-        Accepted steps; wrench evaluations above their error target.
+        Accepted steps (the plain run's records collocated count as steps); wrench
+        evaluations above their error target.
     rec : ndarray (n, len(Y))
         Y at the times ``taus`` that were reached (rows beyond remain NaN).
     term : ndarray (NY + p, NY)
@@ -420,19 +243,44 @@ def integrate_sensitivities(
     a3 = np.empty(n)
     F = np.empty(n)
     rec = np.full((taus.size, n), np.nan)
-    fails = joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, F, yp, ym, gp, gm)
     ln_s0 = Y[3]
     tau = 0.0
     nxt = 0
+    nsteps = 0
+    status = SS_MAX_STEPS
+    fails = 0
+    done = False
+    if collocate and taus.size > 1 and taus[0] == 0.0:
+        f, done = solve_on_records(
+            pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, taus, rows, stages, Y, rec, conv_tol
+        )
+        fails += f
+        if done:
+            tau = taus[-1]
+            nxt = taus.size
+            nsteps = taus.size - 1
+        else:  # (no derivative somewhere: the joint integration from the start)
+            for i in range(n):
+                Y[i] = Y0[i]
+                for j in range(taus.size):
+                    rec[j, i] = math.nan
+    if done:  # (to the stop: the tail in closed form; F is not needed)
+        status = SS_CONVERGED
+        max_steps = 0
+        for i in range(n):
+            F[i] = 0.0
+    else:
+        fails += joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, F, yp, ym, gp, gm)
     while nxt < taus.size and taus[nxt] <= 0.0:
         for i in range(n):
             rec[nxt, i] = Y[i]
         nxt += 1
     fm = math.sqrt(F[0] ** 2 + F[1] ** 2 + F[2] ** 2 + F[3] ** 2)
     h = 0.01 / max(fm, 1e-3)
+    if done:  # going on from the last record: the plain run's last step
+        h = taus[-1] - taus[-2]
     exponent = -1.0 / 8.0
-    status = SS_MAX_STEPS
-    nsteps = 0
+    max_steps += nsteps
     while nsteps < max_steps:
         rejected = False
         rejections = 0
@@ -443,7 +291,7 @@ def integrate_sensitivities(
             # a step a little short of an output time is stretched to land on it (not after
             # a rejection: the retry would land on it again)
             stretch = 1.0 if rejected else LAND_STRETCH
-            if nxt < taus.size and (replay or tau + stretch * hh >= taus[nxt]):
+            if nxt < taus.size and tau + stretch * hh >= taus[nxt]:
                 hh = taus[nxt] - tau
                 landed = True
             if not hh >= 1e-12 * (1.0 + tau):
@@ -479,10 +327,6 @@ def integrate_sensitivities(
             if not math.isfinite(en):
                 status = SS_NON_FINITE
                 break
-            if replay and landed:  # the plain run's own step: accepted as it was there
-                tau = taus[nxt]
-                h = hh
-                break
             if en < 1.0:
                 factor = 10.0 if en == 0.0 else min(10.0, 0.9 * en**exponent)
                 if rejected:
@@ -517,26 +361,148 @@ def integrate_sensitivities(
 
 
 @jit(error_model="numpy")
-def stop_terms(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, y):
-    """∂G/∂y (rows 0..NY−1, NaN where the kernel has no exact derivatives) and ∂G/∂θ_k (row
-    NY + k) at the state ``y``: for the implicit-function theorem at the terminal direction
-    (:func:`slidespin.motion.sensitivity._terminal_sensitivity`)."""
-    npar = hs.size
-    n = NY * (1 + npar)
-    term = np.full((NY + npar, NY), np.nan)
-    Y = np.zeros(n)
-    Y[:NY] = y
-    out = np.empty(n)
-    joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out,
-              np.empty(NY), np.empty(NY), np.empty(NY), np.empty(NY))  # fmt: skip
-    if math.isfinite(jo[9]):  # the kernel's derivatives were there: Jy is ∂G/∂y at y
-        term[:NY] = Jy
+def fixed_time(rows, accel, rec, Y, k, dk, a, t_unit, v_unit):
+    """The path's derivatives at fixed t from those at fixed τ (:func:`integrate_sensitivities`'
+    ``rec`` at the records, then ``Y`` at the stop): ∂q/∂θ|t = ∂q/∂θ|τ − q̇ ∂t/∂θ|τ for
+    q = x, y, φ, vx, vy, ω (SI), with v = s u, so ∂v/∂θ|τ = s (u S_ln s + S_u) (S_u's radial
+    part is round-off); ``rows`` (n, NY) the plain run's states (the stop's last),
+    ``accel`` (n, 3) its natural accelerations (Fx, Fy, M/k), ``k`` the natural radius of
+    gyration and ``dk`` (p,) its ∂k/∂θ. Returns (6, n, p); the stop's velocities and their
+    derivatives are 0."""
+    n = rows.shape[0]
+    npar = dk.size
+    out = np.empty((6, n, npar))
+    for j in range(n):
+        u1, u2, u3 = rows[j, 0], rows[j, 1], rows[j, 2]
+        inv = 1.0 / math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
+        u1, u2, u3 = u1 * inv, u2 * inv, u3 * inv
+        s = math.exp(rows[j, 3])
+        ax, ay, am = accel[j, 0], accel[j, 1], accel[j, 2]
+        for q in range(npar):
+            off = NY * (q + 1)
+            S = Y[off:] if j == n - 1 else rec[j, off:]
+            st = S[4]
+            out[0, j, q] = (S[5] - s * u1 * st) * a
+            out[1, j, q] = (S[6] - s * u2 * st) * a
+            out[2, j, q] = S[7] - s * u3 / k * st
+            if j == n - 1:
+                out[3, j, q] = out[4, j, q] = out[5, j, q] = 0.0
+                continue
+            out[3, j, q] = (s * (u1 * S[3] + S[0]) - ax * st) * v_unit
+            out[4, j, q] = (s * (u2 * S[3] + S[1]) - ay * st) * v_unit
+            out[5, j, q] = ((s * (u3 * S[3] + S[2]) - am * st) / k
+                            - s * u3 * dk[q] / (k * k)) / t_unit  # fmt: skip
+    return out
+
+
+@jit(error_model="numpy")
+def terminal_direction(u, term, s_phi):
+    """∂u*/∂θ (p, 3) of a mixed ending's terminal direction u* by the implicit function
+    theorem on T(u*, φ*; θ) = 0 in the tangent plane at u*:
+    J_T ∂u* = −(∂T/∂φ ∂φ*/∂θ + ∂T/∂θ), from the exact terms ``term`` of :func:`stop_terms`
+    and ∂φ*/∂θ = ``s_phi``; and whether it could (the terms finite, J_T well conditioned:
+    its |λ| ratio above 1e-7; else the caller's general route,
+    :func:`slidespin.motion.sensitivity._terminal_sensitivity`)."""
+    npar = s_phi.size
+    su = np.full((npar, 3), np.nan)
+    for i in range(NY):
+        for j in range(NY):
+            if not math.isfinite(term[i, j]):
+                return su, False
+    nrm = math.sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2])
+    u0, u1, u2 = u[0] / nrm, u[1] / nrm, u[2] / nrm
+    # an orthonormal basis (b, c) of the tangent plane: b from the axis u is least along
+    ax = 0
+    if abs(u1) < abs(u0):
+        ax = 1
+    if abs(u2) < min(abs(u0), abs(u1)):
+        ax = 2
+    e = np.zeros(3)
+    e[ax] = 1.0
+    uu = (u0, u1, u2)
+    eu = uu[ax]
+    b0, b1, b2 = e[0] - eu * u0, e[1] - eu * u1, e[2] - eu * u2
+    bn = math.sqrt(b0 * b0 + b1 * b1 + b2 * b2)
+    b0, b1, b2 = b0 / bn, b1 / bn, b2 / bn
+    c0, c1, c2 = u1 * b2 - u2 * b1, u2 * b0 - u0 * b2, u0 * b1 - u1 * b0
+    B = np.array([[b0, c0], [b1, c1], [b2, c2]])
+    jt = np.zeros((2, 2))
+    for r in range(2):
+        for q in range(2):
+            acc = 0.0
+            for i in range(3):
+                for j in range(3):
+                    acc += B[i, r] * term[i, j] * B[j, q]
+            jt[r, q] = acc
+    tr = jt[0, 0] + jt[1, 1]
+    det = jt[0, 0] * jt[1, 1] - jt[0, 1] * jt[1, 0]
+    disc = 0.25 * tr * tr - det
+    if disc < 0.0:
+        small = big = math.sqrt(det)
+    else:
+        root = math.sqrt(disc)
+        small = min(abs(0.5 * tr - root), abs(0.5 * tr + root))
+        big = max(abs(0.5 * tr - root), abs(0.5 * tr + root))
+    if not (small > 1e-7 * big and det != 0.0):
+        return su, False
     for k in range(npar):
-        term[NY + k] = out[NY * (k + 1) : NY * (k + 2)]
-    return term
+        r0 = 0.0
+        r1 = 0.0
+        for i in range(3):
+            rhs = term[i, 7] * s_phi[k] + term[NY + k, i]
+            r0 -= B[i, 0] * rhs
+            r1 -= B[i, 1] * rhs
+        x0 = (jt[1, 1] * r0 - jt[0, 1] * r1) / det
+        x1 = (-jt[1, 0] * r0 + jt[0, 0] * r1) / det
+        for i in range(3):
+            su[k, i] = B[i, 0] * x0 + B[i, 1] * x1
+    return su, True
 
 
-def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_steps, taus, yterm):
+def path_at_fixed_time(rows, accel, rec, Y, k, dk, a, t_unit, v_unit):
+    """:func:`fixed_time`, run by the ahead-of-time compiled core when there is one."""
+    args = (
+        np.ascontiguousarray(rows, dtype=np.float64),
+        np.ascontiguousarray(accel, dtype=np.float64),
+        np.ascontiguousarray(rec, dtype=np.float64),
+        np.ascontiguousarray(Y, dtype=np.float64),
+        float(k),
+        np.ascontiguousarray(dk, dtype=np.float64),
+        float(a), float(t_unit), float(v_unit),
+    )  # fmt: skip
+    aot = _aot.core()
+    return (aot.fixed_time if aot is not None else fixed_time)(*args)
+
+
+def terminal_direction_sensitivity(u, term, s_phi):
+    """:func:`terminal_direction`, run by the ahead-of-time compiled core when there is one."""
+    args = (
+        np.ascontiguousarray(u, dtype=np.float64),
+        np.ascontiguousarray(term, dtype=np.float64),
+        np.ascontiguousarray(s_phi, dtype=np.float64),
+    )
+    aot = _aot.core()
+    return (aot.terminal_direction if aot is not None else terminal_direction)(*args)
+
+
+def run(
+    pars,
+    fe,
+    fc,
+    geos,
+    hs,
+    Y0,
+    rtol,
+    atol,
+    ln_drop,
+    conv_tol,
+    collocate,
+    max_steps,
+    taus,
+    rows,
+    stages,
+    yterm,
+):
     """:func:`integrate_sensitivities` for the rows ``pars`` (and ``geos``) and the footprint
     arrays ``fe``, ``fc`` (empty for an ellipse): run by the ahead-of-time compiled core when
     the install built one from these sources (:mod:`slidespin._aot`), else by the JIT."""
@@ -545,8 +511,10 @@ def run(pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, replay, max_s
     tail = (
         np.ascontiguousarray(hs, dtype=np.float64),
         np.ascontiguousarray(Y0, dtype=np.float64),
-        float(rtol), float(atol), float(ln_drop), float(conv_tol), bool(replay),
+        float(rtol), float(atol), float(ln_drop), float(conv_tol), bool(collocate),
         int(max_steps), np.ascontiguousarray(taus, dtype=np.float64),
+        np.ascontiguousarray(rows, dtype=np.float64),
+        np.ascontiguousarray(stages, dtype=np.float64),
         np.ascontiguousarray(yterm, dtype=np.float64),
     )  # fmt: skip
     footprint = pars[0, P_SHAPE] == SHAPE_FOOTPRINT

@@ -19,10 +19,10 @@ the public entries; this module holds the parameter names, their perturbations a
 The variational equation's right-hand side uses the wrench's exact derivatives where the
 kernels give them (an ellipse under every law: analytic; a footprint: its isotropic integrals
 differenced in the ICR) and a central difference of the whole right-hand side elsewhere (a
-footprint's pressure centre; see :mod:`slidespin.motion._sensitivity_core`). Cost
-(``benchmarks/sensitivities_bench.py``): 10-15x a plain run for 6 parameters (18-55x with
-1 + 2p wrench evaluations per stage before); the issue's goal of 3x is not met
-(docs/sensitivities.md says why).
+footprint's pressure centre); it is solved by collocation on the plain run's own steps, or
+integrated with the motion (see :mod:`slidespin.motion._sensitivity_core`). Cost
+(``benchmarks/sensitivities_bench.py``): about 3x a plain run for 6 parameters, 3.6-4.4x for
+9 (7-8x before the collocation, 18-55x before the kernels' derivatives; docs/sensitivities.md).
 """
 
 from __future__ import annotations
@@ -42,9 +42,10 @@ from slidespin.contact._kernel_ellipse import wrench_array as ellipse_wrench_arr
 from slidespin.contact.body import Body
 from slidespin.contact.friction import FrictionTensor
 from slidespin.contact.pressure import LinearPressure, UniformPressure
+from slidespin.motion import _dop853 as _dop
 from slidespin.motion import _integrator
 from slidespin.motion import _sensitivity_core as _core
-from slidespin.motion._flow import NY, initial_state
+from slidespin.motion._flow import NY
 from slidespin.motion.state import State
 
 __all__ = [
@@ -73,16 +74,16 @@ PATH_OUTPUTS = ("x", "y", "phi", "vx", "vy", "omega")
 REL_STEP = 1e-5
 #: the wrench kernels' error target in a sensitivity run (the elliptic quadrature; the
 #: footprint kernels are exact)
-WRENCH_TOL = 1e-14
+WRENCH_TOL = 1e-12
 #: the sensitivity run's tolerance (relative and absolute, natural units) at least: tighter,
 #: the step control chases the central differences' round-off (1e-16/REL_STEP) in S and can
 #: take tens of times more steps (a curling stone: 6500 at 1e-10, 600 at 1e-9); at 1e-8 a
 #: small derivative (∂t_stop/∂ηc, 1 % of the others) was 1.3e-6 off, at 1e-9 4e-8
 RUN_TOL = 1e-9
-#: take the plain run's steps without an error test (see the core)? Measured: its steps,
-#: chosen for the motion at rtol 1e-10, leave the sensitivities 1e-6 to 1e-5 off on an
-#: L-shaped polygon (the error-controlled run: 1e-8) for 1.5-2x fewer steps: not taken
-REPLAY = False
+#: solve the sensitivities by collocation on the plain run's steps
+#: (:mod:`slidespin.motion._sensitivity_colloc`) when its tolerance is at least this tight;
+#: else (or where the kernel has no derivatives) integrate them with the motion
+COLLOCATE_RTOL = 1e-9
 #: the run goes on until s < e^(−LN_DROP) s₀ and the stop's sensitivities move by less than
 #: CONV_TOL (relative)
 LN_DROP = 30.0
@@ -248,9 +249,19 @@ def _rows(body: Body, friction: FrictionTensor, state: State, g: float):
 
 def _start(par, a: float, g: float, vx, vy, omega, x, y, phi) -> NDArray[np.float64]:
     """The regularised initial state of a start (SI) for the rows ``par`` (length unit
-    ``a``)."""
+    ``a``): :func:`slidespin.motion._flow.initial_state`'s arithmetic, in Python (a call
+    of the compiled one from here would compile it: it is not in the ahead-of-time core)."""
     t_unit, v_unit = math.sqrt(a / g), math.sqrt(a * g)
-    return initial_state(par, vx / v_unit, vy / v_unit, omega * t_unit, x / a, y / a, phi)
+    vx, vy, wn = vx / v_unit, vy / v_unit, omega * t_unit
+    k = float(par[_engine.P_K])
+    y0 = np.zeros(NY)
+    y0[5], y0[6], y0[7] = x / a, y / a, phi
+    s0 = math.sqrt(vx * vx + vy * vy + (k * wn) ** 2)
+    if s0 == 0.0:
+        y0[3] = -math.inf
+        return y0
+    y0[0], y0[1], y0[2], y0[3] = vx / s0, vy / s0, k * wn / s0, math.log(s0)
+    return y0
 
 
 def _rows_moved(
@@ -260,30 +271,75 @@ def _rows_moved(
     name: str,
     value: float,
     g: float,
-    base: tuple[NDArray[np.float64], NDArray[np.float64]],
+    base: tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]],
 ):
-    """:func:`_rows` of :func:`_perturbed`: for the tensor's entries, the inertia and the
-    start, the body's own rows ``base`` = (par, geo) with the entries the parameter moves
-    (the tensor's, the radius of gyration), without the engine rows made afresh (a new tensor
-    or body would make a footprint's geometry again); for the pressure centre, the new
-    body's rows."""
+    """:func:`_rows` of :func:`_perturbed` for a parameter of the tensor or the body: for the
+    tensor's entries and the inertia, the body's own rows ``base`` = (par, geo, y₀) with the
+    entries the parameter moves (the tensor's, the radius of gyration), without the engine
+    rows made afresh (a new tensor or body would make a footprint's geometry again); for the
+    pressure centre, the new body's rows. (The start's parameters move y₀ only:
+    :func:`_start_derivative`.)"""
     if name in ("xi_c", "eta_c"):
         return _rows(*_perturbed(body, friction, state, name, value), g)
     par = base[0].copy()
     a = body.length_unit
-    if name in ("vx", "vy", "omega", "phi0"):  # (without a State, which would validate it)
-        start = {"vx": state.vx, "vy": state.vy, "omega": state.omega, "phi0": state.phi}
-        start[name] = value
-        vx, vy, om, phi = start.values()
-        return par, base[1], _start(par, a, g, vx, vy, om, state.x, state.y, phi)
+    st = state
+    if name in ("fx", "fy", "f") and _entry_in_range(name, value):
+        # the tensor is linear in its entries: 𝔽 + (value − entry) R E Rᵀ (R the turn by its
+        # angle, E the entry's unit matrix), without a new (validated) FrictionTensor
+        c, sn = math.cos(friction.angle), math.sin(friction.angle)
+        d = value - getattr(friction, name)
+        if name == "fx":  # E = [[1, 0], [0, 0]]
+            e00, e01, e11 = c * c, c * sn, sn * sn
+        elif name == "fy":  # E = [[0, 0], [0, 1]]
+            e00, e01, e11 = sn * sn, -c * sn, c * c
+        else:  # E = [[0, 1], [−1, 0]]: unchanged by the turn
+            par[_engine.P_T01] += d
+            par[_engine.P_T10] -= d
+            return par, base[1], base[2]
+        par[_engine.P_T00] += d * e00
+        par[_engine.P_T01] += d * e01
+        par[_engine.P_T10] += d * e01
+        par[_engine.P_T11] += d * e11
+        return par, base[1], base[2]
     b, fr, st = _perturbed(body, friction, state, name, value)
     if name == "moment_of_inertia":
         par[_engine.P_K] = b.radius_of_gyration / a
-    else:  # a tensor's entry
-        t = fr.kinetic.matrix
-        par[_engine.P_T00], par[_engine.P_T01] = t[0]
-        par[_engine.P_T10], par[_engine.P_T11] = t[1]
-    return par, base[1], _start(par, a, g, st.vx, st.vy, st.omega, st.x, st.y, st.phi)
+        return par, base[1], _start(par, a, g, st.vx, st.vy, st.omega, st.x, st.y, st.phi)
+    t = fr.kinetic.matrix
+    par[_engine.P_T00], par[_engine.P_T01] = t[0]
+    par[_engine.P_T10], par[_engine.P_T11] = t[1]
+    return par, base[1], base[2]
+
+
+def _entry_in_range(name: str, value: float) -> bool:
+    """Whether a tensor entry ``value`` is one FrictionTensor accepts (else the slow path
+    makes one, and its error)."""
+    if name == "f":
+        return abs(value) <= v.SKEW
+    return v.COEFFICIENT[0] <= value <= v.COEFFICIENT[1]
+
+
+#: the start's parameters (they move y₀ only)
+_START = ("vx", "vy", "omega", "phi0")
+
+
+def _start_derivative(y0, par, name: str, t_unit: float, v_unit: float) -> NDArray[np.float64]:
+    """∂y₀/∂θ (per SI unit of θ) of the regularised start y₀ = (u, ln s, 0, x, y, φ, 0), with
+    s u = (vx, vy, k ω) in natural units, for a start parameter θ: the velocity's
+    ∂u = (e − u u_e)/s, ∂ln s = u_e/s along the component e it moves."""
+    d = np.zeros(NY)
+    if name == "phi0":
+        d[7] = 1.0
+        return d
+    u = y0[:3]
+    inv_s = math.exp(-y0[3])
+    e = {"vx": 0, "vy": 1, "omega": 2}[name]
+    scale = inv_s / v_unit if e < 2 else inv_s * par[_engine.P_K] * t_unit
+    d[:3] = -u * u[e] * scale
+    d[e] += scale
+    d[3] = u[e] * scale
+    return d
 
 
 def compute(
@@ -298,18 +354,22 @@ def compute(
     taus: NDArray[np.float64],
     rows: NDArray[np.float64],
     accel: NDArray[np.float64],
+    stages: NDArray[np.float64] | None = None,
 ) -> Sensitivities:
     """Run the sensitivities of a free motion whose plain run (:func:`slidespin.simulate`)
     stopped with ``ending`` at a fixed point with ``eigenvalue_ratio``; ``taus`` are its
     records' regularised times, ``rows`` its states there and then at the stop (natural units),
     ``accel`` the natural accelerations (Fx, Fy, M/k) at the rows (for the fixed-t
-    conversion). Validated inputs only (``simulate`` checks them)."""
+    conversion), ``stages`` the plain run's records with its steps' stages (``integrate_on``
+    with ``stages``) for the collocation on its steps, or None to integrate the sensitivities
+    with the motion.
+    Validated inputs only (``simulate`` checks them)."""
     names = check_parameters(parameters)
     a = body.length_unit
     t_unit = math.sqrt(a / g)
     v_unit = math.sqrt(a * g)
     par0, fe, fc, geo0 = body.engine_params(friction.kinetic, WRENCH_TOL)
-    _, _, y0 = _rows(body, friction, state, g)
+    y0 = rows[0]  # the plain run's start: the same arithmetic as _rows
     npar = len(names)
     pars = np.empty((1 + 2 * npar, _engine.NPAR))
     geos = np.empty((1 + 2 * npar, geo0.size))
@@ -320,10 +380,15 @@ def compute(
     dk = np.zeros(npar)  # ∂k/∂θ (natural radius of gyration; only the inertia moves it)
     for k, name in enumerate(names):
         h = _step(body, friction, state, name)
-        val = _value(body, friction, state, name)
         hs[k] = h
-        pp, gp, yp = _rows_moved(body, friction, state, name, val + h, g, (par0, geo0))
-        pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0))
+        if name in _START:  # the rows stay; ∂y₀/∂θ in closed form
+            pars[1 + 2 * k] = pars[2 + 2 * k] = par0
+            geos[1 + 2 * k] = geos[2 + 2 * k] = geo0
+            Y0[NY * (k + 1) : NY * (k + 2)] = _start_derivative(y0, par0, name, t_unit, v_unit)
+            continue
+        val = _value(body, friction, state, name)
+        pp, gp, yp = _rows_moved(body, friction, state, name, val + h, g, (par0, geo0, y0))
+        pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0, y0))
         pars[1 + 2 * k], geos[1 + 2 * k] = pp, gp
         pars[2 + 2 * k], geos[2 + 2 * k] = pm, gm
         Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
@@ -331,9 +396,13 @@ def compute(
     tol = max(rtol, RUN_TOL)
     yterm = np.asarray(rows[-1], dtype=np.float64).copy()  # the stop: u*, φ*
     yterm[:3] /= np.linalg.norm(yterm[:3])
+    collocate = stages is not None
+    if stages is None:
+        stages = np.zeros((taus.size, 1 + NY + (_dop.N_STAGES + 1) * NY))
     Y, F, status, nsteps, fails, rec, term = _core.run(
-        pars, fe, fc, geos, hs, Y0, tol, tol, LN_DROP, CONV_TOL, REPLAY, MAX_STEPS, taus, yterm
-    )
+        pars, fe, fc, geos, hs, Y0, tol, tol, LN_DROP, CONV_TOL, collocate, MAX_STEPS, taus,
+        rows[:-1], stages, yterm,
+    )  # fmt: skip
     if status != _core.SS_CONVERGED or fails:
         raise RuntimeError(
             f"the sensitivity run ended with status {status} after {nsteps} steps "
@@ -343,12 +412,13 @@ def compute(
     k0 = par0[_engine.P_K]
     stop: dict[str, dict[str, float]] = {}
     path: dict[str, dict[str, NDArray[np.float64]]] = {}
-    rec = np.vstack([rec, Y[None, :]])
     u_stop, phi_stop = rows[-1, :3], rows[-1, 7]
     su = np.full((npar, 3), np.nan)
     if ending == "mixed":
         s_phi = Y[NY + 7 :: NY][:npar]
-        su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi, term)
+        su, ok = _core.terminal_direction_sensitivity(u_stop, term, s_phi)
+        if not ok:  # no exact terms there, or J_T (nearly) singular: the general route
+            su = _terminal_sensitivity(pars, fe, fc, geos, hs, u_stop, phi_stop, s_phi, term)
     kinked = _breaks_symmetry(par0, friction, names) if ending == "mixed" else ()
     jumps = _leaves_invariant_set(ending, eigenvalue_ratio, names)
     if ending == "spiral":
@@ -376,6 +446,7 @@ def compute(
             RuntimeWarning,
             stacklevel=3,
         )
+    fixed = _core.path_at_fixed_time(rows, accel, rec, Y, k0, dk, a, t_unit, v_unit)
     for k, name in enumerate(names):
         S = Y[NY * (k + 1) : NY * (k + 2)]
         d = {"t_stop": S[4] * t_unit, "x": S[5] * a, "y": S[6] * a, "phi": S[7]}
@@ -383,8 +454,7 @@ def compute(
         if name in kinked or name in jumps:
             d["beta_stop"] = math.nan
         stop[name] = {q: float(d[q]) for q in STOP_OUTPUTS}
-        path[name] = _fixed_time(rows, accel, rec[:, NY * (k + 1) : NY * (k + 2)], k0, dk[k],
-                                 a, t_unit, v_unit)  # fmt: skip
+        path[name] = dict(zip(PATH_OUTPUTS, fixed[:, :, k], strict=True))
     return Sensitivities(
         parameters=names, t=rows[:, 4] * t_unit, path=path, stop=stop, n_steps=int(nsteps)
     )
@@ -417,12 +487,12 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi, term) -> NDArra
     on its fixed-point condition T(u*, φ*; θ) = 0 on the sphere (MODEL §5, §15):
     J_T ∂u* = −(∂T/∂φ ∂φ*/∂θ + ∂T/∂θ) in the tangent plane at u*, with ∂φ*/∂θ = ``s_phi``
     from the run. J_T, ∂T/∂φ and ∂T/∂θ are the rows 0–2 of the run's ``term`` (the exact
-    derivatives of :func:`slidespin.motion._sensitivity_core.stop_terms`); where the kernel
+    derivatives of :func:`slidespin.motion._sensitivity_rhs.stop_terms`); where the kernel
     has none there (a blade; a derivative off its error target), J_T and ∂T/∂φ are central
     differences of the exact wrench
     (steps ``REL_STEP``). (Integrating S_u to its limit instead converges only at the fixed
     point's eigenvalue, slowly near a Table 2 boundary.)"""
-    u = u / np.linalg.norm(u)
+    u = u / math.sqrt(u @ u)
     eye = np.eye(3)
     if np.all(np.isfinite(term[:NY])):
         jac = term[:3, :3]
@@ -439,8 +509,10 @@ def _terminal_sensitivity(pars, fe, fc, geos, hs, u, phi, s_phi, term) -> NDArra
     # an orthonormal basis (B) of the tangent plane at u
     e = eye[int(np.argmin(np.abs(u)))]
     b1 = e - (e @ u) * u
-    b1 /= np.linalg.norm(b1)
-    B = np.column_stack([b1, np.cross(u, b1)])
+    b1 /= math.sqrt(b1 @ b1)
+    b2 = np.array([u[1] * b1[2] - u[2] * b1[1], u[2] * b1[0] - u[0] * b1[2],
+                   u[0] * b1[1] - u[1] * b1[0]])  # fmt: skip
+    B = np.column_stack([b1, b2])
     jt = B.T @ jac @ B
     rhs = dphi[:, None] * np.asarray(s_phi)[None, :] + term[NY : NY + hs.size, :3].T
     return (B @ _solve_transverse(jt, -(B.T @ rhs))).T
@@ -481,6 +553,17 @@ def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
     β* the same all along it), the part of b along the zero eigenvalue's eigenvector only
     moves u* along that circle and is dropped: x is the response across it, which is what
     changes β*."""
+    tr, det = jt[0, 0] + jt[1, 1], jt[0, 0] * jt[1, 1] - jt[0, 1] * jt[1, 0]
+    disc = 0.25 * tr * tr - det
+    # |λ| of the 2 × 2 in closed form (a complex pair: |λ|² = det); well conditioned: Cramer
+    if disc < 0.0:
+        small = big = math.sqrt(det)
+    else:
+        root = math.sqrt(disc)
+        small, big = sorted((abs(0.5 * tr - root), abs(0.5 * tr + root)))
+    if small > 1e-7 * big and det != 0.0:
+        m = np.array([[jt[1, 1], -jt[0, 1]], [-jt[1, 0], jt[0, 0]]]) / det
+        return m @ b
     lam, vec = np.linalg.eig(jt)
     big = float(np.max(np.abs(lam)))
     try:
@@ -501,32 +584,10 @@ def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) 
         return math.nan
     if ending != "mixed":
         return 0.0
-    u = u / np.linalg.norm(u)
-    u1, u2, u3 = (float(x) for x in u)
+    u1, u2, u3 = float(u[0]), float(u[1]), float(u[2])
+    nrm = math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
+    u1, u2, u3 = u1 / nrm, u2 / nrm, u3 / nrm
     u12 = math.hypot(u1, u2)
     du12 = (u1 * su[0] + u2 * su[1]) / u12
     du3 = float(su[2])
     return dk * u12 / u3 + k * (du12 * u3 - u12 * du3) / (u3 * u3)
-
-
-def _fixed_time(rows, accel, S, k, dk, a, t_unit, v_unit) -> dict[str, NDArray[np.float64]]:
-    """The path's derivatives at fixed t from those at fixed τ: ∂q/∂θ|t = ∂q/∂θ|τ − q̇ ∂t/∂θ|τ
-    for q = x, y, φ, vx, vy, ω (SI; the stop row's velocities and their rates are 0)."""
-    u1, u2, u3, lns = rows[:, 0], rows[:, 1], rows[:, 2], rows[:, 3]
-    nrm = np.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
-    u1, u2, u3 = u1 / nrm, u2 / nrm, u3 / nrm
-    s = np.exp(lns)
-    st = S[:, 4]
-    ax, ay, am = accel[:, 0], accel[:, 1], accel[:, 2]
-    out = {
-        "x": (S[:, 5] - s * u1 * st) * a,
-        "y": (S[:, 6] - s * u2 * st) * a,
-        "phi": S[:, 7] - s * u3 / k * st,
-        # v = s u: ∂v/∂θ|τ = s (u S_ln s + S_u) (S_u's radial part is round-off)
-        "vx": (s * (u1 * S[:, 3] + S[:, 0]) - ax * st) * v_unit,
-        "vy": (s * (u2 * S[:, 3] + S[:, 1]) - ay * st) * v_unit,
-        "omega": ((s * (u3 * S[:, 3] + S[:, 2]) - am * st) / k - s * u3 * dk / k**2) / t_unit,
-    }
-    for q in ("vx", "vy", "omega"):  # the stop's velocities are 0 whatever θ
-        out[q][-1] = 0.0
-    return out

@@ -40,7 +40,7 @@ from slidespin.motion._law_motion import simulate_law
 from slidespin.motion._stops import ENDING_TOL
 from slidespin.motion.loads import Load
 from slidespin.motion.outcomes import ENDINGS, STATUSES
-from slidespin.motion.sensitivity import check_parameters, check_setup
+from slidespin.motion.sensitivity import COLLOCATE_RTOL, check_parameters, check_setup
 from slidespin.motion.sensitivity import compute as compute_sensitivities
 from slidespin.motion.springs import Spring
 from slidespin.motion.state import State
@@ -441,14 +441,17 @@ def simulate(
             0.0,
         ]
     )
+    # the sensitivities' collocation needs the steps' stages (their dense output)
+    stages = sensitivities is not None and rtol <= COLLOCATE_RTOL
     yend, status, nsteps, nrhs, fails, rate, rec, term = _integrator.integrate_on(
-        par, fe, fc, geo, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True
-    )
+        par, fe, fc, geo, y0, rtol, rtol, rtol, min(rtol, 1e-8), int(max_steps), h_max, True,
+        stages,
+    )  # fmt: skip
     if fails:  # pragma: no cover - guard, not reached in tests
         raise RuntimeError(
             f"simulate: {fails} wrench evaluations missed their error target; please report"
         )
-    rows = np.vstack([rec[:, 1:], yend[None, :]])
+    rows = np.vstack([rec[:, 1 : 1 + yend.size], yend[None, :]])
     u1, u2, u3 = rows[:, 0], rows[:, 1], rows[:, 2]
     s = np.exp(rows[:, 3])  # 0 at the stop
     fx, fy, mm = _integrator.wrench_rows(par, fe, fc, geo, rows[:, 7], u1, u2, u3 / k)
@@ -488,7 +491,7 @@ def simulate(
         accel = np.column_stack([fx, fy, mm / k])
         sens = compute_sensitivities(
             body, friction, initial_state, sensitivities, g, rtol, ending, float(term[2]),
-            rec[:, 0], rows, accel,
+            rec[:, 0], rows, accel, rec if stages else None,
         )  # fmt: skip
     return Trajectory(
         t=rows[:, 4] * t_unit,
