@@ -168,18 +168,9 @@ def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
         # second time, specialised, instead of reusing the version simulate() compiled
         if fps is None:
             yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
-                pars[i],
-                None,
-                y0,
-                rtol,
-                atol,
-                utol,
-                s_drop,
-                max_steps,
-                np.inf,
+                pars[i], None, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record,
                 no_record,
-                no_record,
-            )
+            )  # fmt: skip
         else:
             edges, circles, eidx, cidx, geos = fps
             # contiguous copies: the same array types as simulate() passes (one compilation)
@@ -189,18 +180,9 @@ def _integrate_many(pars, fps, init, rtol, atol, utol, s_drop, max_steps):
                 np.ascontiguousarray(geos[i]),
             )
             yend, st, ns, nr, nf, rate, rec, term = integrate_fp(
-                pars[i],
-                fp,
-                y0,
-                rtol,
-                atol,
-                utol,
-                s_drop,
-                max_steps,
-                np.inf,
+                pars[i], fp, y0, rtol, atol, utol, s_drop, max_steps, np.inf, no_record,
                 no_record,
-                no_record,
-            )
+            )  # fmt: skip
         for c in range(NY):
             out[i, c] = yend[c]
         for c in range(4):

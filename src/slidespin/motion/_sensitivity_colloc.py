@@ -84,6 +84,9 @@ GRADE = 0.25
 CROSS_SAMPLES = 4
 #: most sub-intervals of one step
 MAX_PIECES = 64
+#: the stage solve searches a column for its pivot only where the diagonal entry is below
+#: this (I − h a ⊗ J is near I: |h a J| ≲ 0.5 on the run's steps, so no growth without it)
+PIVOT_SEARCH = 0.5
 #: the collocation stops once s has dropped by e^this (1e-8) and the stop's sensitivities
 #: have converged (the later records keep them)
 CONVERGED_DROP = 18.4
@@ -263,10 +266,11 @@ def _lu_solve(M, R, p):
     for c in range(n):
         piv = c
         big = abs(M[c, c])
-        for r in range(c + 1, n):
-            if abs(M[r, c]) > big:
-                big = abs(M[r, c])
-                piv = r
+        if big < PIVOT_SEARCH:  # (M is near I on the run's steps: the search is rarely run)
+            for r in range(c + 1, n):
+                if abs(M[r, c]) > big:
+                    big = abs(M[r, c])
+                    piv = r
         if big == 0.0:
             return False
         if piv != c:
@@ -405,27 +409,37 @@ def _dense(par, kc, W, fp, y0, h, stg, Kx, F, yt):
     for j in range(_NS + 1):
         for i in range(NY):
             Kx[j, i] = stg[j * NY + i]
-    for e in range(3):
+    for e in range(3):  # (the zero columns 1–4 of A_EXTRA, B and D skipped)
         s = _NS + 1 + e
         for i in range(NY):
-            acc = 0.0
-            for j in range(s):
-                acc += _AX[e, j] * Kx[j, i]
-            yt[i] = y0[i] + h * acc
+            yt[i] = 0.0
+        for j in range(s):
+            c = _AX[e, j]
+            if c != 0.0:
+                for i in range(NY):
+                    yt[i] += c * Kx[j, i]
+        for i in range(NY):
+            yt[i] = y0[i] + h * yt[i]
         fails += _rhs(par, kc, W, fp, yt, Kx[s])
+    for r in range(N_DENSE):
+        for i in range(NY):
+            F[r, i] = 0.0
+    for j in range(16):
+        if j < _NS and _B[j] != 0.0:
+            for i in range(NY):
+                F[0, i] += _B[j] * Kx[j, i]
+        for r in range(4):
+            c = _D[r, j]
+            if c != 0.0:
+                for i in range(NY):
+                    F[3 + r, i] += c * Kx[j, i]
     for i in range(NY):
-        dy = 0.0
-        for j in range(_NS):
-            dy += _B[j] * Kx[j, i]
-        dy *= h
+        dy = h * F[0, i]
         F[0, i] = dy
         F[1, i] = h * Kx[0, i] - dy
         F[2, i] = 2.0 * dy - h * (Kx[_NS, i] + Kx[0, i])
         for r in range(4):
-            acc = 0.0
-            for j in range(16):
-                acc += _D[r, j] * Kx[j, i]
-            F[3 + r, i] = h * acc
+            F[3 + r, i] *= h
     return fails
 
 

@@ -146,22 +146,9 @@ def _converged_measure(Y, F, npar, rate):
 
 @jit(error_model="numpy")
 def integrate_sensitivities(
-    pars,
-    fp,
-    geos,
-    hs,
-    Y0,
-    rtol,
-    atol,
-    ln_drop,
-    conv_tol,
-    collocate,
-    max_steps,
-    taus,
-    rows,
-    stages,
-    yterm,
-):
+    pars, fp, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, collocate, max_steps, taus, rows,
+    stages, yterm,
+):  # fmt: skip
     """Integrate the joint system from ``Y0`` until the stop's sensitivities converge.
 
     Parameters
@@ -486,23 +473,9 @@ def terminal_direction_sensitivity(u, term, s_phi):
 
 
 def run(
-    pars,
-    fe,
-    fc,
-    geos,
-    hs,
-    Y0,
-    rtol,
-    atol,
-    ln_drop,
-    conv_tol,
-    collocate,
-    max_steps,
-    taus,
-    rows,
-    stages,
-    yterm,
-):
+    pars, fe, fc, geos, hs, Y0, rtol, atol, ln_drop, conv_tol, collocate, max_steps, taus, rows,
+    stages, yterm,
+):  # fmt: skip
     """:func:`integrate_sensitivities` for the rows ``pars`` (and ``geos``) and the footprint
     arrays ``fe``, ``fc`` (empty for an ellipse): run by the ahead-of-time compiled core when
     the install built one from these sources (:mod:`slidespin._aot`), else by the JIT."""

@@ -21,8 +21,9 @@ kernels give them (an ellipse under every law: analytic; a footprint: its isotro
 differenced in the ICR) and a central difference of the whole right-hand side elsewhere (a
 footprint's pressure centre); it is solved by collocation on the plain run's own steps, or
 integrated with the motion (see :mod:`slidespin.motion._sensitivity_core`). Cost
-(``benchmarks/sensitivities_bench.py``): about 3x a plain run for 6 parameters, 3.6-4.4x for
-9 (7-8x before the collocation, 18-55x before the kernels' derivatives; docs/sensitivities.md).
+(``benchmarks/sensitivities_bench.py``): 2.8-3.1x a plain run for 6 parameters, 3.4-5.1x for
+9 (6.9-7.6x and 9.7-14.3x integrated with the motion, 18-55x before the kernels'
+derivatives; docs/sensitivities.md).
 """
 
 from __future__ import annotations
@@ -302,6 +303,10 @@ def _rows_moved(
         par[_engine.P_T10] += d * e01
         par[_engine.P_T11] += d * e11
         return par, base[1], base[2]
+    if name == "moment_of_inertia" and _inertia_in_range(body, value):
+        # k = √(I/m) in units of a, without a new (validated) Body
+        par[_engine.P_K] = math.sqrt(value / body.mass) / a
+        return par, base[1], _start(par, a, g, st.vx, st.vy, st.omega, st.x, st.y, st.phi)
     b, fr, st = _perturbed(body, friction, state, name, value)
     if name == "moment_of_inertia":
         par[_engine.P_K] = b.radius_of_gyration / a
@@ -310,6 +315,13 @@ def _rows_moved(
     par[_engine.P_T00], par[_engine.P_T01] = t[0]
     par[_engine.P_T10], par[_engine.P_T11] = t[1]
     return par, base[1], base[2]
+
+
+def _inertia_in_range(body: Body, value: float) -> bool:
+    """Whether a moment of inertia ``value`` is one Body accepts for ``body`` (I/(m a²) in
+    its range; else the slow path makes the Body, and its error)."""
+    lo, hi = v.INERTIA_RATIO
+    return value > 0.0 and lo <= value / body.mass / body.length_unit**2 <= hi
 
 
 def _entry_in_range(name: str, value: float) -> bool:
