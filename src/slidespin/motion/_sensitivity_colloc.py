@@ -478,7 +478,7 @@ def solve_on_records(
     nr = Y.size
     gp = np.empty(NY)
     gm = np.empty(NY)
-    Gs = np.empty((NL, NY))
+    G = np.empty(NY)  # (G at a point: the collocation needs only J and B)
     Js = np.zeros((NL, NY, NCORE))
     Bs = np.empty((NL, npar, NY))
     Gr = np.empty(NY)
@@ -500,7 +500,7 @@ def solve_on_records(
     for i in range(nr):
         rec[0, i] = Y[i]
     fails, ok = _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, rows[0], gp, gm,
-                      Gs[0], Js[0], Bs[0])  # fmt: skip
+                      G, Js[0], Bs[0])  # fmt: skip
     if not ok:
         return fails, False
     last = NL - 1
@@ -520,7 +520,6 @@ def solve_on_records(
             for m in range(1, NL):
                 if m == last and pc == npc - 1:  # the step's end: the record
                     for i in range(NY):
-                        Gs[last, i] = Gr[i]
                         for q in range(NCORE):
                             Js[last, i, q] = Jr[i, q]
                         for k in range(npar):
@@ -528,14 +527,13 @@ def solve_on_records(
                     continue
                 dense_at(f0 + (f1 - f0) * LOBATTO_C[m], y0, F, yi)
                 f, ok = _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, yi, gp, gm,
-                              Gs[m], Js[m], Bs[m])  # fmt: skip
+                              G, Js[m], Bs[m])  # fmt: skip
                 fails += f
                 if not ok:
                     return fails, False
             if not collocation_step(S, K, Z, Js, Bs, H * (f1 - f0), M, R):
                 return fails, False
             for i in range(NY):  # the piece's end is the next piece's start
-                Gs[0, i] = Gs[last, i]
                 for q in range(NCORE):
                     Js[0, i, q] = Js[last, i, q]
                 for k in range(npar):

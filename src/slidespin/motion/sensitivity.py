@@ -565,17 +565,6 @@ def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
     β* the same all along it), the part of b along the zero eigenvalue's eigenvector only
     moves u* along that circle and is dropped: x is the response across it, which is what
     changes β*."""
-    tr, det = jt[0, 0] + jt[1, 1], jt[0, 0] * jt[1, 1] - jt[0, 1] * jt[1, 0]
-    disc = 0.25 * tr * tr - det
-    # |λ| of the 2 × 2 in closed form (a complex pair: |λ|² = det); well conditioned: Cramer
-    if disc < 0.0:
-        small = big = math.sqrt(det)
-    else:
-        root = math.sqrt(disc)
-        small, big = sorted((abs(0.5 * tr - root), abs(0.5 * tr + root)))
-    if small > 1e-7 * big and det != 0.0:
-        m = np.array([[jt[1, 1], -jt[0, 1]], [-jt[1, 0], jt[0, 0]]]) / det
-        return m @ b
     lam, vec = np.linalg.eig(jt)
     big = float(np.max(np.abs(lam)))
     try:
