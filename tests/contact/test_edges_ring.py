@@ -22,7 +22,7 @@ import pytest
 from scipy.integrate import quad
 
 import slidespin as ss
-from slidespin.contact._kernel_footprint import THIN_RING, _dd_ke
+from slidespin.contact._kernel_disk import THIN_RING, _dd_ke
 from slidespin.contact.shapes import Annulus
 from slidespin.contact.wrench import footprint_wrench
 

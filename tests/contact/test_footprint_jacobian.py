@@ -146,3 +146,94 @@ def test_translation_is_left_to_differences():
     body, fe, fc, geo, ell, t, frame, *_ = _setup("rectangle-inside")
     ok, out = _kernel(fe, fc, geo, t, frame, 0.3, np.array([1.0, 0.5, 0.0]))
     assert not ok and np.isnan(out[9:]).all() and np.isfinite(out[:3]).all()
+
+
+#: (footprint, pressure, tensor, ICR as a point of the body frame [m], ω, φ): the ICR where
+#: the exact derivative's special cases are (a circle's centre and rim, an edge's line, near a
+#: vertex), and a thin ring (differenced in c). The wrench is only C¹ across a rim or an edge
+#: (its second derivative has a logarithmic singularity there): the reference's steps are
+#: short (1e-4 of the twist), for its differences to converge
+AT_POINTS = {
+    "disk-centre": (ss.Disk(0.05), ss.UniformPressure(), TENSOR, (0.0, 0.0), 2.0, 0.4),
+    "ring-centre-linear": (
+        Annulus(0.06, 0.1),
+        ss.LinearPressure(0.004, -0.006),
+        BODY_TENSOR,
+        (0.0, 0.0),
+        -1.2,
+        0.7,
+    ),
+    "ring-on-rim": (Annulus(0.06, 0.1), ss.UniformPressure(), TENSOR, (0.0, 0.1), 1.5, 0.0),
+    "ring-on-hole-rim-linear": (
+        Annulus(0.06, 0.1),
+        ss.LinearPressure(-0.005, 0.003),
+        TENSOR,
+        (0.06 / math.sqrt(2.0), 0.06 / math.sqrt(2.0)),
+        0.8,
+        -0.2,
+    ),
+    "rectangle-edge-line": (
+        Rectangle(0.3, 0.1),
+        ss.LinearPressure(0.01, 0.004),
+        TENSOR,
+        (0.15, 0.02),
+        -2.0,
+        0.3,
+    ),
+    # (at the vertex itself the second derivative's singularity is odd: the central
+    # differences converge like h log h there, too slowly to be a reference)
+    "L-near-reflex-vertex": (
+        Polygon(L_SHAPE),
+        ss.UniformPressure(),
+        BODY_TENSOR,
+        (0.104, 0.097),
+        1.0,
+        0.9,
+    ),
+    "thin-ring": (Annulus(0.0995, 0.1), ss.UniformPressure(), TENSOR, (0.03, -0.12), 1.0, 0.5),
+}
+
+
+@pytest.mark.parametrize("case", sorted(AT_POINTS))
+def test_jacobian_where_the_icr_meets_the_footprints_features(case):
+    fp, pressure, fr, point, omega, phi = AT_POINTS[case]
+    body = ss.Body(fp, pressure, mass=1.0)
+    par, fe, fc, geo = body.engine_params(fr.kinetic, 1e-14)
+    ell = body.length_unit
+    t = tuple(float(par[i]) for i in (_engine.P_T00, _engine.P_T01, _engine.P_T10, _engine.P_T11))
+    frame = "body" if par[_engine.P_BODY] else "plane"
+    ref_law = (
+        ("linear", *pressure.centroid) if isinstance(pressure, ss.LinearPressure) else ("uniform",)
+    )
+    d = (np.array(point) - np.array(body.mass_centre)) / ell
+    vb = -omega * np.array([-d[1], d[0]])  # c − r_G = ẑ×v/ω
+    c, s = math.cos(phi), math.sin(phi)
+    tw = np.array([c * vb[0] - s * vb[1], s * vb[0] + c * vb[1], omega])
+    ok, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    assert ok
+    scale = abs(omega)
+    ref = np.empty((3, 3))
+    for k in range(3):
+
+        def f(x, k=k):
+            w = tw.copy()
+            w[k] = x
+            return _ref(fp, ref_law, t, frame, ell, phi, w)
+
+        ref[:, k] = richardson(f, tw[k], 1e-4 * scale)
+    got = out[9:18].reshape(3, 3)
+    assert np.abs(got - ref).max() <= 1e-6 * np.abs(ref).max(), (got, ref)
+
+
+@pytest.mark.parametrize("point", [(1.0, 0.3), (1.0, 0.0), (0.5, 0.0), (0.0, 1.0)])
+def test_edge_through_the_icr_is_the_limit_of_its_neighbours(point):
+    # an edge whose line passes exactly through c has no area but its boundary term (the
+    # branch d = 0 of edge_lines): ∂G/∂c there is the limit from either side (G is C¹)
+    edges = np.array([[0, 0, 1, 0], [1, 0, 1, 1], [1, 1, 0, 1], [0, 1, 0, 0]], dtype=float)
+    circles = np.zeros((0, 4))
+    dg = np.empty(18)
+    KFJ.fan_tensors_jac(edges, circles, point[0], point[1], dg)
+    at = dg.copy()
+    for off in ((1e-9, 3e-10), (-1e-9, 2e-10), (4e-10, -1e-9), (-3e-10, -1e-9)):
+        KFJ.fan_tensors_jac(edges, circles, point[0] + off[0], point[1] + off[1], dg)
+        assert np.abs(dg - at).max() <= 1e-7 * np.abs(at).max()

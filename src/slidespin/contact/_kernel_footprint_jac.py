@@ -9,15 +9,26 @@ so the wrench depends on the twist (v, ω) only through c = r_G + ẑ×v/ω (and
 
     ∂W/∂(vx, vy, ω) = ∂W/∂c · ∂c/∂(vx, vy, ω),   ∂c/∂v = ẑ×/ω,   ∂c/∂ω = −(c − r_G)/ω.
 
-∂V/∂c and ∂N/∂c are central differences of the exact V and N (the closed-form fan, or the
-Gauss rules of a far ICR) at the step h = ``REL_STEP`` (extent + |c − o|): V and N are
-smooth in c away from the footprint's rim (O(h²) = 1e-10 relative, round-off 1e-16/h), and
-C¹ across it (their second derivative has a logarithmic singularity there: within ~h of a
-rim the difference is good to O(h log h)). This departs from the elliptic kernel's
-analytic derivative (:mod:`slidespin.contact._kernel_ellipse_jac`): the fan's lower-order
-tensors ∫ x^{⊗k}/|x|³ dS are not written yet. It costs five evaluations of V and N (one
-wrench's worth each) for every parameter at once, instead of two wrench evaluations per
-parameter. The isotropic parts Q = sign(ω) ẑ×V and N' (M = −Σ 𝔽_ij N'_ij) come exact.
+∂V/∂c and ∂N/∂c are exact (:func:`fan_tensors_jac`). With x = r − c and the divergence
+theorem (the integrand's gradient ~ |x|^(k−2) is integrable for k ≥ 1),
+
+    ∂G_k/∂c_j = −∫_Ω ∂_j (x^{⊗k}/|x|) dS = −∮ x^{⊗k}/|x| n̂_j dl,
+
+so an edge adds −n̂_j L_k, L_k = ∫ (d n̂ + s t̂)^{⊗k}/√(d² + s²) ds, the line integrals the fan
+already forms (its triangle is d/(k+1) L_k; an edge through c, d = 0, has no area but still
+its L_k). A disk's tensors are scalars of its distance D = |o − c| in the frame (u, v) of
+u = (o − c)/D (:func:`slidespin.contact._kernel_footprint.round_terms`); moving c by
+a u + b v moves D by −a and turns the frame by −b/D, and the scalars' D-derivatives follow
+from dI_n/dD = −∫ D sin^{2n+2}ψ/h dψ: inside, −(2D/R) T_{n+1}(m); outside,
+−2 k^{2n+2} T_{n+1}(m), T_n of the module notes there. T_{n+1} diverges at the rim (m → 1),
+but the tensors need only the differences T_{n+1} − T_{n+2} = V_{n+1} (inside) and
+T_{n+1} − m T_{n+2} = U_{n+1} (outside), finite there (:func:`round_terms_jac`); the frame's
+turn (÷ D) is written with D factored out, G₂'s through (2U₁ − U₀)/m by its own series,
+so that c at the centre needs no special case. The V and N of a far ICR (Gauss rules) and a
+thin ring (double-double arithmetic) are differenced in c instead (:func:`_dw_dc`): central
+differences of the exact V and N at the step h = ``REL_STEP`` (extent + |c − o|), O(h²) =
+1e-10 relative, five evaluations of V and N. The isotropic parts Q = sign(ω) ẑ×V and N'
+(M = −Σ 𝔽_ij N'_ij) come exact.
 Not available (the caller differences the whole right-hand side): a blade (one edge) and
 a translation (ω = 0 or the ICR beyond ``FAR_ICR`` extents).
 """
@@ -26,17 +37,26 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from slidespin._jit import jit
 from slidespin.contact._jacobian import JAC_SIZE, unavailable, world_from_body
+from slidespin.contact._kernel_disk import round_terms_jac, thin_hole
 from slidespin.contact._kernel_ellipse import tensor_in_body
 from slidespin.contact._kernel_footprint import (
     FAR_ICR,
+    FAR_RATIO,
     GEO_EXT,
     GEO_OX,
     GEO_OY,
+    GEO_P0,
+    GEO_P1,
+    GEO_P2,
     GEO_XG,
     GEO_YG,
+    edge_lines,
     iso_parts,
+    sym3,
     wrench_body,
 )
 
@@ -44,6 +64,123 @@ __all__ = ["REL_STEP", "jacobian_world"]
 
 #: relative step of the differences in c (of the extent plus the ICR's distance)
 REL_STEP = 1e-5
+
+
+@jit(error_model="numpy")
+def fan_tensors_jac(edges, circles, cx, cy, dg):
+    """:func:`slidespin.contact._kernel_footprint.fan_tensors` (returned) and its derivatives
+    ∂G/∂cx, ∂G/∂cy in the same order into ``dg[0:9]``, ``dg[9:18]`` (module notes; not for a
+    thin ring: :func:`slidespin.contact._kernel_footprint.thin_hole`)."""
+    g = np.zeros(9)
+    for i in range(18):
+        dg[i] = 0.0
+    rq = -1.0
+    for i in range(edges.shape[0]):
+        px = edges[i, 0] - cx
+        py = edges[i, 1] - cy
+        qx = edges[i, 2] - cx
+        qy = edges[i, 3] - cy
+        if rq >= 0.0 and edges[i, 0] == edges[i - 1, 2] and edges[i, 1] == edges[i - 1, 3]:
+            rp = rq
+        else:
+            rp = math.sqrt(px * px + py * py)
+        rq = math.sqrt(qx * qx + qy * qy)
+        ln, tx, ty, d, j0, j1, j2, j3 = edge_lines(px, py, qx, qy, rp, rq)
+        if ln == 0.0:
+            continue
+        nx = ty
+        ny = -tx
+        # L_k = ∫ x^{⊗k}/|x| dl along the edge: the triangle's G_k is d/(k+1) L_k
+        l0 = d * d * j0
+        l1 = d * j1
+        a1x = d * j0 * nx + j1 * tx
+        a1y = d * j0 * ny + j1 * ty
+        a2xx = l0 * nx * nx + 2.0 * l1 * nx * tx + j2 * tx * tx
+        a2xy = l0 * nx * ny + l1 * (nx * ty + tx * ny) + j2 * tx * ty
+        a2yy = l0 * ny * ny + 2.0 * l1 * ny * ty + j2 * ty * ty
+        a, b, c, e = sym3(nx, ny, tx, ty, d * l0, d * l1, d * j2, j3)
+        lk = (a1x, a1y, a2xx, a2xy, a2yy, a, b, c, e)
+        for q in range(9):
+            w = d / (2.0 if q < 2 else 3.0 if q < 5 else 4.0)
+            g[q] += w * lk[q]
+            dg[q] -= nx * lk[q]
+            dg[9 + q] -= ny * lk[q]
+    for i in range(circles.shape[0]):
+        ux = circles[i, 0] - cx
+        uy = circles[i, 1] - cy
+        sgn = circles[i, 3]
+        dd = math.sqrt(ux * ux + uy * uy)
+        if dd > 0.0:
+            ux /= dd
+            uy /= dd
+        else:
+            ux = 1.0
+            uy = 0.0
+        vx = -uy
+        vy = ux
+        (g1, g2u, g2v, g3u, g3v, d1, d2u, d2v, d3u, d3v, t1, t2, t3a, t3b) = round_terms_jac(
+            dd, circles[i, 2]
+        )
+        g[0] += sgn * g1 * ux
+        g[1] += sgn * g1 * uy
+        g[2] += sgn * (g2u * ux * ux + g2v * vx * vx)
+        g[3] += sgn * (g2u * ux * uy + g2v * vx * vy)
+        g[4] += sgn * (g2u * uy * uy + g2v * vy * vy)
+        a, b, c, e = sym3(ux, uy, vx, vy, g3u, 0.0, g3v, 0.0)
+        g[5] += sgn * a
+        g[6] += sgn * b
+        g[7] += sgn * c
+        g[8] += sgn * e
+        # along e_j = a u + b v: D moves by −a, the frame (u, v) turns by −b/D
+        for j in range(2):
+            al = -sgn * (ux if j == 0 else uy)
+            be = sgn * (vx if j == 0 else vy)
+            o = 9 * j
+            dg[o] += al * d1 * ux - be * t1 * vx
+            dg[o + 1] += al * d1 * uy - be * t1 * vy
+            dg[o + 2] += al * (d2u * ux * ux + d2v * vx * vx) + 2.0 * be * t2 * ux * vx
+            dg[o + 3] += al * (d2u * ux * uy + d2v * vx * vy) + be * t2 * (ux * vy + vx * uy)
+            dg[o + 4] += al * (d2u * uy * uy + d2v * vy * vy) + 2.0 * be * t2 * uy * vy
+            a, b, c, e = sym3(ux, uy, vx, vy, al * d3u, be * t3a, al * d3v, be * t3b)
+            dg[o + 5] += a
+            dg[o + 6] += b
+            dg[o + 7] += c
+            dg[o + 8] += e
+    return g
+
+
+@jit(error_model="numpy")
+def iso_parts_jac(edges, circles, geo, cx, cy, dv):
+    """:func:`slidespin.contact._kernel_footprint.iso_parts` (V, N; returned) about an ICR c
+    near the footprint (the exact fan) and their derivatives in c into ``dv``: ∂(V, N)/∂cx
+    at ``dv[0:6]``, ∂/∂cy at ``dv[6:12]`` (the order of V, N)."""
+    dg = np.empty(18)
+    g = fan_tensors_jac(edges, circles, cx, cy, dg)
+    p0, p1, p2 = geo[GEO_P0], geo[GEO_P1], geo[GEO_P2]
+    al = p0 + p1 * cx + p2 * cy
+    vx_ = al * g[0] + g[2] * p1 + g[3] * p2
+    vy_ = al * g[1] + g[3] * p1 + g[4] * p2
+    sxx = al * g[2] + g[5] * p1 + g[6] * p2
+    sxy = al * g[3] + g[6] * p1 + g[7] * p2
+    syy = al * g[4] + g[7] * p1 + g[8] * p2
+    ax = cx - geo[GEO_XG]
+    ay = cy - geo[GEO_YG]
+    for j in range(2):
+        o = 9 * j
+        pj = p1 if j == 0 else p2
+        dvx = pj * g[0] + al * dg[o] + dg[o + 2] * p1 + dg[o + 3] * p2
+        dvy = pj * g[1] + al * dg[o + 1] + dg[o + 3] * p1 + dg[o + 4] * p2
+        dsxx = pj * g[2] + al * dg[o + 2] + dg[o + 5] * p1 + dg[o + 6] * p2
+        dsxy = pj * g[3] + al * dg[o + 3] + dg[o + 6] * p1 + dg[o + 7] * p2
+        dsyy = pj * g[4] + al * dg[o + 4] + dg[o + 7] * p1 + dg[o + 8] * p2
+        q = 6 * j
+        dv[q] = dvx
+        dv[q + 1] = dvy
+        dv[q + 2] = dsxx + (vx_ if j == 0 else 0.0) + ax * dvx
+        dv[q + 3] = dsxy + (vy_ if j == 0 else 0.0) + ax * dvy
+        dv[q + 4] = dsxy + (vx_ if j == 1 else 0.0) + ay * dvx
+        dv[q + 5] = dsyy + (vy_ if j == 1 else 0.0) + ay * dvy
+    return vx_, vy_, sxx + ax * vx_, sxy + ax * vy_, sxy + ay * vx_, syy + ay * vy_
 
 
 @jit(error_model="numpy")
@@ -85,7 +222,25 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     cx = xg - vy / omega
     cy = yg + vx / omega
     sg = 1.0 if omega > 0.0 else -1.0
-    q0, q1, n00, n01, n10, n11 = _primed(edges, circles, geo, cx, cy, sg)
+    dist = math.hypot(cx - geo[GEO_OX], cy - geo[GEO_OY])
+    thin = False
+    for i in range(circles.shape[0]):
+        thin = thin or thin_hole(circles, i)
+    if dist > FAR_RATIO * ext or thin:  # ∂W/∂c_d (d = x, y) from the differences of Q and N'
+        q0, q1, n00, n01, n10, n11 = _primed(edges, circles, geo, cx, cy, sg)
+        h = REL_STEP * (ext + dist)
+        x0, x1, x2 = _dw_dc(edges, circles, geo, cx, cy, h, 0.0, sg, b00, b01, b10, b11)
+        y0, y1, y2 = _dw_dc(edges, circles, geo, cx, cy, 0.0, h, sg, b00, b01, b10, b11)
+    else:  # exact: Q = sign(ω) ẑ×V, N' = sign(ω) (N_yy, −N_yx, −N_xy, N_xx)
+        dv = np.empty(12)
+        v0, v1, nxx, nxy, nyx, nyy = iso_parts_jac(edges, circles, geo, cx, cy, dv)
+        q0, q1, n00, n01, n10, n11 = -sg * v1, sg * v0, sg * nyy, -sg * nyx, -sg * nxy, sg * nxx
+        x0 = -sg * (-b00 * dv[1] + b01 * dv[0])
+        x1 = -sg * (-b10 * dv[1] + b11 * dv[0])
+        x2 = -sg * (b00 * dv[5] - b01 * dv[4] - b10 * dv[3] + b11 * dv[2])
+        y0 = -sg * (-b00 * dv[7] + b01 * dv[6])
+        y1 = -sg * (-b10 * dv[7] + b11 * dv[6])
+        y2 = -sg * (b00 * dv[11] - b01 * dv[10] - b10 * dv[9] + b11 * dv[8])
     out[0] = -(b00 * q0 + b01 * q1)  # F = −𝔽Q, M = −Σ 𝔽_ij N'_ij (wrench_body's sums)
     out[1] = -(b10 * q0 + b11 * q1)
     out[2] = -(b00 * n00 + b01 * n01 + b10 * n10 + b11 * n11)
@@ -95,10 +250,6 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     out[6] = n01
     out[7] = n10
     out[8] = n11
-    h = REL_STEP * (ext + math.hypot(cx - geo[GEO_OX], cy - geo[GEO_OY]))
-    # ∂W/∂c_d (d = x, y) from the differences of Q and N'
-    x0, x1, x2 = _dw_dc(edges, circles, geo, cx, cy, h, 0.0, sg, b00, b01, b10, b11)
-    y0, y1, y2 = _dw_dc(edges, circles, geo, cx, cy, 0.0, h, sg, b00, b01, b10, b11)
     # ∂c/∂(vx, vy, ω): columns (0, 1/ω), (−1/ω, 0), −(c − r_G)/ω
     iw = 1.0 / omega
     gx = -(cx - xg) * iw

@@ -8,8 +8,8 @@ at the stop (:func:`stop_terms`); the collocation (:mod:`slidespin.motion._sensi
 and the joint integration (:mod:`slidespin.motion._sensitivity_core`) use them.
 
 With the wrench's exact derivatives (:func:`slidespin.contact._engine.accelerations_jacobian`:
-analytic on an ellipse, :mod:`slidespin.contact._kernel_ellipse_jac`; differenced in the ICR
-on a footprint, :mod:`slidespin.contact._kernel_footprint_jac`) ∂G/∂y is assembled once per
+analytic on an ellipse, :mod:`slidespin.contact._kernel_ellipse_jac`; on a footprint,
+:mod:`slidespin.contact._kernel_footprint_jac`) ∂G/∂y is assembled once per
 evaluation (:func:`rhs_jacobian`) and serves every parameter; ∂G/∂θ_k is exact for the
 parameters that move only the tensor's entries, the radius of gyration, an ellipse's
 pressure centre, or the start (:func:`direct_parameters`, :func:`parameter_rhs`). For the
