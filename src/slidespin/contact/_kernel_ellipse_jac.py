@@ -28,9 +28,12 @@ A pure translation (ω = 0, or the ICR beyond ``FAR_ICR``) is closed form: δF =
 with P⊥ = I − v̂v̂ᵀ, and δM = −(δω/|v|) Σ_ab Σ_ab e_a × 𝔽P⊥ẑ×e_b with Σ = ∫ p (r − r_G)(r −
 r_G)ᵀ dS, the pressure's second moment about G. After the adaptive Gauss–Kronrod fallback
 (the ICR within ~1e-4 a of the rim) the derivative is summed on its final partition
-(:mod:`slidespin.contact._kernel_ellipse_adaptive`); where an estimate misses
-``DERIVATIVE_TOL`` (the derivative needs far less than the wrench's 1e-14) the derivative is
-reported unavailable (the caller differences).
+(:mod:`slidespin.contact._kernel_ellipse_adaptive`). Where an estimate misses
+``DERIVATIVE_TOL`` (the derivative needs far less than the wrench's 1e-14, but its integrands
+converge more slowly: with the ICR a few per cent inside the rim of an elongated ellipse, the
+rule accepted for the wrench at 1e-12 can leave the derivative at 1e-8) the rule runs again
+at targets 100 times tighter each (``RETRY_FACTOR``), down to 1e-16; if it still misses, the derivative
+is reported unavailable (the caller differences).
 
 Also returned, the wrench's isotropic parts Q and N (M = −Σ 𝔽_ij N_ij), which make its
 derivatives with respect to the tensor entries and the body angle exact (𝔽 enters linearly).
@@ -47,6 +50,7 @@ from slidespin._jit import jit
 from slidespin.contact._jacobian import JAC_SIZE, unavailable, world_from_body
 from slidespin.contact._kernel_ellipse import (
     FAR_ICR,
+    STATUS_OK,
     WORKSPACE_SHAPE,
     tensor_in_body,
     wrench_rule,
@@ -75,6 +79,11 @@ __all__ = [
 #: relative error target of the derivative's sums (of their largest entry); above it the
 #: derivative is reported unavailable
 DERIVATIVE_TOL = 1e-9
+#: where the accepted rule's derivative misses DERIVATIVE_TOL, the rule runs again at its
+#: target × RETRY_FACTOR, down to RETRY_TOL_MIN, at most RETRY_MAX times
+RETRY_FACTOR = 1e-2
+RETRY_TOL_MIN = 1e-16
+RETRY_MAX = 3
 
 
 #: shape of the derivative workspace: the wrench's rows, a row per derivative integrand over
@@ -151,6 +160,23 @@ def _rule_sums(W, n, cc, half):
 
 
 @jit(error_model="numpy")
+def _derivative_error(W, n, half, method, derr):
+    """The derivative's sums (in ``W``'s last column) and their relative error estimate
+    after :func:`slidespin.contact._kernel_ellipse.wrench_rule`: the adaptive fallback's
+    ``derr``, or the accepted rule's (:func:`_rule_sums`); NaN if no rule ran."""
+    if derr >= 0.0:  # the adaptive fallback's partition has summed them
+        return derr
+    if n == 0:
+        return math.nan
+    cc = (
+        method == METHOD_CLENSHAW_CURTIS
+        or method == METHOD_CLENSHAW_CURTIS_MAPPED
+        or method == METHOD_CLENSHAW_CURTIS_INSIDE
+    )
+    return _rule_sums(W, n, cc, half)
+
+
+@jit(error_model="numpy")
 def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
     """The wrench, its isotropic parts and its twist derivatives in the body frame.
 
@@ -158,13 +184,26 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
     ``b``; ``W`` a :func:`jac_workspace`). Writes ``out[:18]``: (Fx, Fy, M), Q (2), N (4)
     with F = −𝔽Q and M = −Σ 𝔽_ij N_ij, and ∂(Fx, Fy, M)/∂(vx, vy, ω) row-major. Returns
     (status, available): the wrench's status and whether the derivative is there (False if
-    no rule ran or its own error estimate misses ``DERIVATIVE_TOL``; ``out[9:]`` is then
-    NaN).
+    no rule ran or its own error estimate misses ``DERIVATIVE_TOL``, at ``tol`` and at the
+    tighter targets of the module notes; ``out[9:]`` is then NaN; after a retry the wrench
+    is the tighter rule's).
     """
     s22, xg, yg = K[1], K[3], K[4]
     fx, fy, m, status, _, _, n, half, method, derr = wrench_rule(
         law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, W
     )
+    err = _derivative_error(W, n, half, method, derr)
+    t = tol
+    for _ in range(RETRY_MAX):
+        if not (err > DERIVATIVE_TOL and t > RETRY_TOL_MIN and status == STATUS_OK):
+            break
+        # the derivative's integrands converge more slowly than the wrench's (an ICR near
+        # the rim): the rule again at a tighter target, its wrench kept for consistency
+        t = max(t * RETRY_FACTOR, RETRY_TOL_MIN)
+        fx, fy, m, status, _, _, n, half, method, derr = wrench_rule(
+            law, K, b00, b01, b10, b11, vx, vy, omega, t, W, W
+        )
+        err = _derivative_error(W, n, half, method, derr)
     out[0] = fx
     out[1] = fy
     out[2] = m
@@ -203,18 +242,9 @@ def jacobian_body(law, K, b00, b01, b10, b11, vx, vy, omega, tol, W, out):
                 acc += sab * (gy if a_ == 0 else -gx)  # e_a × g
         out[17] = -acc  # (P⊥ carries the 1/|v|)
         return status, True
-    if derr >= 0.0:  # the adaptive fallback's partition has summed them
-        err = derr
-    elif n == 0:
+    if derr < 0.0 and n == 0:
         unavailable(out, 9)
         return status, False
-    else:
-        cc = (
-            method == METHOD_CLENSHAW_CURTIS
-            or method == METHOD_CLENSHAW_CURTIS_MAPPED
-            or method == METHOD_CLENSHAW_CURTIS_INSIDE
-        )
-        err = _rule_sums(W, n, cc, half)
     sums = W[DROW:, W.shape[1] - 1]
     sg = 1.0 if omega > 0.0 else -1.0  # Q = sign(ω) ∫ t̂ K₁, N likewise
     for i in range(6):
