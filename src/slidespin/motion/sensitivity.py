@@ -31,6 +31,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import warnings
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -383,9 +384,10 @@ def compute(
     par0, fe, fc, geo0 = body.engine_params(friction.kinetic, WRENCH_TOL)
     y0 = rows[0]  # the plain run's start: the same arithmetic as _rows
     npar = len(names)
-    pars = np.empty((1 + 2 * npar, _engine.NPAR))
+    pars = np.empty((1 + 2 * npar, par0.size))  # (the rows a parameter moves replaced below)
+    pars[:] = par0
     geos = np.empty((1 + 2 * npar, geo0.size))
-    pars[0], geos[0] = par0, geo0
+    geos[:] = geo0
     hs = np.empty(npar)
     Y0 = np.zeros(NY * (1 + npar))
     Y0[:NY] = y0
@@ -394,17 +396,17 @@ def compute(
         h = _step(body, friction, state, name)
         hs[k] = h
         if name in _START:  # the rows stay; ∂y₀/∂θ in closed form
-            pars[1 + 2 * k] = pars[2 + 2 * k] = par0
-            geos[1 + 2 * k] = geos[2 + 2 * k] = geo0
             Y0[NY * (k + 1) : NY * (k + 2)] = _start_derivative(y0, par0, name, t_unit, v_unit)
             continue
         val = _value(body, friction, state, name)
         pp, gp, yp = _rows_moved(body, friction, state, name, val + h, g, (par0, geo0, y0))
         pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0, y0))
-        pars[1 + 2 * k], geos[1 + 2 * k] = pp, gp
-        pars[2 + 2 * k], geos[2 + 2 * k] = pm, gm
-        Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
-        dk[k] = (pp[_engine.P_K] - pm[_engine.P_K]) / (2.0 * h)
+        pars[1 + 2 * k], pars[2 + 2 * k] = pp, pm
+        if gp is not geo0 or gm is not geo0:
+            geos[1 + 2 * k], geos[2 + 2 * k] = gp, gm
+        if yp is not y0 or ym is not y0:
+            Y0[NY * (k + 1) : NY * (k + 2)] = (yp - ym) / (2.0 * h)
+            dk[k] = (pp[_engine.P_K] - pm[_engine.P_K]) / (2.0 * h)
     tol = max(rtol, RUN_TOL)
     yterm = np.asarray(rows[-1], dtype=np.float64).copy()  # the stop: u*, φ*
     yterm[:3] /= np.linalg.norm(yterm[:3])
@@ -459,13 +461,19 @@ def compute(
             stacklevel=3,
         )
     fixed = _core.path_at_fixed_time(rows, accel, rec, Y, k0, dk, a, t_unit, v_unit)
+    # (Python floats from here: a few dozen scalars, no NumPy scalar arithmetic)
+    yl, sul, dkl = Y.tolist(), su.tolist(), dk.tolist()
+    ul, kf = u_stop.tolist(), float(k0)
     for k, name in enumerate(names):
-        S = Y[NY * (k + 1) : NY * (k + 2)]
-        d = {"t_stop": S[4] * t_unit, "x": S[5] * a, "y": S[6] * a, "phi": S[7]}
-        d["beta_stop"] = _beta_derivative(ending, u_stop, su[k], k0, dk[k]) * a
-        if name in kinked or name in jumps:
-            d["beta_stop"] = math.nan
-        stop[name] = {q: float(d[q]) for q in STOP_OUTPUTS}
+        o = NY * (k + 1)
+        beta = _beta_derivative(ending, ul, sul[k], kf, dkl[k]) * a
+        stop[name] = {
+            "t_stop": yl[o + 4] * t_unit,
+            "x": yl[o + 5] * a,
+            "y": yl[o + 6] * a,
+            "phi": yl[o + 7],
+            "beta_stop": math.nan if name in kinked or name in jumps else beta,
+        }
         path[name] = dict(zip(PATH_OUTPUTS, fixed[:, :, k], strict=True))
     return Sensitivities(
         parameters=names, t=rows[:, 4] * t_unit, path=path, stop=stop, n_steps=int(nsteps)
@@ -577,7 +585,9 @@ def _solve_transverse(jt: NDArray, b: NDArray) -> NDArray:
     return np.real(vec[:, keep] @ (coef[keep] / lam[keep, None]))
 
 
-def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) -> float:
+def _beta_derivative(
+    ending: str, u: Sequence[float], su: Sequence[float], k: float, dk: float
+) -> float:
     """∂(β*/ℓ)/∂θ with β*/ℓ = k u₁₂/u₃ (MODEL §5) at the terminal direction ``u`` and its
     sensitivity ``su``; 0 for a pure ending (β* stays ∞ or 0 nearby), NaN for a spiral
     (no terminal direction)."""
@@ -585,10 +595,10 @@ def _beta_derivative(ending: str, u: NDArray, su: NDArray, k: float, dk: float) 
         return math.nan
     if ending != "mixed":
         return 0.0
-    u1, u2, u3 = float(u[0]), float(u[1]), float(u[2])
+    u1, u2, u3 = u[0], u[1], u[2]
     nrm = math.sqrt(u1 * u1 + u2 * u2 + u3 * u3)
     u1, u2, u3 = u1 / nrm, u2 / nrm, u3 / nrm
     u12 = math.hypot(u1, u2)
     du12 = (u1 * su[0] + u2 * su[1]) / u12
-    du3 = float(su[2])
+    du3 = su[2]
     return dk * u12 / u3 + k * (du12 * u3 - u12 * du3) / (u3 * u3)

@@ -294,8 +294,8 @@ def simulate(
         Parameters to differentiate the motion with respect to (MODEL §15): any of ``fx``,
         ``fy``, ``f``, ``xi_c``, ``eta_c``, ``moment_of_inertia``, ``vx``, ``vy``,
         ``omega`` (the last three of the start), also ``angle`` (the tensor's) and ``phi0``
-        (the start's body angle). The variational equations are integrated with the motion
-        (:mod:`slidespin.motion.sensitivity`) and the trajectory's ``sensitivities`` holds
+        (the start's body angle). The variational equations are solved along the motion, by
+        collocation on the plain run's own steps (:mod:`slidespin.motion.sensitivity`), and the trajectory's ``sensitivities`` holds
         ∂q(t)/∂θ along it and the stop's derivatives (t_stop, the stop pose, β*). Free
         motion under a constant law only (refused with a load, a slope, ``t_end``, a pusher,
         a speed law or a tall body), for a motion that stops (status ``stopped``; a
