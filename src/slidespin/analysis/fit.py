@@ -303,7 +303,7 @@ def fit(
         (:mod:`slidespin.motion.sensitivity`, MODEL §15: one sensitivity run per run, no
         step-size error; a run whose motion does not stop falls back to differences). Both
         reach the same estimates (``examples/fit_benchmark.py``: within 1e-3 of a standard
-        error); "exact" is 3.3× faster there (docs/sensitivities.md), but a run whose
+        error); "exact" is 3.4× faster there (docs/sensitivities.md), but a run whose
         motion does not stop falls back to differences, hence not the default.
 
     Returns

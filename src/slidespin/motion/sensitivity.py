@@ -17,13 +17,14 @@ variational equation dS/dτ = (∂G/∂y) S + ∂G/∂θ, integrated with the mo
 the public entries; this module holds the parameter names, their perturbations and the run.
 
 The variational equation's right-hand side uses the wrench's exact derivatives where the
-kernels give them (an ellipse under every law: analytic; a footprint: its isotropic integrals
-differenced in the ICR) and a central difference of the whole right-hand side elsewhere (a
-footprint's pressure centre); it is solved by collocation on the plain run's own steps, or
-integrated with the motion (see :mod:`slidespin.motion._sensitivity_core`). Cost
-(``benchmarks/sensitivities_bench.py``): 2.8-3.1x a plain run for 6 parameters, 3.4-5.1x for
-9 (6.9-7.6x and 9.7-14.3x integrated with the motion, 18-55x before the kernels'
-derivatives; docs/sensitivities.md).
+kernels give them (an ellipse under every law: analytic; a footprint: exact in the ICR,
+differenced there only for a far ICR or a thin ring) and a central difference of the whole
+right-hand side elsewhere (a footprint's pressure centre); it is solved by collocation on the
+plain run's own steps, or integrated with the motion (see
+:mod:`slidespin.motion._sensitivity_core`). Cost (``benchmarks/sensitivities_bench.py``):
+2.3-2.8x a plain run for 6 parameters, 3.2-4.5x for 9 (2.8-3.1x and 3.4-5.1x with a
+footprint's derivatives differenced in the ICR; 6.9-7.6x and 9.7-14.3x integrated with the
+motion; 18-55x before the kernels' derivatives; docs/sensitivities.md).
 """
 
 from __future__ import annotations
