@@ -52,8 +52,8 @@ CASES = {
 }
 
 
-def _setup(case):
-    fp, pressure, fr, icr, omega, phi = CASES[case]
+def _setup(case, cases=CASES):
+    fp, pressure, fr, icr, omega, phi = cases[case]
     body = ss.Body(fp, pressure, mass=1.0)
     par, fe, fc, geo = body.engine_params(fr.kinetic, 1e-14)
     ell = body.length_unit
@@ -196,15 +196,8 @@ AT_POINTS = {
 
 @pytest.mark.parametrize("case", sorted(AT_POINTS))
 def test_jacobian_where_the_icr_meets_the_footprints_features(case):
-    fp, pressure, fr, point, omega, phi = AT_POINTS[case]
-    body = ss.Body(fp, pressure, mass=1.0)
-    par, fe, fc, geo = body.engine_params(fr.kinetic, 1e-14)
-    ell = body.length_unit
-    t = tuple(float(par[i]) for i in (_engine.P_T00, _engine.P_T01, _engine.P_T10, _engine.P_T11))
-    frame = "body" if par[_engine.P_BODY] else "plane"
-    ref_law = (
-        ("linear", *pressure.centroid) if isinstance(pressure, ss.LinearPressure) else ("uniform",)
-    )
+    body, fe, fc, geo, ell, t, frame, ref_law, point, omega, phi = _setup(case, AT_POINTS)
+    fp = AT_POINTS[case][0]
     d = (np.array(point) - np.array(body.mass_centre)) / ell
     vb = -omega * np.array([-d[1], d[0]])  # c − r_G = ẑ×v/ω
     c, s = math.cos(phi), math.sin(phi)

@@ -160,18 +160,28 @@ def sym3(nx, ny, tx, ty, l0, l1, l2, l3):
 
 
 @jit(error_model="numpy", inline="always")
-def edge_lines(px, py, qx, qy, rp, rq):
-    """The line integrals of the edge P → Q seen from c (P, Q relative to c, at distances
-    ``rp``, ``rq``): (ℓ, t̂x, t̂y, d, J₀, J₁, J₂, J₃), J_b = ∫ s^b/√(d² + s²) ds (module notes).
+def edge_lines(edges, i, cx, cy, rq):
+    """The line integrals of edge ``i`` (P → Q) seen from c = (cx, cy): (ℓ, t̂x, t̂y, d, J₀,
+    J₁, J₂, J₃, |Q − c|), J_b = ∫ s^b/√(d² + s²) ds (module notes); ``rq`` is the previous
+    edge's |Q − c| (its P's distance when the edges are chained, as a polygon's), or −1.
 
     ℓ = 0 for a point. On a line through c (d² = 0) d is 0 and J₀ (divergent there, it only
     comes multiplied by d) is returned as 0: J₁, J₂, J₃ are the limits ∫ s^b/|s| ds.
     """
+    px = edges[i, 0] - cx
+    py = edges[i, 1] - cy
+    qx = edges[i, 2] - cx
+    qy = edges[i, 3] - cy
+    if rq >= 0.0 and edges[i, 0] == edges[i - 1, 2] and edges[i, 1] == edges[i - 1, 3]:
+        rp = rq
+    else:
+        rp = math.sqrt(px * px + py * py)
+    rq = math.sqrt(qx * qx + qy * qy)
     ex = qx - px
     ey = qy - py
     ln = math.sqrt(ex * ex + ey * ey)
     if ln == 0.0:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, rq
     tx = ex / ln
     ty = ey / ln
     d = (px * qy - py * qx) / ln  # signed distance of the edge's line from c
@@ -179,7 +189,7 @@ def edge_lines(px, py, qx, qy, rp, rq):
     sq = tx * qx + ty * qy
     if d * d == 0.0:
         j2 = 0.5 * (sq * rq - sp * rp)
-        return ln, tx, ty, 0.0, 0.0, rq - rp, j2, (sq * sq * rq - sp * sp * rp) / 3.0
+        return ln, tx, ty, 0.0, 0.0, rq - rp, j2, (sq * sq * rq - sp * sp * rp) / 3.0, rq
     ssum = sp + sq
     j1 = ln * ssum / (rp + rq)  # r_Q − r_P
     # J₀ = asinh(s_Q/|d|) − asinh(s_P/|d|) as one logarithm, without cancellation
@@ -202,7 +212,7 @@ def edge_lines(px, py, qx, qy, rp, rq):
         )
         / 3.0
     )
-    return ln, tx, ty, d, j0, j1, j2, j3
+    return ln, tx, ty, d, j0, j1, j2, j3, rq
 
 
 @jit(error_model="numpy")
@@ -220,17 +230,7 @@ def fan_tensors(edges, circles, cx, cy):
     g3d = 0.0
     rq = -1.0
     for i in range(edges.shape[0]):
-        px = edges[i, 0] - cx
-        py = edges[i, 1] - cy
-        qx = edges[i, 2] - cx
-        qy = edges[i, 3] - cy
-        # |P − c|: the previous edge's |Q − c| when the edges are chained (polygons)
-        if rq >= 0.0 and edges[i, 0] == edges[i - 1, 2] and edges[i, 1] == edges[i - 1, 3]:
-            rp = rq
-        else:
-            rp = math.sqrt(px * px + py * py)
-        rq = math.sqrt(qx * qx + qy * qy)
-        ln, tx, ty, d, j0, j1, j2, j3 = edge_lines(px, py, qx, qy, rp, rq)
+        ln, tx, ty, d, j0, j1, j2, j3, rq = edge_lines(edges, i, cx, cy, rq)
         if ln == 0.0 or d == 0.0:  # a point, or a line through c: no area (the ICR on an edge)
             continue
         nx = ty

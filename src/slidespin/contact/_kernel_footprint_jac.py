@@ -76,16 +76,7 @@ def fan_tensors_jac(edges, circles, cx, cy, dg):
         dg[i] = 0.0
     rq = -1.0
     for i in range(edges.shape[0]):
-        px = edges[i, 0] - cx
-        py = edges[i, 1] - cy
-        qx = edges[i, 2] - cx
-        qy = edges[i, 3] - cy
-        if rq >= 0.0 and edges[i, 0] == edges[i - 1, 2] and edges[i, 1] == edges[i - 1, 3]:
-            rp = rq
-        else:
-            rp = math.sqrt(px * px + py * py)
-        rq = math.sqrt(qx * qx + qy * qy)
-        ln, tx, ty, d, j0, j1, j2, j3 = edge_lines(px, py, qx, qy, rp, rq)
+        ln, tx, ty, d, j0, j1, j2, j3, rq = edge_lines(edges, i, cx, cy, rq)
         if ln == 0.0:
             continue
         nx = ty
