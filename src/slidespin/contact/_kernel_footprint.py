@@ -215,6 +215,38 @@ def edge_lines(edges, i, cx, cy, rq):
     return ln, tx, ty, d, j0, j1, j2, j3, rq
 
 
+@jit(error_model="numpy", inline="always")
+def circle_frame(circles, i, cx, cy):
+    """(D, uₓ, u_y): the distance D of circle ``i``'s centre o from c and the unit vector u
+    from c towards it (u = (1, 0) at D = 0; v = ẑ×u completes the frame)."""
+    ux = circles[i, 0] - cx
+    uy = circles[i, 1] - cy
+    dd = math.sqrt(ux * ux + uy * uy)
+    if dd > 0.0:
+        return dd, ux / dd, uy / dd
+    return dd, 1.0, 0.0
+
+
+@jit(error_model="numpy", inline="always")
+def round_tensors(sgn, ux, uy, g1, g2u, g2v, g3u, g3v):
+    """A circle's G₁, G₂, G₃ (the 9 components of :func:`fan_tensors`) times its sign
+    ``sgn`` from its scalars (G₁ᵤ, G₂ᵤᵤ, G₂ᵥᵥ, G₃ᵤᵤᵤ, G₃ᵤᵥᵥ) in the frame (u, v = ẑ×u)."""
+    vx = -uy
+    vy = ux
+    a, b, c, e = sym3(ux, uy, vx, vy, g3u, 0.0, g3v, 0.0)
+    return (
+        sgn * g1 * ux,
+        sgn * g1 * uy,
+        sgn * (g2u * ux * ux + g2v * vx * vx),
+        sgn * (g2u * ux * uy + g2v * vx * vy),
+        sgn * (g2u * uy * uy + g2v * vy * vy),
+        sgn * a,
+        sgn * b,
+        sgn * c,
+        sgn * e,
+    )
+
+
 @jit(error_model="numpy")
 def fan_tensors(edges, circles, cx, cy):
     """G₁ (x, y), G₂ (xx, xy, yy), G₃ (xxx, xxy, xyy, yyy) of the footprint about the point
@@ -256,34 +288,23 @@ def fan_tensors(edges, circles, cx, cy):
         if skip:  # the hole of a thin ring, taken with its disk
             skip = False
             continue
-        ux = circles[i, 0] - cx
-        uy = circles[i, 1] - cy
+        dd, ux, uy = circle_frame(circles, i, cx, cy)
         rr = circles[i, 2]
-        sgn = circles[i, 3]
-        dd = math.sqrt(ux * ux + uy * uy)
-        if dd > 0.0:
-            ux /= dd
-            uy /= dd
-        else:
-            ux = 1.0
-            uy = 0.0
-        vx = -uy
-        vy = ux
         if thin_hole(circles, i):
             g1u, g2uu, g2vv, g3uuu, g3uvv = ring_terms(dd, rr, circles[i + 1, 2])
             skip = True
         else:
             g1u, g2uu, g2vv, g3uuu, g3uvv = round_terms(dd, rr)
-        g1x += sgn * g1u * ux
-        g1y += sgn * g1u * uy
-        g2xx += sgn * (g2uu * ux * ux + g2vv * vx * vx)
-        g2xy += sgn * (g2uu * ux * uy + g2vv * vx * vy)
-        g2yy += sgn * (g2uu * uy * uy + g2vv * vy * vy)
-        a, b, c, e = sym3(ux, uy, vx, vy, g3uuu, 0.0, g3uvv, 0.0)
-        g3a += sgn * a
-        g3b += sgn * b
-        g3c += sgn * c
-        g3d += sgn * e
+        t = round_tensors(circles[i, 3], ux, uy, g1u, g2uu, g2vv, g3uuu, g3uvv)
+        g1x += t[0]
+        g1y += t[1]
+        g2xx += t[2]
+        g2xy += t[3]
+        g2yy += t[4]
+        g3a += t[5]
+        g3b += t[6]
+        g3c += t[7]
+        g3d += t[8]
     return g1x, g1y, g2xx, g2xy, g2yy, g3a, g3b, g3c, g3d
 
 

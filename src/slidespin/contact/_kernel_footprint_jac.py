@@ -54,8 +54,10 @@ from slidespin.contact._kernel_footprint import (
     GEO_P2,
     GEO_XG,
     GEO_YG,
+    circle_frame,
     edge_lines,
     iso_parts,
+    round_tensors,
     sym3,
     wrench_body,
 )
@@ -97,31 +99,16 @@ def fan_tensors_jac(edges, circles, cx, cy, dg):
             dg[q] -= nx * lk[q]
             dg[9 + q] -= ny * lk[q]
     for i in range(circles.shape[0]):
-        ux = circles[i, 0] - cx
-        uy = circles[i, 1] - cy
-        sgn = circles[i, 3]
-        dd = math.sqrt(ux * ux + uy * uy)
-        if dd > 0.0:
-            ux /= dd
-            uy /= dd
-        else:
-            ux = 1.0
-            uy = 0.0
+        dd, ux, uy = circle_frame(circles, i, cx, cy)
         vx = -uy
         vy = ux
+        sgn = circles[i, 3]
         (g1, g2u, g2v, g3u, g3v, d1, d2u, d2v, d3u, d3v, t1, t2, t3a, t3b) = round_terms_jac(
             dd, circles[i, 2]
         )
-        g[0] += sgn * g1 * ux
-        g[1] += sgn * g1 * uy
-        g[2] += sgn * (g2u * ux * ux + g2v * vx * vx)
-        g[3] += sgn * (g2u * ux * uy + g2v * vx * vy)
-        g[4] += sgn * (g2u * uy * uy + g2v * vy * vy)
-        a, b, c, e = sym3(ux, uy, vx, vy, g3u, 0.0, g3v, 0.0)
-        g[5] += sgn * a
-        g[6] += sgn * b
-        g[7] += sgn * c
-        g[8] += sgn * e
+        t = round_tensors(sgn, ux, uy, g1, g2u, g2v, g3u, g3v)
+        for q in range(9):
+            g[q] += t[q]
         # along e_j = a u + b v: D moves by −a, the frame (u, v) turns by −b/D
         for j in range(2):
             al = -sgn * (ux if j == 0 else uy)
