@@ -17,6 +17,7 @@ import slidespin as ss
 from slidespin.contact import _engine
 from slidespin.contact import _kernel_footprint_jac as KFJ
 from slidespin.contact._jacobian import JAC_SIZE
+from slidespin.contact.pressure_map import kernel_geometry
 from slidespin.contact.shapes import Annulus, Pads, Polygon, Rectangle
 
 L_SHAPE = [(0.0, 0.0), (0.3, 0.0), (0.3, 0.1), (0.1, 0.1), (0.1, 0.25), (0.0, 0.25)]
@@ -230,3 +231,36 @@ def test_edge_through_the_icr_is_the_limit_of_its_neighbours(point):
     for off in ((1e-9, 3e-10), (-1e-9, 2e-10), (4e-10, -1e-9), (-3e-10, -1e-9)):
         KFJ.fan_tensors_jac(edges, circles, point[0] + off[0], point[1] + off[1], dg)
         assert np.abs(dg - at).max() <= 1e-7 * np.abs(at).max()
+
+
+@pytest.mark.parametrize("case", ["L-outside", "ring-band", "rectangle-inside", "pads-far"])
+def test_pressure_centre_derivative_matches_reference_differences(case):
+    # moving the pressure centre moves G (the ICR with it, at a fixed twist of G; the
+    # moment's arm) and the linear law through it: the kernel's ∂W/∂G and ∂W/∂p (out[21:36])
+    # chained with the law's rates (the coefficients are linear in the centre; rates from
+    # the library's geometry rows, checked in test_footprint_wrench) against Richardson
+    # differences of the reference, whose law and G move together
+    body, fe, fc, geo, ell, t, frame, _, icr, omega, phi = _setup(case)
+    fp = CASES[case][0]
+    tw = _twist(body, ell, icr, omega, phi)
+    ok, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    assert ok
+    xi, eta = body.mass_centre  # the pressure centre (G) of either law
+    arrays = fp.to_arrays()
+    h = 1e-4 * ell
+    for j in range(2):
+        e = np.array([h, 0.0]) if j == 0 else np.array([0.0, h])
+        gp = kernel_geometry(fp, ss.LinearPressure(xi + e[0], eta + e[1]), arrays, length=ell)
+        gm = kernel_geometry(fp, ss.LinearPressure(xi - e[0], eta - e[1]), arrays, length=ell)
+        rate = (gp - gm) / (2.0 * h)  # per metre; G and p in the kernel's units
+        got = rate[6] * out[21:24] + rate[7] * out[24:27]
+        for i in range(3):
+            got = got + rate[3 + i] * out[27 + 3 * i : 30 + 3 * i]
+
+        def f(x, j=j):
+            c = [xi, eta]
+            c[j] = x
+            return _ref(fp, ("linear", *c), t, frame, ell, phi, tw)
+
+        ref = richardson(f, (xi, eta)[j], 2e-3 * ell)
+        assert np.abs(got - ref).max() <= 1e-6 * max(np.abs(ref).max(), 1e-3), (j, got, ref)

@@ -6,8 +6,12 @@ A kernel's body-frame derivative fills ``out[:18]`` of a vector of :data:`JAC_SI
 (Fx, Fy, M); the isotropic parts Q (2) and N (4) with F = −𝔽Q and M = −Σ 𝔽_ij N_ij (the
 wrench is linear in the tensor, MODEL §10); ∂(Fx, Fy, M)/∂(vx, vy, ω) row-major; and in
 ``out[21:27]`` ∂(Fx, Fy, M)/∂ξ_G, ∂/∂η_G, the derivatives with respect to the pressure centre
-G in the body frame at a fixed twist of G (NaN where the kernel has none).
-:func:`world_from_body` turns it into the fixed frame and adds ∂(Fx, Fy, M)/∂φ (``out[18:21]``).
+G in the body frame at a fixed twist of G (NaN where the kernel has none): for an ellipse
+the whole change (the linear law follows G), for a footprint at fixed pressure coefficients
+(the ICR moves with G, and the moment's arm), whose own derivatives ∂(Fx, Fy, M)/∂p₀, ∂/∂p₁,
+∂/∂p₂ (p = p₀ + p₁ξ + p₂η in the kernel's units) follow in ``out[27:36]`` (zero for an
+ellipse). :func:`world_from_body` turns it into the fixed frame and adds ∂(Fx, Fy, M)/∂φ
+(``out[18:21]``).
 """
 
 from __future__ import annotations
@@ -19,8 +23,8 @@ from slidespin._jit import jit
 __all__ = ["JAC_SIZE", "unavailable", "world_from_body"]
 
 #: length of the derivative vector: W (3), Q (2), N (4), ∂W/∂(vx, vy, ω) (9), ∂W/∂φ (3),
-#: ∂W/∂(ξ_G, η_G) (6)
-JAC_SIZE = 27
+#: ∂W/∂(ξ_G, η_G) (6), ∂W/∂(p₀, p₁, p₂) (9)
+JAC_SIZE = 36
 
 
 @jit(error_model="numpy", inline="always")
@@ -79,7 +83,7 @@ def world_from_body(out, c, s, vbx, vby, b00, b01, b10, b11, body_frame, availab
     out[15] = m0 * c - m1 * s
     out[16] = m0 * s + m1 * c
     out[17] = m2
-    for i in (21, 24):  # ∂F/∂G: turned like F
+    for i in (21, 24, 27, 30, 33):  # ∂F/∂G, ∂F/∂p: turned like F
         gx, gy = out[i], out[i + 1]
         out[i] = c * gx - s * gy
         out[i + 1] = s * gx + c * gy

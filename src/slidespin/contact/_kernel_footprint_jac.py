@@ -29,6 +29,14 @@ thin ring (double-double arithmetic) are differenced in c instead (:func:`_dw_dc
 differences of the exact V and N at the step h = ``REL_STEP`` (extent + |c − o|), O(h²) =
 1e-10 relative, five evaluations of V and N. The isotropic parts Q = sign(ω) ẑ×V and N'
 (M = −Σ 𝔽_ij N'_ij) come exact.
+
+The pressure centre (MODEL §15) moves G and the pressure coefficients p = (p₀, p₁, p₂) (the
+linear law through it). At a fixed twist of G the ICR moves with G (∂W/∂c again) and the
+moment changes its arm (∂M/∂ξ_G = −F_y, ∂M/∂η_G = F_x); V and N are linear in p,
+∂V/∂p_i = φ_i(c) G₁ + G₂∇φ_i and ∂S/∂p_i = φ_i(c) G₂ + G₃∇φ_i with φ = (1, ξ, η), from the
+same tensors (for a far ICR or a thin ring: V and N of the three unit pressures). Both go to
+the derivative vector (``out[21:36]``, :mod:`slidespin.contact._jacobian`); the caller
+combines them with dp/dθ and dG/dθ.
 Not available (the caller differences the whole right-hand side): a blade (one edge) and
 a translation (ω = 0 or the ICR beyond ``FAR_ICR`` extents).
 """
@@ -130,8 +138,10 @@ def fan_tensors_jac(edges, circles, cx, cy, dg):
 @jit(error_model="numpy")
 def iso_parts_jac(edges, circles, geo, cx, cy, dv):
     """:func:`slidespin.contact._kernel_footprint.iso_parts` (V, N; returned) about an ICR c
-    near the footprint (the exact fan) and their derivatives in c into ``dv``: ∂(V, N)/∂cx
-    at ``dv[0:6]``, ∂/∂cy at ``dv[6:12]`` (the order of V, N)."""
+    near the footprint (the exact fan) and their derivatives into ``dv``: ∂(V, N)/∂cx at
+    ``dv[0:6]``, ∂/∂cy at ``dv[6:12]``, ∂/∂p₀, ∂/∂p₁, ∂/∂p₂ at ``dv[12:18]``, ``dv[18:24]``,
+    ``dv[24:30]`` (the order of V, N; V and N are linear in p: ∂V/∂p_i = φ_i(c) G₁ + G₂∇φ_i,
+    ∂S/∂p_i = φ_i(c) G₂ + G₃∇φ_i with φ = (1, ξ, η))."""
     dg = np.empty(18)
     g = fan_tensors_jac(edges, circles, cx, cy, dg)
     p0, p1, p2 = geo[GEO_P0], geo[GEO_P1], geo[GEO_P2]
@@ -158,28 +168,57 @@ def iso_parts_jac(edges, circles, geo, cx, cy, dv):
         dv[q + 3] = dsxy + (vy_ if j == 0 else 0.0) + ax * dvy
         dv[q + 4] = dsxy + (vx_ if j == 1 else 0.0) + ay * dvx
         dv[q + 5] = dsyy + (vy_ if j == 1 else 0.0) + ay * dvy
+    for i in range(3):
+        f, e1, e2 = (1.0, 0.0, 0.0) if i == 0 else ((cx, 1.0, 0.0) if i == 1 else (cy, 0.0, 1.0))
+        pvx = f * g[0] + g[2] * e1 + g[3] * e2
+        pvy = f * g[1] + g[3] * e1 + g[4] * e2
+        psxx = f * g[2] + g[5] * e1 + g[6] * e2
+        psxy = f * g[3] + g[6] * e1 + g[7] * e2
+        psyy = f * g[4] + g[7] * e1 + g[8] * e2
+        q = 12 + 6 * i
+        dv[q] = pvx
+        dv[q + 1] = pvy
+        dv[q + 2] = psxx + ax * pvx
+        dv[q + 3] = psxy + ax * pvy
+        dv[q + 4] = psxy + ay * pvx
+        dv[q + 5] = psyy + ay * pvy
     return vx_, vy_, sxx + ax * vx_, sxy + ax * vy_, sxy + ay * vx_, syy + ay * vy_
 
 
 @jit(error_model="numpy")
-def _primed(edges, circles, geo, cx, cy, sg):
-    """(Q, N') with F = −𝔽Q, M = −Σ 𝔽_ij N'_ij from V, N about c and sign(ω)."""
-    v0, v1, nxx, nxy, nyx, nyy = iso_parts(edges, circles, geo, cx, cy)
-    return -sg * v1, sg * v0, sg * nyy, -sg * nyx, -sg * nxy, sg * nxx
+def _iso_parts_differenced(edges, circles, geo, cx, cy, h, dv):
+    """:func:`iso_parts_jac` where the fan is not used (a far ICR: Gauss rules; a thin ring:
+    double-double): V, N returned, their derivatives in c by central differences at the step
+    ``h``, in p by V and N of the unit pressures (V, N are linear in p)."""
+    v = iso_parts(edges, circles, geo, cx, cy)
+    for j in range(2):
+        hx = h if j == 0 else 0.0
+        hy = h - hx
+        a = iso_parts(edges, circles, geo, cx + hx, cy + hy)
+        c = iso_parts(edges, circles, geo, cx - hx, cy - hy)
+        for q in range(6):
+            dv[6 * j + q] = (a[q] - c[q]) / (2.0 * h)
+    basis = geo.copy()
+    for i in range(3):
+        basis[GEO_P0] = 1.0 if i == 0 else 0.0
+        basis[GEO_P1] = 1.0 if i == 1 else 0.0
+        basis[GEO_P2] = 1.0 if i == 2 else 0.0
+        u = iso_parts(edges, circles, basis, cx, cy)
+        for q in range(6):
+            dv[12 + 6 * i + q] = u[q]
+    return v
 
 
-@jit(error_model="numpy")
-def _dw_dc(edges, circles, geo, cx, cy, hx, hy, sg, b00, b01, b10, b11):
-    """∂(Fx, Fy, M)/∂c along (hx, hy)/h (one of them zero) by the central difference of Q, N'."""
-    a0, a1, a2, a3, a4, a5 = _primed(edges, circles, geo, cx + hx, cy + hy, sg)
-    c0, c1, c2, c3, c4, c5 = _primed(edges, circles, geo, cx - hx, cy - hy, sg)
-    i2h = 0.5 / (hx + hy)
-    dq0 = (a0 - c0) * i2h
-    dq1 = (a1 - c1) * i2h
-    dfx = -(b00 * dq0 + b01 * dq1)
-    dfy = -(b10 * dq0 + b11 * dq1)
-    dm = -(b00 * (a2 - c2) + b01 * (a3 - c3) + b10 * (a4 - c4) + b11 * (a5 - c5)) * i2h
-    return dfx, dfy, dm
+@jit(error_model="numpy", inline="always")
+def _wrench_of(dv, o, sg, b00, b01, b10, b11):
+    """The change of (Fx, Fy, M) (body frame) for the change of (V, N) at ``dv[o:o + 6]``:
+    F = −𝔽Q, Q = sign(ω) ẑ×V, M = −sign(ω) (𝔽₀₀N_yy − 𝔽₀₁N_yx − 𝔽₁₀N_xy + 𝔽₁₁N_xx)."""
+    vx, vy, nxx, nxy, nyx, nyy = dv[o], dv[o + 1], dv[o + 2], dv[o + 3], dv[o + 4], dv[o + 5]
+    return (
+        -sg * (-b00 * vy + b01 * vx),
+        -sg * (-b10 * vy + b11 * vx),
+        -sg * (b00 * nyy - b01 * nyx - b10 * nxy + b11 * nxx),
+    )
 
 
 @jit(error_model="numpy")
@@ -204,30 +243,21 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     thin = False
     for i in range(circles.shape[0]):
         thin = thin or thin_hole(circles, i)
-    if dist > FAR_RATIO * ext or thin:  # ∂W/∂c_d (d = x, y) from the differences of Q and N'
-        q0, q1, n00, n01, n10, n11 = _primed(edges, circles, geo, cx, cy, sg)
-        h = REL_STEP * (ext + dist)
-        x0, x1, x2 = _dw_dc(edges, circles, geo, cx, cy, h, 0.0, sg, b00, b01, b10, b11)
-        y0, y1, y2 = _dw_dc(edges, circles, geo, cx, cy, 0.0, h, sg, b00, b01, b10, b11)
-    else:  # exact: Q = sign(ω) ẑ×V, N' = sign(ω) (N_yy, −N_yx, −N_xy, N_xx)
-        dv = np.empty(12)
-        v0, v1, nxx, nxy, nyx, nyy = iso_parts_jac(edges, circles, geo, cx, cy, dv)
-        q0, q1, n00, n01, n10, n11 = -sg * v1, sg * v0, sg * nyy, -sg * nyx, -sg * nxy, sg * nxx
-        x0 = -sg * (-b00 * dv[1] + b01 * dv[0])
-        x1 = -sg * (-b10 * dv[1] + b11 * dv[0])
-        x2 = -sg * (b00 * dv[5] - b01 * dv[4] - b10 * dv[3] + b11 * dv[2])
-        y0 = -sg * (-b00 * dv[7] + b01 * dv[6])
-        y1 = -sg * (-b10 * dv[7] + b11 * dv[6])
-        y2 = -sg * (b00 * dv[11] - b01 * dv[10] - b10 * dv[9] + b11 * dv[8])
-    out[0] = -(b00 * q0 + b01 * q1)  # F = −𝔽Q, M = −Σ 𝔽_ij N'_ij (wrench_body's sums)
-    out[1] = -(b10 * q0 + b11 * q1)
-    out[2] = -(b00 * n00 + b01 * n01 + b10 * n10 + b11 * n11)
-    out[3] = q0
-    out[4] = q1
-    out[5] = n00
-    out[6] = n01
-    out[7] = n10
-    out[8] = n11
+    dv = np.empty(36)  # ∂(V, N)/∂(cx, cy, p₀, p₁, p₂) (6 each); (V, N) itself at dv[30:36]
+    if dist > FAR_RATIO * ext or thin:
+        v = _iso_parts_differenced(edges, circles, geo, cx, cy, REL_STEP * (ext + dist), dv)
+    else:
+        v = iso_parts_jac(edges, circles, geo, cx, cy, dv)
+    for q in range(6):
+        dv[30 + q] = v[q]
+    fx, fy, m = _wrench_of(dv, 30, sg, b00, b01, b10, b11)
+    out[0] = fx
+    out[1] = fy
+    out[2] = m
+    out[3], out[4] = -sg * v[1], sg * v[0]  # Q, N' (F = −𝔽Q, M = −Σ 𝔽_ij N'_ij)
+    out[5], out[6], out[7], out[8] = sg * v[5], -sg * v[4], -sg * v[3], sg * v[2]
+    x0, x1, x2 = _wrench_of(dv, 0, sg, b00, b01, b10, b11)  # ∂W/∂cx
+    y0, y1, y2 = _wrench_of(dv, 6, sg, b00, b01, b10, b11)  # ∂W/∂cy
     # ∂c/∂(vx, vy, ω): columns (0, 1/ω), (−1/ω, 0), −(c − r_G)/ω
     iw = 1.0 / omega
     gx = -(cx - xg) * iw
@@ -235,7 +265,14 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     out[9], out[10], out[11] = y0 * iw, -x0 * iw, x0 * gx + y0 * gy
     out[12], out[13], out[14] = y1 * iw, -x1 * iw, x1 * gx + y1 * gy
     out[15], out[16], out[17] = y2 * iw, -x2 * iw, x2 * gx + y2 * gy
-    unavailable(out, 21)  # ∂W/∂G: the pressure centre moves the footprint's law (differenced)
+    # G at a fixed twist of G and fixed p: the ICR moves with G, and the moment's arm
+    # (N = S + (c − r_G) ⊗ V: ∂M/∂ξ_G = −Fy, ∂M/∂η_G = Fx)
+    out[21], out[22], out[23] = x0, x1, x2 - fy
+    out[24], out[25], out[26] = y0, y1, y2 + fx
+    for i in range(3):
+        out[27 + 3 * i], out[28 + 3 * i], out[29 + 3 * i] = _wrench_of(
+            dv, 12 + 6 * i, sg, b00, b01, b10, b11
+        )
     return True
 
 

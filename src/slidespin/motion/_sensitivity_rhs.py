@@ -11,10 +11,11 @@ With the wrench's exact derivatives (:func:`slidespin.contact._engine.accelerati
 analytic on an ellipse, :mod:`slidespin.contact._kernel_ellipse_jac`; on a footprint,
 :mod:`slidespin.contact._kernel_footprint_jac`) ∂G/∂y is assembled once per
 evaluation (:func:`rhs_jacobian`) and serves every parameter; ∂G/∂θ_k is exact for the
-parameters that move only the tensor's entries, the radius of gyration, an ellipse's
-pressure centre, or the start (:func:`direct_parameters`, :func:`parameter_rhs`). For the
-others (a footprint's pressure centre), and at a state where the kernel has no derivative
-(the elliptic quadrature's adaptive fallback, a blade, a footprint's translation), the
+parameters that move only the tensor's entries, the radius of gyration, the pressure
+centre (an ellipse's, with its law; a footprint's, with its pressure coefficients), or the
+start (:func:`direct_parameters`, :func:`parameter_rhs`). For any other parameter, and at a
+state where the kernel has no derivative (the elliptic quadrature's adaptive fallback when
+even its tightest rule misses, a blade, a footprint's translation), the
 right-hand side is the directional derivative of the flow along (S_k, e_k) in the joint
 (state, parameter) space, a central difference of :func:`slidespin.motion._flow._rhs` with
 the step h_k of parameter k,
@@ -37,8 +38,10 @@ import numpy as np
 from slidespin._jit import is_none_type, jit, overload
 from slidespin.contact._engine import (
     P_BODY,
+    P_CSYM,
     P_K,
     P_LAW,
+    P_RSYM,
     P_SHAPE,
     P_T00,
     P_T01,
@@ -50,6 +53,15 @@ from slidespin.contact._engine import (
     accelerations_jacobian,
 )
 from slidespin.contact._kernel_ellipse import tensor_in_body
+from slidespin.contact._kernel_footprint import (
+    GEO_P0,
+    GEO_P1,
+    GEO_P2,
+    GEO_XG,
+    GEO_XP,
+    GEO_YG,
+    GEO_YP,
+)
 from slidespin.motion._flow import NY, _rhs, flow, unit_direction
 
 
@@ -131,11 +143,13 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
 def parameter_rhs(par, jo, y, d, c, sn, out):
     """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
     d𝔽 = (d[0], d[1]; d[2], d[3]) per unit θ, in the tensor's own frame), the radius of
-    gyration (by d[4]) and an ellipse's pressure centre G (by (d[5], d[6]) in the body frame):
-    exact, from the wrench's isotropic parts and its derivatives in ``jo``
-    (:func:`rhs_jacobian` at ``y``; c, sn the cosine and sine of its angle φ); the wrench is
-    linear in 𝔽 (MODEL §10)."""
+    gyration (by d[4]), the pressure centre G (by (d[5], d[6]) in the body frame) and a
+    footprint's pressure coefficients (by (d[7], d[8], d[9])): exact, from the wrench's
+    isotropic parts and its derivatives in ``jo`` (:func:`rhs_jacobian` at ``y``; c, sn the
+    cosine and sine of its angle φ; the layout of :mod:`slidespin.contact._jacobian`); the
+    wrench is linear in 𝔽 (MODEL §10)."""
     d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
+    dp0, dp1, dp2 = d[7], d[8], d[9]
     u1, u2, u3, _ = unit_direction(y)
     k = par[P_K]
     e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, par[P_BODY] != 0.0, c, sn)
@@ -144,10 +158,14 @@ def parameter_rhs(par, jo, y, d, c, sn, out):
     mm = -(e00 * jo[5] + e01 * jo[6] + e10 * jo[7] + e11 * jo[8])
     b1 = c * fbx - sn * fby
     b2 = sn * fbx + c * fby
-    if dxg != 0.0 or dyg != 0.0:  # (NaN where the kernel has no ∂W/∂G: never direct there)
+    if dxg != 0.0 or dyg != 0.0:
         b1 += dxg * jo[21] + dyg * jo[24]
         b2 += dxg * jo[22] + dyg * jo[25]
         mm += dxg * jo[23] + dyg * jo[26]
+    if dp0 != 0.0 or dp1 != 0.0 or dp2 != 0.0:  # (zero for an ellipse: G carries its law)
+        b1 += dp0 * jo[27] + dp1 * jo[30] + dp2 * jo[33]
+        b2 += dp0 * jo[28] + dp1 * jo[31] + dp2 * jo[34]
+        mm += dp0 * jo[29] + dp1 * jo[32] + dp2 * jo[35]
     b3 = mm / k
     if dk != 0.0:
         dt = -u3 / (k * k) * dk  # the twist's ω = u3/k moves
@@ -209,13 +227,16 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
 
 @jit(error_model="numpy")
 def direct_parameters(pars, geos, hs):
-    """Which parameters move only the tensor's entries, k and an ellipse's pressure centre
-    (``direct``: their ∂G/∂θ is :func:`parameter_rhs`'s), and their rates (d𝔽, dk, dξ_G,
-    dη_G) per unit θ: central differences of the rows (linear in θ for the tensor and G)."""
+    """Which parameters move only the tensor's entries, k and the pressure centre
+    (``direct``: their ∂G/∂θ is :func:`parameter_rhs`'s), and their rates per unit θ
+    (d𝔽, dk, dξ_G, dη_G, and a footprint's dp₀, dp₁, dp₂): central differences of the rows,
+    linear in θ for the tensor, G and p. An ellipse's G moves its law too (uniform ↔ linear:
+    the kernel's formulas are the same); a footprint's moves its pressure coefficients (and
+    its symmetry flags, which only the stop's classification reads)."""
     npar = hs.size
     direct = np.zeros(npar, dtype=np.bool_)
-    dts = np.zeros((npar, 7))
-    moved = (P_T00, P_T01, P_T10, P_T11, P_K, P_XG, P_YG)
+    dts = np.zeros((npar, 10))
+    moved = (P_T00, P_T01, P_T10, P_T11, P_K)
     ellipse = pars[0, P_SHAPE] != SHAPE_FOOTPRINT
     for k in range(npar):
         p = pars[1 + 2 * k]
@@ -223,16 +244,34 @@ def direct_parameters(pars, geos, hs):
         same = True
         for i in range(pars.shape[1]):
             free = i == P_T00 or i == P_T01 or i == P_T10 or i == P_T11 or i == P_K
-            # G moves with the law uniform ↔ linear (the kernel's formulas are the same)
-            free = free or (ellipse and (i == P_XG or i == P_YG or i == P_LAW))
+            if ellipse:
+                free = free or i == P_XG or i == P_YG or i == P_LAW
+            else:
+                free = free or i == P_CSYM or i == P_RSYM
             if not free and (p[i] != pars[0, i] or m[i] != pars[0, i]):
                 same = False
+        gp = geos[1 + 2 * k]
+        gm = geos[2 + 2 * k]
         for i in range(geos.shape[1]):
-            if geos[1 + 2 * k, i] != geos[0, i] or geos[2 + 2 * k, i] != geos[0, i]:
+            free = not ellipse and (
+                i == GEO_P0 or i == GEO_P1 or i == GEO_P2 or i == GEO_XG or i == GEO_YG
+                or i == GEO_XP or i == GEO_YP
+            )  # fmt: skip
+            if not free and (gp[i] != geos[0, i] or gm[i] != geos[0, i]):
                 same = False
         direct[k] = same
-        for i in range(7):
-            dts[k, i] = (p[moved[i]] - m[moved[i]]) / (2.0 * hs[k])
+        h2 = 2.0 * hs[k]
+        for i in range(5):
+            dts[k, i] = (p[moved[i]] - m[moved[i]]) / h2
+        if ellipse:
+            dts[k, 5] = (p[P_XG] - m[P_XG]) / h2
+            dts[k, 6] = (p[P_YG] - m[P_YG]) / h2
+        else:
+            dts[k, 5] = (gp[GEO_XG] - gm[GEO_XG]) / h2
+            dts[k, 6] = (gp[GEO_YG] - gm[GEO_YG]) / h2
+            dts[k, 7] = (gp[GEO_P0] - gm[GEO_P0]) / h2
+            dts[k, 8] = (gp[GEO_P1] - gm[GEO_P1]) / h2
+            dts[k, 9] = (gp[GEO_P2] - gm[GEO_P2]) / h2
     return direct, dts
 
 

@@ -17,14 +17,14 @@ variational equation dS/dτ = (∂G/∂y) S + ∂G/∂θ, integrated with the mo
 the public entries; this module holds the parameter names, their perturbations and the run.
 
 The variational equation's right-hand side uses the wrench's exact derivatives where the
-kernels give them (an ellipse under every law: analytic; a footprint: exact in the ICR,
-differenced there only for a far ICR or a thin ring) and a central difference of the whole
-right-hand side elsewhere (a footprint's pressure centre); it is solved by collocation on the
-plain run's own steps, or integrated with the motion (see
+kernels give them (an ellipse under every law: analytic; a footprint: exact in the ICR and
+the pressure centre, differenced in the ICR only for a far ICR or a thin ring) and a central
+difference of the whole right-hand side where they have none (a blade, a translation); it is
+solved by collocation on the plain run's own steps, or integrated with the motion (see
 :mod:`slidespin.motion._sensitivity_core`). Cost (``benchmarks/sensitivities_bench.py``):
-2.3-2.8x a plain run for 6 parameters, 3.2-4.5x for 9 (2.8-3.1x and 3.4-5.1x with a
-footprint's derivatives differenced in the ICR; 6.9-7.6x and 9.7-14.3x integrated with the
-motion; 18-55x before the kernels' derivatives; docs/sensitivities.md).
+2.3-2.8x a plain run for 6 parameters, 3.0-3.3x for 9 (2.8-3.1x and 3.4-5.1x with a
+footprint's derivatives differenced; 6.9-7.6x and 9.7-14.3x integrated with the motion;
+18-55x before the kernels' derivatives; docs/sensitivities.md).
 """
 
 from __future__ import annotations
@@ -401,7 +401,15 @@ def compute(
             continue
         val = _value(body, friction, state, name)
         pp, gp, yp = _rows_moved(body, friction, state, name, val + h, g, (par0, geo0, y0))
-        pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0, y0))
+        if name in ("xi_c", "eta_c"):
+            # G, the ellipse's law and the footprint's pressure coefficients are linear in
+            # the pressure centre (MODEL §10): the row at val − h mirrors the one at val + h
+            # (one new body's geometry per parameter, not two; the start does not move)
+            pm, gm, ym = pp.copy(), 2.0 * geo0 - gp, yp
+            for i in (_engine.P_XG, _engine.P_YG):
+                pm[i] = 2.0 * par0[i] - pp[i]
+        else:
+            pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0, y0))
         pars[1 + 2 * k], pars[2 + 2 * k] = pp, pm
         if gp is not geo0 or gm is not geo0:
             geos[1 + 2 * k], geos[2 + 2 * k] = gp, gm
