@@ -17,17 +17,18 @@ theorem (the integrand's gradient ~ |x|^(k−2) is integrable for k ≥ 1),
 so an edge adds −n̂_j L_k, L_k = ∫ (d n̂ + s t̂)^{⊗k}/√(d² + s²) ds, the line integrals the fan
 already forms (its triangle is d/(k+1) L_k; an edge through c, d = 0, has no area but still
 its L_k). A disk's tensors are scalars of its distance D = |o − c| in the frame (u, v) of
-u = (o − c)/D (:func:`slidespin.contact._kernel_footprint.round_terms`); moving c by
+u = (o − c)/D (:func:`slidespin.contact._kernel_disk.round_terms`); moving c by
 a u + b v moves D by −a and turns the frame by −b/D, and the scalars' D-derivatives follow
 from dI_n/dD = −∫ D sin^{2n+2}ψ/h dψ: inside, −(2D/R) T_{n+1}(m); outside,
-−2 k^{2n+2} T_{n+1}(m), T_n of the module notes there. T_{n+1} diverges at the rim (m → 1),
-but the tensors need only the differences T_{n+1} − T_{n+2} = V_{n+1} (inside) and
-T_{n+1} − m T_{n+2} = U_{n+1} (outside), finite there (:func:`round_terms_jac`); the frame's
-turn (÷ D) is written with D factored out, G₂'s through (2U₁ − U₀)/m by its own series,
-so that c at the centre needs no special case. The V and N of a far ICR (Gauss rules) and a
-thin ring (double-double arithmetic) are differenced in c instead (:func:`_dw_dc`): central
-differences of the exact V and N at the step h = ``REL_STEP`` (extent + |c − o|), O(h²) =
-1e-10 relative, five evaluations of V and N. The isotropic parts Q = sign(ω) ẑ×V and N'
+−2 k^{2n+2} T_{n+1}(m) (T_n of the notes of :mod:`slidespin.contact._kernel_footprint`).
+T_{n+1} diverges at the rim (m → 1), but the tensors need only the differences
+T_{n+1} − T_{n+2} = V_{n+1} (inside) and T_{n+1} − m T_{n+2} = U_{n+1} (outside), finite
+there (:func:`slidespin.contact._kernel_disk.round_terms_jac`); the frame's turn (÷ D) is
+written with D factored out, G₂'s through (2U₁ − U₀)/m by its own series, so that c at the
+centre needs no special case. The V and N of a far ICR (Gauss rules) and a thin ring
+(double-double arithmetic) are differenced in c instead (:func:`_iso_parts_differenced`):
+central differences of the exact V and N at the step h = ``REL_STEP`` (extent + |c − o|),
+O(h²) = 1e-10 relative, five evaluations of V and N. The isotropic parts Q = sign(ω) ẑ×V and N'
 (M = −Σ 𝔽_ij N'_ij) come exact.
 
 The pressure centre (MODEL §15) moves G and the pressure coefficients p = (p₀, p₁, p₂) (the
@@ -80,7 +81,7 @@ REL_STEP = 1e-5
 def fan_tensors_jac(edges, circles, cx, cy, dg):
     """:func:`slidespin.contact._kernel_footprint.fan_tensors` (returned) and its derivatives
     ∂G/∂cx, ∂G/∂cy in the same order into ``dg[0:9]``, ``dg[9:18]`` (module notes; not for a
-    thin ring: :func:`slidespin.contact._kernel_footprint.thin_hole`)."""
+    thin ring: :func:`slidespin.contact._kernel_disk.thin_hole`)."""
     g = np.zeros(9)
     for i in range(18):
         dg[i] = 0.0
