@@ -41,7 +41,7 @@ from slidespin._jit import is_none_type, jit, overload
 from slidespin.contact._engine import P_BN, P_K, P_XG, P_YG
 from slidespin.contact._kernel_footprint import GEO_XG, GEO_YG
 from slidespin.motion import _dop853 as _dop
-from slidespin.motion._flow import NY, _rhs
+from slidespin.motion._flow import NY, _rhs, unit_direction
 from slidespin.motion._sensitivity_rhs import parameter_rhs, rhs_jacobian, row_patch
 
 
@@ -380,16 +380,16 @@ def _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, y, gp, gm, G, Jc, B):
             Jc[i, q] = Jy[i, CORE[q]]
     cph = math.cos(y[7])
     sph = math.sin(y[7])
+    u1, u2, u3, _ = unit_direction(y)
     for k in range(npar):
         for i in range(NY):
             B[k, i] = 0.0
         if direct[k]:
-            d = dts[k]
             moved = False
-            for i in range(d.size):
-                moved = moved or d[i] != 0.0
+            for i in range(dts.shape[1]):
+                moved = moved or dts[k, i] != 0.0
             if moved:
-                parameter_rhs(pars[0], jo, y, d, cph, sph, B[k])
+                parameter_rhs(pars[0], jo, u1, u2, u3, y[3], dts[k], cph, sph, B[k])
             continue
         j = 1 + 2 * k
         fails += _rhs(pars[j], kcs[j], W, row_patch(fp, geos, j), y, gp)

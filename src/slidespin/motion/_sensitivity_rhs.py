@@ -81,6 +81,18 @@ def _row_patch_of_type(fp, geos, j):
 
 
 @jit(error_model="numpy", inline="always")
+def _projected_row(Jy, i, g0, g1, g2, u1, u2, u3, inz):
+    """Row ``i`` of ∂G/∂y: its ∂G_i/∂u (g0, g1, g2) through the normalisation's projection
+    P = (I − uuᵀ)/|z| into columns 0–2, the other columns zeroed (3 and 7 set after)."""
+    gu = g0 * u1 + g1 * u2 + g2 * u3
+    Jy[i, 0] = (g0 - gu * u1) * inz
+    Jy[i, 1] = (g1 - gu * u2) * inz
+    Jy[i, 2] = (g2 - gu * u3) * inz
+    for j in range(3, NY):
+        Jy[i, j] = 0.0
+
+
+@jit(error_model="numpy", inline="always")
 def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
     """The right-hand side G(y) of :func:`slidespin.motion._flow._rhs` into ``out`` and, when
     the kernel has the wrench's exact derivatives, ∂G/∂y into ``Jy`` (NY × NY); returns
@@ -103,30 +115,18 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
     c0 = a1 + u1 * d00 + u2 * d10 + u3 * d20
     c1 = a2 + u1 * d01 + u2 * d11 + u3 * d21
     c2 = a3 + u1 * d02 + u2 * d12 + u3 * d22
-    for i in range(NY):
-        for j in range(NY):
-            Jy[i, j] = 0.0
-    # rows ∂G_i/∂u before the normalisation's projection P = (I − uuᵀ)/|z|, kept in the
-    # columns 4–6 of Jy (zero in ∂G/∂y) until projected into columns 0–2
-    Jy[0, 4], Jy[0, 5], Jy[0, 6] = d00 - u1 * c0 - ua, d01 - u1 * c1, d02 - u1 * c2
-    Jy[1, 4], Jy[1, 5], Jy[1, 6] = d10 - u2 * c0, d11 - u2 * c1 - ua, d12 - u2 * c2
-    Jy[2, 4], Jy[2, 5], Jy[2, 6] = d20 - u3 * c0, d21 - u3 * c1, d22 - u3 * c2 - ua
-    Jy[3, 4], Jy[3, 5], Jy[3, 6] = c0, c1, c2
-    Jy[5, 4] = s2
-    Jy[6, 5] = s2
-    Jy[7, 6] = s2 * ik
-    if r > 0.0:
-        Jy[8, 4] = s2 * u1 / r
-        Jy[8, 5] = s2 * u2 / r
-    for i in range(NY):
-        g0, g1, g2 = Jy[i, 4], Jy[i, 5], Jy[i, 6]
-        gu = g0 * u1 + g1 * u2 + g2 * u3
-        Jy[i, 0] = (g0 - gu * u1) * inz
-        Jy[i, 1] = (g1 - gu * u2) * inz
-        Jy[i, 2] = (g2 - gu * u3) * inz
-        Jy[i, 4] = 0.0
-        Jy[i, 5] = 0.0
-        Jy[i, 6] = 0.0
+    # rows ∂G_i/∂u before the normalisation's projection P = (I − uuᵀ)/|z| (rows 4–8: t, x,
+    # y, φ, ℓ); columns 4–6 and 8 of ∂G/∂y are zero
+    sr = s2 / r if r > 0.0 else 0.0
+    _projected_row(Jy, 0, d00 - u1 * c0 - ua, d01 - u1 * c1, d02 - u1 * c2, u1, u2, u3, inz)
+    _projected_row(Jy, 1, d10 - u2 * c0, d11 - u2 * c1 - ua, d12 - u2 * c2, u1, u2, u3, inz)
+    _projected_row(Jy, 2, d20 - u3 * c0, d21 - u3 * c1, d22 - u3 * c2 - ua, u1, u2, u3, inz)
+    _projected_row(Jy, 3, c0, c1, c2, u1, u2, u3, inz)
+    _projected_row(Jy, 4, 0.0, 0.0, 0.0, u1, u2, u3, inz)
+    _projected_row(Jy, 5, s2, 0.0, 0.0, u1, u2, u3, inz)
+    _projected_row(Jy, 6, 0.0, s2, 0.0, u1, u2, u3, inz)
+    _projected_row(Jy, 7, 0.0, 0.0, s2 * ik, u1, u2, u3, inz)
+    _projected_row(Jy, 8, sr * u1, sr * u2, 0.0, u1, u2, u3, inz)
     Jy[0, 7] = p0 - udphi * u1
     Jy[1, 7] = p1 - udphi * u2
     Jy[2, 7] = p2 - udphi * u3
@@ -140,17 +140,16 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
 
 
 @jit(error_model="numpy", inline="always")
-def parameter_rhs(par, jo, y, d, c, sn, out):
+def parameter_rhs(par, jo, u1, u2, u3, ln_s, d, c, sn, out):
     """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
     d𝔽 = (d[0], d[1]; d[2], d[3]) per unit θ, in the tensor's own frame), the radius of
     gyration (by d[4]), the pressure centre G (by (d[5], d[6]) in the body frame) and a
     footprint's pressure coefficients (by (d[7], d[8], d[9])): exact, from the wrench's
-    isotropic parts and its derivatives in ``jo`` (:func:`rhs_jacobian` at ``y``; c, sn the
-    cosine and sine of its angle φ; the layout of :mod:`slidespin.contact._jacobian`); the
-    wrench is linear in 𝔽 (MODEL §10)."""
+    isotropic parts and its derivatives in ``jo`` (:func:`rhs_jacobian` at the state of unit
+    direction (u1, u2, u3), ln s = ``ln_s`` and angle φ, c, sn its cosine and sine; the
+    layout of :mod:`slidespin.contact._jacobian`); the wrench is linear in 𝔽 (MODEL §10)."""
     d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
     dp0, dp1, dp2 = d[7], d[8], d[9]
-    u1, u2, u3, _ = unit_direction(y)
     k = par[P_K]
     e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, par[P_BODY] != 0.0, c, sn)
     fbx = -(e00 * jo[3] + e01 * jo[4])  # F = −𝔽Q, M = −Σ 𝔽_ij N_ij (body frame)
@@ -178,7 +177,7 @@ def parameter_rhs(par, jo, y, d, c, sn, out):
     out[2] += b3 - ub * u3
     out[3] += ub
     if dk != 0.0:
-        s = math.exp(y[3])
+        s = math.exp(ln_s)
         out[7] -= s * s * u3 / (k * k) * dk
 
 
@@ -197,6 +196,7 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
     fails = st
     cph = math.cos(Y[7])  # for parameter_rhs, once for all parameters
     sph = math.sin(Y[7])
+    u1, u2, u3, _ = unit_direction(Y[:NY])
     for k in range(npar):
         off = NY * (k + 1)
         if ok and direct[k]:
@@ -211,7 +211,7 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
             for i in range(d.size):
                 moved = moved or d[i] != 0.0
             if moved:
-                parameter_rhs(pars[0], jo, Y[:NY], d, cph, sph, out[off : off + NY])
+                parameter_rhs(pars[0], jo, u1, u2, u3, Y[3], d, cph, sph, out[off : off + NY])
             continue
         h = hs[k]
         for i in range(NY):
