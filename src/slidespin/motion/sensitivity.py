@@ -408,6 +408,8 @@ def compute(
             pm, gm, ym = pp.copy(), 2.0 * geo0 - gp, yp
             for i in (_engine.P_XG, _engine.P_YG):
                 pm[i] = 2.0 * par0[i] - pp[i]
+        elif name in ("fx", "fy", "f") and _entry_in_range(name, val - h):
+            pm, gm, ym = 2.0 * par0 - pp, gp, yp  # (the tensor's entries: linear in θ)
         else:
             pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0, y0))
         pars[1 + 2 * k], pars[2 + 2 * k] = pp, pm
