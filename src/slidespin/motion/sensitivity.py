@@ -22,7 +22,7 @@ the pressure centre, differenced in the ICR only for a far ICR or a thin ring) a
 difference of the whole right-hand side where they have none (a blade, a translation); it is
 solved by collocation on the plain run's own steps, or integrated with the motion (see
 :mod:`slidespin.motion._sensitivity_core`). Cost (``benchmarks/sensitivities_bench.py``):
-2.3-2.9x a plain run for 6 parameters, 2.9-3.2x for 9 (2.8-3.1x and 3.4-5.1x with a
+2.2-2.8x a plain run for 6 parameters, 2.7-3.2x for 9 (2.8-3.1x and 3.4-5.1x with a
 footprint's derivatives differenced; 6.9-7.6x and 9.7-14.3x integrated with the motion;
 18-55x before the kernels' derivatives; docs/sensitivities.md).
 """
