@@ -66,10 +66,14 @@ def _setup(case, cases=CASES):
     return body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi
 
 
-def _twist(body, ell, icr, omega, phi):
-    """Natural twist (v/ℓ, ω) of G in the fixed frame whose ICR is ``icr`` extents from G."""
-    ext = body.patch.to_arrays().frame[2]
-    d = np.array(icr) * ext / ell
+def _twist(body, ell, icr, omega, phi, at=None):
+    """Natural twist (v/ℓ, ω) of G in the fixed frame whose ICR is ``icr`` extents from G,
+    or (``at``, metres) at that point of the body frame."""
+    if at is None:
+        ext = body.patch.to_arrays().frame[2]
+        d = np.array(icr) * ext / ell
+    else:
+        d = (np.array(at) - np.array(body.mass_centre)) / ell
     vb = -omega * np.array([-d[1], d[0]])  # c − r_G = ẑ×v/ω
     c, s = math.cos(phi), math.sin(phi)
     return np.array([c * vb[0] - s * vb[1], s * vb[0] + c * vb[1], omega])
@@ -90,6 +94,20 @@ def _ref(fp, ref_law, t, frame, ell, phi, tw):
     return np.array([r[0], r[1], r[2] / ell])
 
 
+def _ref_twist_jacobian(fp, ref_law, t, frame, ell, phi, tw, step):
+    """∂(Fx, Fy, M)/∂(vx, vy, ω) of the reference by Richardson differences at ``step``."""
+    ref = np.empty((3, 3))
+    for k in range(3):
+
+        def f(x, k=k):
+            w = tw.copy()
+            w[k] = x
+            return _ref(fp, ref_law, t, frame, ell, phi, w)
+
+        ref[:, k] = richardson(f, tw[k], step)
+    return ref
+
+
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_jacobian_matches_reference_differences(case):
     body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi = _setup(case)
@@ -100,14 +118,7 @@ def test_jacobian_matches_reference_differences(case):
     assert out[:3] == pytest.approx(_ref(fp, ref_law, t, frame, ell, phi, tw), abs=1e-9)
     scale = np.linalg.norm(tw)
     ref = np.empty((3, 4))
-    for k in range(3):
-
-        def f(x, k=k):
-            w = tw.copy()
-            w[k] = x
-            return _ref(fp, ref_law, t, frame, ell, phi, w)
-
-        ref[:, k] = richardson(f, tw[k], 2e-3 * scale)
+    ref[:, :3] = _ref_twist_jacobian(fp, ref_law, t, frame, ell, phi, tw, 2e-3 * scale)
     ref[:, 3] = richardson(lambda p: _ref(fp, ref_law, t, frame, ell, p, tw), phi, 2e-3)
     got = np.column_stack([out[9:18].reshape(3, 3), out[18:21]])
     big = np.abs(ref).max()
@@ -199,22 +210,10 @@ AT_POINTS = {
 def test_jacobian_where_the_icr_meets_the_footprints_features(case):
     body, fe, fc, geo, ell, t, frame, ref_law, point, omega, phi = _setup(case, AT_POINTS)
     fp = AT_POINTS[case][0]
-    d = (np.array(point) - np.array(body.mass_centre)) / ell
-    vb = -omega * np.array([-d[1], d[0]])  # c − r_G = ẑ×v/ω
-    c, s = math.cos(phi), math.sin(phi)
-    tw = np.array([c * vb[0] - s * vb[1], s * vb[0] + c * vb[1], omega])
+    tw = _twist(body, ell, None, omega, phi, at=point)
     ok, out = _kernel(fe, fc, geo, t, frame, phi, tw)
     assert ok
-    scale = abs(omega)
-    ref = np.empty((3, 3))
-    for k in range(3):
-
-        def f(x, k=k):
-            w = tw.copy()
-            w[k] = x
-            return _ref(fp, ref_law, t, frame, ell, phi, w)
-
-        ref[:, k] = richardson(f, tw[k], 1e-4 * scale)
+    ref = _ref_twist_jacobian(fp, ref_law, t, frame, ell, phi, tw, 1e-4 * abs(omega))
     got = out[9:18].reshape(3, 3)
     assert np.abs(got - ref).max() <= 1e-6 * np.abs(ref).max(), (got, ref)
 
@@ -225,7 +224,7 @@ def test_edge_through_the_icr_is_the_limit_of_its_neighbours(point):
     # branch d = 0 of edge_lines): ∂G/∂c there is the limit from either side (G is C¹)
     edges = np.array([[0, 0, 1, 0], [1, 0, 1, 1], [1, 1, 0, 1], [0, 1, 0, 0]], dtype=float)
     circles = np.zeros((0, 4))
-    dg = np.empty(18)
+    dg = np.empty(27)
     KFJ.fan_tensors_jac(edges, circles, point[0], point[1], dg)
     at = dg.copy()
     for off in ((1e-9, 3e-10), (-1e-9, 2e-10), (4e-10, -1e-9), (-3e-10, -1e-9)):

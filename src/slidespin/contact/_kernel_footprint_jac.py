@@ -80,11 +80,12 @@ REL_STEP = 1e-5
 @jit(error_model="numpy")
 def fan_tensors_jac(edges, circles, cx, cy, dg):
     """:func:`slidespin.contact._kernel_footprint.fan_tensors` (returned) and its derivatives
-    ∂G/∂cx, ∂G/∂cy in the same order into ``dg[0:9]``, ``dg[9:18]`` (module notes; not for a
+    ∂G/∂cx, ∂G/∂cy in the same order into ``dg[0:9]``, ``dg[9:18]``, G itself into
+    ``dg[18:27]`` (the view returned; module notes; not for a
     thin ring: :func:`slidespin.contact._kernel_disk.thin_hole`)."""
-    g = np.zeros(9)
-    for i in range(18):
+    for i in range(27):
         dg[i] = 0.0
+    g = dg[18:27]
     rq = -1.0
     for i in range(edges.shape[0]):
         ln, tx, ty, d, j0, j1, j2, j3, rq = edge_lines(edges, i, cx, cy, rq)
@@ -137,13 +138,13 @@ def fan_tensors_jac(edges, circles, cx, cy, dg):
 
 
 @jit(error_model="numpy")
-def iso_parts_jac(edges, circles, geo, cx, cy, dv):
+def iso_parts_jac(edges, circles, geo, cx, cy, dv, work):
     """:func:`slidespin.contact._kernel_footprint.iso_parts` (V, N; returned) about an ICR c
     near the footprint (the exact fan) and their derivatives into ``dv``: ∂(V, N)/∂cx at
     ``dv[0:6]``, ∂/∂cy at ``dv[6:12]``, ∂/∂p₀, ∂/∂p₁, ∂/∂p₂ at ``dv[12:18]``, ``dv[18:24]``,
     ``dv[24:30]`` (the order of V, N; V and N are linear in p: ∂V/∂p_i = φ_i(c) G₁ + G₂∇φ_i,
-    ∂S/∂p_i = φ_i(c) G₂ + G₃∇φ_i with φ = (1, ξ, η))."""
-    dg = np.empty(18)
+    ∂S/∂p_i = φ_i(c) G₂ + G₃∇φ_i with φ = (1, ξ, η)); ``work`` (27) for the tensors."""
+    dg = work
     g = fan_tensors_jac(edges, circles, cx, cy, dg)
     p0, p1, p2 = geo[GEO_P0], geo[GEO_P1], geo[GEO_P2]
     al = p0 + p1 * cx + p2 * cy
@@ -244,11 +245,12 @@ def jacobian_body(edges, circles, geo, b00, b01, b10, b11, vx, vy, omega, out):
     thin = False
     for i in range(circles.shape[0]):
         thin = thin or thin_hole(circles, i)
-    dv = np.empty(36)  # ∂(V, N)/∂(cx, cy, p₀, p₁, p₂) (6 each); (V, N) itself at dv[30:36]
+    work = np.empty(63)  # (one allocation per call)
+    dv = work[:36]  # ∂(V, N)/∂(cx, cy, p₀, p₁, p₂) (6 each); (V, N) itself at dv[30:36]
     if dist > FAR_RATIO * ext or thin:
         v = _iso_parts_differenced(edges, circles, geo, cx, cy, REL_STEP * (ext + dist), dv)
     else:
-        v = iso_parts_jac(edges, circles, geo, cx, cy, dv)
+        v = iso_parts_jac(edges, circles, geo, cx, cy, dv, work[36:])
     for q in range(6):
         dv[30 + q] = v[q]
     fx, fy, m = _wrench_of(dv, 30, sg, b00, b01, b10, b11)
