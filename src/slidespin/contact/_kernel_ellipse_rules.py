@@ -387,11 +387,14 @@ def _sums_trapezoid(W, n, h):
 def _sums_cc(W, n, half):
     """Clenshaw–Curtis sums over nodes 0..n with the N, N/2 and N/4 weights; (e₁, e₂)."""
     o = _CC_OFFSETS[_CC_INDEX[n]]
+    c1 = _CC_W1[o : o + n + 1]  # (sliced: an index known to be non-negative)
+    c2 = _CC_W2[o : o + n + 1]
+    c4 = _CC_W4[o : o + n + 1]
     x1 = y1 = m1 = x2 = y2 = m2 = x4 = y4 = m4 = 0.0
     for j in range(n + 1):
-        w1 = _CC_W1[o + j]
-        w2 = _CC_W2[o + j]
-        w4 = _CC_W4[o + j]
+        w1 = c1[j]
+        w2 = c2[j]
+        w4 = c4[j]
         x1 += w1 * W[5, j]
         y1 += w1 * W[6, j]
         m1 += w1 * W[7, j]
