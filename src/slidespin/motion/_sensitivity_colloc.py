@@ -42,7 +42,7 @@ from slidespin.contact._engine import P_BN, P_K, P_XG, P_YG
 from slidespin.contact._kernel_footprint import GEO_XG, GEO_YG
 from slidespin.motion import _dop853 as _dop
 from slidespin.motion._flow import NY, _rhs, unit_direction
-from slidespin.motion._sensitivity_rhs import parameter_rhs, rhs_jacobian, row_patch
+from slidespin.motion._sensitivity_rhs import moved_row, parameter_rhs, rhs_jacobian, row_patch
 
 
 def _lobatto_points(n: int) -> np.ndarray:
@@ -367,36 +367,47 @@ def collocation_step(S, K, Z, Jc, Bs, h, M, R):
 
 
 @jit(error_model="numpy")
-def _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, y, gp, gm, G, Jc, B):
-    """G, the core columns of J = ∂G/∂y (``Jc``, NY × NCORE) and B_k = ∂G/∂θ_k at the state
-    ``y`` (as :func:`joint_rhs` forms them), into ``G``, ``Jc``, ``B``; returns (wrench
-    evaluations off target, J available). ``gp``, ``gm`` (NY) are work arrays."""
+def _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, y, gp, gm, G, Js, Bs, m):
+    """G, the core columns of J = ∂G/∂y (into ``Js[m]``, NY × NCORE) and B_k = ∂G/∂θ_k
+    (into ``Bs[m]``) at the state ``y`` (as :func:`joint_rhs` forms them), G into ``G``;
+    returns (wrench evaluations off target, J available). ``gp``, ``gm`` (NY) are work
+    arrays. (The slots by index and the rates ``dts`` read in place: an array view costs two
+    atomic reference counts, and per parameter and node they added up to a few per cent.)"""
     npar = hs.size
     fails, ok = rhs_jacobian(pars[0], kcs[0], W, jo, row_patch(fp, geos, 0), y, G, Jy)
-    if not ok:
-        return fails, False
+    if ok:
+        for i in range(NY):
+            for q in range(NCORE):
+                Js[m, i, q] = Jy[i, CORE[q]]
+        cph = math.cos(y[7])
+        sph = math.sin(y[7])
+        u1, u2, u3, _ = unit_direction(y)
+        for k in range(npar):
+            for i in range(NY):
+                Bs[m, k, i] = 0.0
+            if not direct[k]:
+                fails += _differenced(pars, kcs, W, fp, geos, hs, y, gp, gm, Bs, m, k)
+            elif moved_row(dts, k):
+                g0, g1, g2, g3, g7 = parameter_rhs(pars, jo, u1, u2, u3, y[3], dts, k, cph, sph)
+                Bs[m, k, 0] = g0
+                Bs[m, k, 1] = g1
+                Bs[m, k, 2] = g2
+                Bs[m, k, 3] = g3
+                Bs[m, k, 7] = g7
+    return fails, ok
+
+
+@jit(error_model="numpy")
+def _differenced(pars, kcs, W, fp, geos, hs, y, gp, gm, Bs, m, k):
+    """B_k at ``y`` into ``Bs[m, k]`` by the central difference of the right-hand sides of
+    the rows 1 + 2k, 2 + 2k (a parameter without an exact ∂G/∂θ); returns the wrench
+    evaluations off target."""
+    j = 1 + 2 * k
+    fails = _rhs(pars[j], kcs[j], W, row_patch(fp, geos, j), y, gp)
+    fails += _rhs(pars[j + 1], kcs[j + 1], W, row_patch(fp, geos, j + 1), y, gm)
     for i in range(NY):
-        for q in range(NCORE):
-            Jc[i, q] = Jy[i, CORE[q]]
-    cph = math.cos(y[7])
-    sph = math.sin(y[7])
-    u1, u2, u3, _ = unit_direction(y)
-    for k in range(npar):
-        for i in range(NY):
-            B[k, i] = 0.0
-        if direct[k]:
-            moved = False
-            for i in range(dts.shape[1]):
-                moved = moved or dts[k, i] != 0.0
-            if moved:
-                parameter_rhs(pars[0], jo, u1, u2, u3, y[3], dts[k], cph, sph, B[k])
-            continue
-        j = 1 + 2 * k
-        fails += _rhs(pars[j], kcs[j], W, row_patch(fp, geos, j), y, gp)
-        fails += _rhs(pars[j + 1], kcs[j + 1], W, row_patch(fp, geos, j + 1), y, gm)
-        for i in range(NY):
-            B[k, i] = (gp[i] - gm[i]) / (2.0 * hs[k])
-    return fails, True
+        Bs[m, k, i] = (gp[i] - gm[i]) / (2.0 * hs[k])
+    return fails
 
 
 @jit(error_model="numpy")
@@ -479,11 +490,9 @@ def solve_on_records(
     gp = np.empty(NY)
     gm = np.empty(NY)
     G = np.empty(NY)  # (G at a point: the collocation needs only J and B)
-    Js = np.zeros((NL, NY, NCORE))
-    Bs = np.empty((NL, npar, NY))
+    Js = np.zeros((NL + 1, NY, NCORE))  # the Lobatto points' J, B; the record's in slot NL
+    Bs = np.empty((NL + 1, npar, NY))
     Gr = np.empty(NY)
-    Jr = np.zeros((NY, NCORE))
-    Br = np.empty((npar, NY))
     yi = np.empty(NY)
     Kx = np.empty((16, NY))
     F = np.empty((N_DENSE, NY))
@@ -500,7 +509,7 @@ def solve_on_records(
     for i in range(nr):
         rec[0, i] = Y[i]
     fails, ok = _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, rows[0], gp, gm,
-                      G, Js[0], Bs[0])  # fmt: skip
+                      G, Js, Bs, 0)  # fmt: skip
     if not ok:
         return fails, False
     last = NL - 1
@@ -510,7 +519,7 @@ def solve_on_records(
         fails += _dense(pars[0], kcs[0], W, fp, y0, H, stages[st + 1, NY + 1 :], Kx, F, yi)
         npc = step_pieces(pars[0], fp, y0, F, yi, gprev, pieces)
         f, ok = _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, rows[st + 1], gp, gm,
-                      Gr, Jr, Br)  # fmt: skip
+                      Gr, Js, Bs, NL)  # fmt: skip
         fails += f
         if not ok:
             return fails, False
@@ -521,13 +530,13 @@ def solve_on_records(
                 if m == last and pc == npc - 1:  # the step's end: the record
                     for i in range(NY):
                         for q in range(NCORE):
-                            Js[last, i, q] = Jr[i, q]
+                            Js[last, i, q] = Js[NL, i, q]
                         for k in range(npar):
-                            Bs[last, k, i] = Br[k, i]
+                            Bs[last, k, i] = Bs[NL, k, i]
                     continue
                 dense_at(f0 + (f1 - f0) * LOBATTO_C[m], y0, F, yi)
                 f, ok = _node(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, yi, gp, gm,
-                              G, Js[m], Bs[m])  # fmt: skip
+                              G, Js, Bs, m)  # fmt: skip
                 fails += f
                 if not ok:
                     return fails, False
@@ -547,7 +556,7 @@ def solve_on_records(
             rec[st + 1, i] = Y[i]
         end = st + 1
         if end == n - 1:
-            _tail(S, Gr, Jr, Br, rows[end, 3], Y)
+            _tail(S, Gr, Js[NL], Bs[NL], rows[end, 3], Y)
             return fails, True
         if rows[end, 3] < rows[0, 3] - CONVERGED_DROP:
             # the stop's sensitivities converged (|dS/dτ|/rate below conv_tol, as the joint
@@ -557,14 +566,14 @@ def solve_on_records(
             worst = 0.0
             for k in range(npar):
                 for i in range(4, 8):
-                    dS = Br[k, i]
+                    dS = Bs[NL, k, i]
                     for q in range(NCORE):
-                        dS += Jr[i, q] * S[CORE[q], k]
+                        dS += Js[NL, i, q] * S[CORE[q], k]
                     worst = max(worst, abs(dS) / rate / (1.0 + abs(S[i, k])))
             if worst < conv_tol:
                 for i in range(NY):
                     Y[i] = rows[n - 1, i]
-                _tail(S, Gr, Jr, Br, rows[end, 3], Y)
+                _tail(S, Gr, Js[NL], Bs[NL], rows[end, 3], Y)
                 for j in range(end + 1, n):
                     for i in range(nr):
                         rec[j, i] = Y[i] if i >= NY else rows[j, i]

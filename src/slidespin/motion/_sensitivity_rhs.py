@@ -139,19 +139,21 @@ def rhs_jacobian(par, kc, W, jo, fp, y, out, Jy):
     return st, ok
 
 
-@jit(error_model="numpy", inline="always")
-def parameter_rhs(par, jo, u1, u2, u3, ln_s, d, c, sn, out):
-    """∂G/∂θ (added to ``out``) for a parameter that moves only the tensor's entries (by
-    d𝔽 = (d[0], d[1]; d[2], d[3]) per unit θ, in the tensor's own frame), the radius of
-    gyration (by d[4]), the pressure centre G (by (d[5], d[6]) in the body frame) and a
-    footprint's pressure coefficients (by (d[7], d[8], d[9])): exact, from the wrench's
-    isotropic parts and its derivatives in ``jo`` (:func:`rhs_jacobian` at the state of unit
-    direction (u1, u2, u3), ln s = ``ln_s`` and angle φ, c, sn its cosine and sine; the
-    layout of :mod:`slidespin.contact._jacobian`); the wrench is linear in 𝔽 (MODEL §10)."""
-    d00, d01, d10, d11, dk, dxg, dyg = d[0], d[1], d[2], d[3], d[4], d[5], d[6]
-    dp0, dp1, dp2 = d[7], d[8], d[9]
-    k = par[P_K]
-    e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, par[P_BODY] != 0.0, c, sn)
+@jit(error_model="numpy")
+def parameter_rhs(pars, jo, u1, u2, u3, ln_s, dts, q, c, sn):
+    """∂G/∂θ for a parameter that moves only the tensor's entries (by d𝔽 = (d[0], d[1];
+    d[2], d[3]) per unit θ, in the tensor's own frame), the radius of gyration (by d[4]), the
+    pressure centre G (by (d[5], d[6]) in the body frame) and a footprint's pressure
+    coefficients (by (d[7], d[8], d[9])), d = ``dts[q]``: exact, from the wrench's isotropic
+    parts and its derivatives in ``jo`` (:func:`rhs_jacobian` at the state of unit direction
+    (u1, u2, u3), ln s = ``ln_s`` and angle φ, c, sn its cosine and sine; the layout of
+    :mod:`slidespin.contact._jacobian`); the wrench is linear in 𝔽 (MODEL §10). Returns its
+    non-zero components (0, 1, 2, 3, 7); the row is read in place (a view of it would cost a
+    reference count per parameter and node)."""
+    d00, d01, d10, d11, dk = dts[q, 0], dts[q, 1], dts[q, 2], dts[q, 3], dts[q, 4]
+    dxg, dyg, dp0, dp1, dp2 = dts[q, 5], dts[q, 6], dts[q, 7], dts[q, 8], dts[q, 9]
+    k = pars[0, P_K]
+    e00, e01, e10, e11 = tensor_in_body(d00, d01, d10, d11, pars[0, P_BODY] != 0.0, c, sn)
     fbx = -(e00 * jo[3] + e01 * jo[4])  # F = −𝔽Q, M = −Σ 𝔽_ij N_ij (body frame)
     fby = -(e10 * jo[3] + e11 * jo[4])
     mm = -(e00 * jo[5] + e01 * jo[6] + e10 * jo[7] + e11 * jo[8])
@@ -172,13 +174,21 @@ def parameter_rhs(par, jo, u1, u2, u3, ln_s, d, c, sn, out):
         b2 += jo[14] * dt
         b3 += jo[17] * dt / k - jo[2] / (k * k) * dk
     ub = u1 * b1 + u2 * b2 + u3 * b3
-    out[0] += b1 - ub * u1
-    out[1] += b2 - ub * u2
-    out[2] += b3 - ub * u3
-    out[3] += ub
+    g7 = 0.0
     if dk != 0.0:
         s = math.exp(ln_s)
-        out[7] -= s * s * u3 / (k * k) * dk
+        g7 = -s * s * u3 / (k * k) * dk
+    return b1 - ub * u1, b2 - ub * u2, b3 - ub * u3, ub, g7
+
+
+@jit(error_model="numpy", inline="always")
+def moved_row(dts, q):
+    """Whether parameter ``q`` moves anything :func:`parameter_rhs` reads (row ``q`` of
+    ``dts`` not all zero)."""
+    for i in range(dts.shape[1]):
+        if dts[q, i] != 0.0:
+            return True
+    return False
 
 
 @jit(error_model="numpy", inline="always")
@@ -206,12 +216,13 @@ def joint_rhs(pars, kcs, W, jo, Jy, fp, geos, hs, direct, dts, Y, out, yp, ym, g
                 out[off + i] = (
                     Jy[i, 0] * s0 + Jy[i, 1] * s1 + Jy[i, 2] * s2 + Jy[i, 3] * s3 + Jy[i, 7] * s7
                 )
-            d = dts[k]
-            moved = False
-            for i in range(d.size):
-                moved = moved or d[i] != 0.0
-            if moved:
-                parameter_rhs(pars[0], jo, u1, u2, u3, Y[3], d, cph, sph, out[off : off + NY])
+            if moved_row(dts, k):
+                g0, g1, g2, g3, g7 = parameter_rhs(pars, jo, u1, u2, u3, Y[3], dts, k, cph, sph)
+                out[off] += g0
+                out[off + 1] += g1
+                out[off + 2] += g2
+                out[off + 3] += g3
+                out[off + 7] += g7
             continue
         h = hs[k]
         for i in range(NY):
