@@ -319,6 +319,25 @@ def _rows_moved(
     return par, base[1], base[2]
 
 
+#: the engine rows' tensor entries (𝔽₀₀, 𝔽₀₁, 𝔽₁₀, 𝔽₁₁)
+_TENSOR_ROWS = (_engine.P_T00, _engine.P_T01, _engine.P_T10, _engine.P_T11)
+
+
+def _entry_direction(friction: FrictionTensor, name: str) -> tuple[float, ...] | None:
+    """∂𝔽/∂θ (entries 00, 01, 10, 11, as :data:`_TENSOR_ROWS`) of the kinetic tensor for a
+    tensor entry θ = fx, fy, f: R E Rᵀ, R the turn by its angle, E the entry's unit matrix
+    (fx: [[1, 0], [0, 0]]; fy: [[0, 0], [0, 1]]; f: [[0, 1], [−1, 0]], unchanged by the
+    turn); None for another parameter."""
+    if name not in ("fx", "fy", "f"):
+        return None
+    if name == "f":
+        return (0.0, 1.0, -1.0, 0.0)
+    c, sn = math.cos(friction.angle), math.sin(friction.angle)
+    if name == "fx":
+        return (c * c, c * sn, c * sn, sn * sn)
+    return (sn * sn, -c * sn, -c * sn, c * c)
+
+
 def _inertia_in_range(body: Body, value: float) -> bool:
     """Whether a moment of inertia ``value`` is one Body accepts for ``body`` (I/(m a²) in
     its range; else the slow path makes the Body, and its error)."""
@@ -338,19 +357,19 @@ def _entry_in_range(name: str, value: float) -> bool:
 _START = ("vx", "vy", "omega", "phi0")
 
 
-def _start_derivative(y0, par, name: str, t_unit: float, v_unit: float) -> NDArray[np.float64]:
+def _start_derivative(y0, par, name: str, t_unit: float, v_unit: float) -> list[float]:
     """∂y₀/∂θ (per SI unit of θ) of the regularised start y₀ = (u, ln s, 0, x, y, φ, 0), with
     s u = (vx, vy, k ω) in natural units, for a start parameter θ: the velocity's
     ∂u = (e − u u_e)/s, ∂ln s = u_e/s along the component e it moves."""
-    d = np.zeros(NY)
+    d = [0.0] * NY
     if name == "phi0":
         d[7] = 1.0
         return d
-    u = y0[:3]
-    inv_s = math.exp(-y0[3])
-    e = {"vx": 0, "vy": 1, "omega": 2}[name]
-    scale = inv_s / v_unit if e < 2 else inv_s * par[_engine.P_K] * t_unit
-    d[:3] = -u * u[e] * scale
+    u = (float(y0[0]), float(y0[1]), float(y0[2]))
+    inv_s = math.exp(-float(y0[3]))
+    e = ("vx", "vy", "omega").index(name)
+    scale = inv_s / v_unit if e < 2 else inv_s * float(par[_engine.P_K]) * t_unit
+    d[:3] = [-ui * u[e] * scale for ui in u]
     d[e] += scale
     d[3] = u[e] * scale
     return d
@@ -369,6 +388,7 @@ def compute(
     rows: NDArray[np.float64],
     accel: NDArray[np.float64],
     stages: NDArray[np.float64] | None = None,
+    engine: tuple | None = None,
 ) -> Sensitivities:
     """Run the sensitivities of a free motion whose plain run (:func:`slidespin.simulate`)
     stopped with ``ending`` at a fixed point with ``eigenvalue_ratio``; ``taus`` are its
@@ -376,13 +396,16 @@ def compute(
     ``accel`` the natural accelerations (Fx, Fy, M/k) at the rows (for the fixed-t
     conversion), ``stages`` the plain run's records with its steps' stages (``integrate_on``
     with ``stages``) for the collocation on its steps, or None to integrate the sensitivities
-    with the motion.
-    Validated inputs only (``simulate`` checks them)."""
-    names = check_parameters(parameters)
+    with the motion; ``engine`` the body's engine rows
+    (:meth:`~slidespin.contact.body.Body.engine_params` at ``WRENCH_TOL``) if the caller has
+    them. Validated inputs only (``simulate`` checks them)."""
+    names = tuple(parameters)
     a = body.length_unit
     t_unit = math.sqrt(a / g)
     v_unit = math.sqrt(a * g)
-    par0, fe, fc, geo0 = body.engine_params(friction.kinetic, WRENCH_TOL)
+    if engine is None:
+        engine = body.engine_params(friction.kinetic, WRENCH_TOL)
+    par0, fe, fc, geo0 = engine
     y0 = rows[0]  # the plain run's start: the same arithmetic as _rows
     npar = len(names)
     pars = np.empty((1 + 2 * npar, par0.size))  # (the rows a parameter moves replaced below)
@@ -400,6 +423,14 @@ def compute(
             Y0[NY * (k + 1) : NY * (k + 2)] = _start_derivative(y0, par0, name, t_unit, v_unit)
             continue
         val = _value(body, friction, state, name)
+        unit = _entry_direction(friction, name)
+        if unit is not None and _entry_in_range(name, val + h) and _entry_in_range(name, val - h):
+            # the tensor is linear in its entries: 𝔽 ± h R E Rᵀ in the rows of θ ± h, in
+            # place (the rows' other entries, G and the start do not move)
+            for row, dh in ((1 + 2 * k, h), (2 + 2 * k, -h)):
+                for i, e in zip(_TENSOR_ROWS, unit, strict=True):
+                    pars[row, i] += dh * e
+            continue
         pp, gp, yp = _rows_moved(body, friction, state, name, val + h, g, (par0, geo0, y0))
         if name in ("xi_c", "eta_c"):
             # G, the ellipse's law and the footprint's pressure coefficients are linear in
@@ -420,7 +451,7 @@ def compute(
             dk[k] = (pp[_engine.P_K] - pm[_engine.P_K]) / (2.0 * h)
     tol = max(rtol, RUN_TOL)
     yterm = np.asarray(rows[-1], dtype=np.float64).copy()  # the stop: u*, φ*
-    yterm[:3] /= np.linalg.norm(yterm[:3])
+    yterm[:3] /= math.sqrt(yterm[0] ** 2 + yterm[1] ** 2 + yterm[2] ** 2)
     collocate = stages is not None
     if stages is None:
         stages = np.zeros((taus.size, 1 + NY + (_dop.N_STAGES + 1) * NY))

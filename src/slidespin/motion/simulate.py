@@ -491,7 +491,7 @@ def simulate(
         accel = np.column_stack([fx, fy, mm / k])
         sens = compute_sensitivities(
             body, friction, initial_state, sensitivities, g, rtol, ending, float(term[2]),
-            rec[:, 0], rows, accel, rec if stages else None,
+            rec[:, 0], rows, accel, rec if stages else None, (par, fe, fc, geo),
         )  # fmt: skip
     return Trajectory(
         t=rows[:, 4] * t_unit,
