@@ -117,6 +117,21 @@ def test_pure_translation_closed_forms():
         assert d[p]["phi"] == pytest.approx(0.0, abs=1e-12)
 
 
+def test_tensor_entries_at_the_ends_of_their_range():
+    # fx at its largest valid value and fy at its smallest: the central differences of the
+    # rows step outside the range (the rows carry rates only), and the derivatives are still
+    # the closed forms of a translation along x (they used to fail with "fx = 5.00005 is
+    # invalid")
+    body = ss.Body(ss.Ellipse(0.1, 0.06), ss.UniformPressure(), mass=1.0)
+    mu, v = 5.0, 2.0
+    d = ss.stop_sensitivities(body, ss.FrictionTensor(mu, 1e-6), ss.State(vx=v),
+                              parameters=("fx", "fy"))  # fmt: skip
+    assert d["fx"]["t_stop"] == pytest.approx(-v / (mu**2 * G), rel=1e-9)
+    assert d["fx"]["x"] == pytest.approx(-(v**2) / (2 * mu**2 * G), rel=1e-9)
+    assert d["fy"]["x"] == pytest.approx(0.0, abs=1e-12)
+    assert d["fy"]["t_stop"] == pytest.approx(0.0, abs=1e-12)
+
+
 def test_spinning_disk_closed_forms():
     # a disk spinning about its centre: M = (2/3) (fx + fy)/2 m g a, t_stop = I ω/M,
     # φ_stop = I ω²/(2M)

@@ -287,23 +287,14 @@ def _rows_moved(
     par = base[0].copy()
     a = body.length_unit
     st = state
-    if name in ("fx", "fy", "f") and _entry_in_range(name, value):
-        # the tensor is linear in its entries: 𝔽 + (value − entry) R E Rᵀ (R the turn by its
-        # angle, E the entry's unit matrix), without a new (validated) FrictionTensor
-        c, sn = math.cos(friction.angle), math.sin(friction.angle)
+    unit = _entry_direction(friction, name)
+    if unit is not None:
+        # the tensor is linear in its entries: 𝔽 + (value − entry) R E Rᵀ
+        # (:func:`_entry_direction`), without a new (validated) FrictionTensor, so also
+        # about an entry at the end of its range (the rows only carry the rates)
         d = value - getattr(friction, name)
-        if name == "fx":  # E = [[1, 0], [0, 0]]
-            e00, e01, e11 = c * c, c * sn, sn * sn
-        elif name == "fy":  # E = [[0, 0], [0, 1]]
-            e00, e01, e11 = sn * sn, -c * sn, c * c
-        else:  # E = [[0, 1], [−1, 0]]: unchanged by the turn
-            par[_engine.P_T01] += d
-            par[_engine.P_T10] -= d
-            return par, base[1], base[2]
-        par[_engine.P_T00] += d * e00
-        par[_engine.P_T01] += d * e01
-        par[_engine.P_T10] += d * e01
-        par[_engine.P_T11] += d * e11
+        for i, e in zip(_TENSOR_ROWS, unit, strict=True):
+            par[i] += d * e
         return par, base[1], base[2]
     if name == "moment_of_inertia" and _inertia_in_range(body, value):
         # k = √(I/m) in units of a, without a new (validated) Body
@@ -343,14 +334,6 @@ def _inertia_in_range(body: Body, value: float) -> bool:
     its range; else the slow path makes the Body, and its error)."""
     lo, hi = v.INERTIA_RATIO
     return value > 0.0 and lo <= value / body.mass / body.length_unit**2 <= hi
-
-
-def _entry_in_range(name: str, value: float) -> bool:
-    """Whether a tensor entry ``value`` is one FrictionTensor accepts (else the slow path
-    makes one, and its error)."""
-    if name == "f":
-        return abs(value) <= v.SKEW
-    return v.COEFFICIENT[0] <= value <= v.COEFFICIENT[1]
 
 
 #: the start's parameters (they move y₀ only)
@@ -424,9 +407,10 @@ def compute(
             continue
         val = _value(body, friction, state, name)
         unit = _entry_direction(friction, name)
-        if unit is not None and _entry_in_range(name, val + h) and _entry_in_range(name, val - h):
+        if unit is not None:
             # the tensor is linear in its entries: 𝔽 ± h R E Rᵀ in the rows of θ ± h, in
-            # place (the rows' other entries, G and the start do not move)
+            # place (the rows' other entries, G and the start do not move); an entry at the
+            # end of its valid range too (fx = 5, fy = 1e-6: the rows only carry rates)
             for row, dh in ((1 + 2 * k, h), (2 + 2 * k, -h)):
                 for i, e in zip(_TENSOR_ROWS, unit, strict=True):
                     pars[row, i] += dh * e
@@ -439,8 +423,6 @@ def compute(
             pm, gm, ym = pp.copy(), 2.0 * geo0 - gp, yp
             for i in (_engine.P_XG, _engine.P_YG):
                 pm[i] = 2.0 * par0[i] - pp[i]
-        elif name in ("fx", "fy", "f") and _entry_in_range(name, val - h):
-            pm, gm, ym = 2.0 * par0 - pp, gp, yp  # (the tensor's entries: linear in θ)
         else:
             pm, gm, ym = _rows_moved(body, friction, state, name, val - h, g, (par0, geo0, y0))
         pars[1 + 2 * k], pars[2 + 2 * k] = pp, pm
