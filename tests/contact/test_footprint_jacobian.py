@@ -88,6 +88,15 @@ def _kernel(fe, fc, geo, t, frame, phi, tw):
     return ok, out
 
 
+def _evaluated(case):
+    """The case's :func:`_setup`, its patch, the twist of its ICR and the kernel's (ok, out)
+    there."""
+    setup = _setup(case)
+    body, fe, fc, geo, ell, t, frame, _, icr, omega, phi = setup
+    tw = _twist(body, ell, icr, omega, phi)
+    return setup, CASES[case][0], tw, *_kernel(fe, fc, geo, t, frame, phi, tw)
+
+
 def _ref(fp, ref_law, t, frame, ell, phi, tw):
     tensor = np.array([[t[0], t[1]], [t[2], t[3]]])
     r = reference_wrench(fp, ref_law, tensor, tw[0] * ell, tw[1] * ell, tw[2], phi=phi, frame=frame)
@@ -110,10 +119,7 @@ def _ref_twist_jacobian(fp, ref_law, t, frame, ell, phi, tw, step):
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_jacobian_matches_reference_differences(case):
-    body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi = _setup(case)
-    fp = CASES[case][0]
-    tw = _twist(body, ell, icr, omega, phi)
-    ok, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    (_, _, _, _, ell, t, frame, ref_law, _, _, phi), fp, tw, ok, out = _evaluated(case)
     assert ok
     assert out[:3] == pytest.approx(_ref(fp, ref_law, t, frame, ell, phi, tw), abs=1e-9)
     scale = np.linalg.norm(tw)
@@ -127,19 +133,14 @@ def test_jacobian_matches_reference_differences(case):
 
 @pytest.mark.parametrize("case", sorted(CASES))
 def test_jacobian_annihilates_the_twist(case):
-    body, fe, fc, geo, ell, t, frame, _, icr, omega, phi = _setup(case)
-    tw = _twist(body, ell, icr, omega, phi)
-    _, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    _, _, tw, _, out = _evaluated(case)
     jac = out[9:18].reshape(3, 3)
     assert np.abs(jac @ tw).max() <= 1e-8 * np.abs(jac).max() * np.linalg.norm(tw)
 
 
 @pytest.mark.parametrize("case", ["rectangle-inside", "L-outside", "ring-band"])
 def test_isotropic_parts_give_the_wrench_of_any_tensor(case):
-    body, fe, fc, geo, ell, t, frame, ref_law, icr, omega, phi = _setup(case)
-    fp = CASES[case][0]
-    tw = _twist(body, ell, icr, omega, phi)
-    _, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    (_, _, _, _, ell, _, _, ref_law, _, _, phi), fp, tw, _, out = _evaluated(case)
     c, s = math.cos(phi), math.sin(phi)
     R = np.array([[c, -s], [s, c]])
     for i in range(2):
@@ -239,10 +240,7 @@ def test_pressure_centre_derivative_matches_reference_differences(case):
     # chained with the law's rates (the coefficients are linear in the centre; rates from
     # the library's geometry rows, checked in test_footprint_wrench) against Richardson
     # differences of the reference, whose law and G move together
-    body, fe, fc, geo, ell, t, frame, _, icr, omega, phi = _setup(case)
-    fp = CASES[case][0]
-    tw = _twist(body, ell, icr, omega, phi)
-    ok, out = _kernel(fe, fc, geo, t, frame, phi, tw)
+    (body, _, _, _, ell, t, frame, _, _, _, phi), fp, tw, ok, out = _evaluated(case)
     assert ok
     xi, eta = body.mass_centre  # the pressure centre (G) of either law
     arrays = fp.to_arrays()
